@@ -1,0 +1,87 @@
+/* swr_collide.h - one ice sphere hitting a wall: the DEM collision kernel.
+ *
+ * Lifecycle (GSL style): swr_model_alloc() derives every constant and table
+ * from a validated swr_params once; swr_collide() runs one impact and is
+ * thread-safe (the model is read-only); swr_model_free() releases it.
+ *
+ *   swr_params p; swr_params_default(&p); swr_params_set(&p, "gamma", "0.5", err, n);
+ *   swr_model *m = swr_model_alloc(&p, err, n);
+ *   swr_impact in = { .d = 50e-6, .vn = 1.0, .vt = 0.0, .omega = 0.0 };
+ *   swr_result r; swr_collide(m, &in, &r, NULL);
+ *   swr_model_free(m);
+ *
+ * Sub-models, each in its own file under regime/kernel, formulas in pure
+ * functions (regime/physics): normal contact (swr_normal.c: Hertz, JKR with
+ * hysteresis), damping (swr_damping.c: COR modes), tangential sliding
+ * (swr_tangential.c), rolling resistance (swr_rolling.c), wall geometry
+ * (swr_wall.c), time integration (swr_collide.c).
+ */
+#ifndef SWR_COLLIDE_H
+#define SWR_COLLIDE_H
+
+#include "swr_params.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct swr_model swr_model;
+
+/* One impact. Velocities are of the particle relative to the wall, at first
+ * contact: vn > 0 is the approach speed along the wall normal, vt >= 0 the
+ * tangential speed, omega the initial spin about the axis that makes the
+ * contact point slide along vt (rad/s, sign as in swr_collide.c). */
+typedef struct {
+    double d;      /* particle diameter [m] */
+    double vn;     /* normal approach speed [m/s], > 0 */
+    double vt;     /* tangential speed [m/s], >= 0 */
+    double omega;  /* initial angular velocity [rad/s] */
+} swr_impact;
+
+typedef enum {
+    SWR_OK = 0,          /* outcome decided by a physical criterion */
+    SWR_STEP_BOUND = 1,  /* step bound reached: outcome is the best estimate */
+    SWR_EINVAL = -1      /* bad input (message in swr_result.msg) */
+} swr_status;
+
+typedef struct {
+    swr_status status;
+    int contact_kept;    /* 1: the normal contact never broke (normal stick) */
+    int stick;           /* 1: contact kept AND sliding and rolling arrested */
+    double e_n;          /* rebound normal COR  v_n,out / v_n,in (0 if kept) */
+    double e_t;          /* rebound tangential ratio v_t,out / v_t,in (NaN if vt = 0) */
+    double t_contact;    /* contact duration [s] (time to decision if kept) */
+    double delta_max;    /* largest overlap [m] */
+    double e_target;     /* plastic COR the dashpot was set to (1 elastic) */
+    double dt;           /* time step used [s] */
+    long steps;          /* steps taken */
+    long max_steps;      /* guaranteed upper bound on steps */
+    double energy_err;   /* relative energy-balance error of the integration */
+    char msg[160];       /* warning or error text ("" when none) */
+} swr_result;
+
+/* Optional trajectory sink: called every `stride` steps with time, overlap,
+ * normal velocity, normal force, contact radius, tangential velocity, spin. */
+typedef struct {
+    int stride;
+    void (*fn)(void *ctx, double t, double delta, double vn, double fn,
+               double a, double vt, double omega);
+    void *ctx;
+} swr_trace;
+
+/* Derive the model. NULL with a message in err on invalid params. */
+swr_model *swr_model_alloc(const swr_params *p, char *err, size_t errlen);
+void swr_model_free(swr_model *m);
+const swr_params *swr_model_params(const swr_model *m);
+
+/* Run one impact. Returns r->status. Never NaN, never past r->max_steps. */
+swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
+                       const swr_trace *trace);
+
+/* Tabor parameter of diameter d; sets *jkr_ok = lambda > SWP_TABOR_JKR_MIN. */
+double swr_model_tabor(const swr_model *m, double d, int *jkr_ok);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,76 @@
+/* swr_params.h - material and model settings of one regime computation.
+ *
+ * One flat struct of SI values with documented keys. Sources, in order:
+ * swr_params_default() (dry snow = ice on ABS, ../shared/snow-physics.md
+ * section 2), an optional config file (swr_params_load: "key value" or
+ * "key = value", one per line, '#' comments), and "key=value" overrides
+ * (swr_params_set). Every setter validates; errors name the key and value.
+ * Implemented in swr_params.c.
+ */
+#ifndef SWR_PARAMS_H
+#define SWR_PARAMS_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Key `cor`: how the normal dashpot is set. */
+typedef enum {
+    SWR_COR_ELASTIC = 0,          /* "elastic": no damping (e = 1) */
+    SWR_COR_CONSTANT,             /* a number in (0, 1]: constant e */
+    SWR_COR_THORNTON,             /* "thornton": full Thornton (1997) e_p(V_y/V_i) */
+    SWR_COR_THORNTON_ASYMPTOTE    /* "thornton-asymptote": e_p = 1.324 (...)^(1/8) V_i^(-1/4),
+                                     per impact, exactly as the original work */
+} swr_cor_mode;
+
+/* Key `cor_pair`: which yield velocity the Thornton COR uses. */
+typedef enum { SWR_PAIR_WALL = 0, SWR_PAIR_PARTICLE } swr_pair;
+
+/* Key `adhesion`: normal contact law. */
+typedef enum { SWR_ADHESION_JKR = 0, SWR_ADHESION_NONE } swr_adhesion;
+
+typedef struct {
+    /* particle (ice) */
+    double rho;        /* `rho`      density [kg/m3]                 920      */
+    double E;          /* `E`        Young's modulus [Pa]            9.8e9    */
+    double nu;         /* `nu`       Poisson's ratio [-]             0.31     */
+    double sigma_y;    /* `sigma_y`  yield stress [Pa]               1.0e6    */
+    /* wall (ABS) */
+    double E_wall;     /* `E_wall`   Young's modulus [Pa]            2.0e9    */
+    double nu_wall;    /* `nu_wall`  Poisson's ratio [-]             0.35     */
+    double rho_wall;   /* `rho_wall` density [kg/m3] (informative)   1100     */
+    /* interface */
+    double gamma;      /* `gamma`    work of adhesion [J/m2]         0.2      */
+    swr_adhesion adhesion; /* `adhesion` jkr | none                  jkr      */
+    double z0;         /* `z0`       equilibrium separation for the Tabor check [m] 0.3e-9 */
+    swr_cor_mode cor;  /* `cor`      elastic | <number> | thornton | thornton-asymptote  thornton */
+    double cor_value;  /*            the number when cor is constant               */
+    swr_pair cor_pair; /* `cor_pair` wall | particle                     wall     */
+    double mu;         /* `mu`       sliding friction coefficient [-] 0.05    */
+    double xi_crit;    /* `xi_crit`  critical rolling displacement [m] (Dominik & Tielens) 1e-9 */
+    /* numerics */
+    double accuracy;   /* `accuracy` steps per Hertz contact time (the one accuracy knob) 60 */
+} swr_params;
+
+/* Fill p with the embedded defaults (dry snow, ice on ABS). */
+void swr_params_default(swr_params *p);
+/* Set one key from text. Returns 0, or -1 with a one-line message in err
+ * naming the key and the value (unknown key, not a number, NaN, out of range). */
+int swr_params_set(swr_params *p, const char *key, const char *value, char *err, size_t errlen);
+/* Parse "key=value" (as given to --set). */
+int swr_params_set_kv(swr_params *p, const char *kv, char *err, size_t errlen);
+/* Read a config file. Returns 0 or -1 with "FILE:LINE: message" in err. */
+int swr_params_load(swr_params *p, const char *path, char *err, size_t errlen);
+/* Check the whole set (ranges, consistency). 0 or -1 with a message. */
+int swr_params_validate(const swr_params *p, char *err, size_t errlen);
+/* Write every key and value, one "key value" line each, prefixed by `prefix`
+ * (e.g. "# "), to the stream; used to document outputs. */
+void swr_params_print(const swr_params *p, const char *prefix, FILE *stream);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
