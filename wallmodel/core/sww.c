@@ -1,0 +1,498 @@
+/* sww.c - the wall-interaction decision (see sww.h). */
+#include "sww_internal.h"
+#include "swp_cor.h"
+#include "swp_detach.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char *const num_keys[K_NNUM] = {
+    "version", "degree", "vnMin", "vnMax", "dMin", "dMax", "slopeLow", "slopeHigh",
+    "rmsResidual", "maxResidual", "yieldVelocity", "reboundNormal", "gamma", "Estar",
+    "rhoParticle", "mu"
+};
+
+int sww_fail(sww_model *m, int code, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(m->err, sizeof m->err, fmt, ap);
+    va_end(ap);
+    return code;
+}
+
+sww_model *sww_alloc(void)
+{
+    sww_model *m = calloc(1, sizeof *m);
+    if (m) {
+        m->vt_max = INFINITY;
+        m->vt_dref = 5e-5;
+        m->tau_c = INFINITY;
+        m->roughness = 1.0;
+        m->e_t = 1.0;
+    }
+    return m;
+}
+
+void sww_regime_clear(sww_model *m)
+{
+    free(m->tab_lnv);
+    free(m->tab_lnd);
+    m->tab_lnv = m->tab_lnd = NULL;
+    memset(m->num, 0, sizeof m->num);
+    memset(m->has, 0, sizeof m->has);
+    m->representation = m->basis = 0;
+    m->ncoeffs = m->ntab = m->n_vn = m->n_dcrit = 0;
+    m->has_vn = m->has_dcrit = 0;
+    m->label[0] = '\0';
+    m->ready = 0;
+}
+
+void sww_free(sww_model *m)
+{
+    if (!m)
+        return;
+    sww_regime_clear(m);
+    free(m);
+}
+
+const char *sww_errmsg(const sww_model *m)
+{
+    return m ? m->err : "no model";
+}
+
+/* ---------------------------------------------------------------- setting */
+
+int sww_regime_number(sww_model *m, const char *key, double v)
+{
+    for (int k = 0; k < K_NNUM; k++) {
+        if (strcmp(key, num_keys[k]) != 0)
+            continue;
+        if (!isfinite(v))
+            return sww_fail(m, SWW_EINVAL, "key '%s': value %g is not a finite number", key, v);
+        m->num[k] = v;
+        m->has[k] = 1;
+        m->ready = 0;
+        return SWW_OK;
+    }
+    if (!strcmp(key, "coeffs") || !strcmp(key, "vn") || !strcmp(key, "dCrit"))
+        return sww_fail(m, SWW_EINVAL, "key '%s': expects a list ( ... ), got the number %g", key, v);
+    if (!strcmp(key, "representation") || !strcmp(key, "basis") || !strcmp(key, "label"))
+        return sww_fail(m, SWW_EINVAL, "key '%s': expects a word, got the number %g", key, v);
+    return SWW_OK; /* unknown key: ignored */
+}
+
+static int set_table_part(sww_model *m, const char *key, const double *v, size_t n, int dcrit)
+{
+    if (n < 2 || n > SWW_MAX_TABLE)
+        return sww_fail(m, SWW_EINVAL, "key '%s': %zu values, a table needs 2 to %d", key, n,
+                        SWW_MAX_TABLE);
+    double **dst = dcrit ? &m->tab_lnd : &m->tab_lnv;
+    double *p = realloc(*dst, n * sizeof *p);
+    if (!p)
+        return sww_fail(m, SWW_ENOMEM, "key '%s': out of memory", key);
+    *dst = p;
+    for (size_t i = 0; i < n; i++) {
+        if (!(v[i] > 0.0))
+            return sww_fail(m, SWW_EINVAL, "key '%s': value %g (entry %zu) must be > 0", key,
+                            v[i], i);
+        p[i] = log(v[i]);
+    }
+    if (dcrit) {
+        m->has_dcrit = 1;
+        m->n_dcrit = n;
+    } else {
+        for (size_t i = 1; i < n; i++)
+            if (!(v[i] > v[i - 1]))
+                return sww_fail(m, SWW_EINVAL,
+                                "key 'vn': value %g (entry %zu) is not larger than %g: "
+                                "the table must be strictly increasing", v[i], i, v[i - 1]);
+        m->has_vn = 1;
+        m->n_vn = n;
+    }
+    return SWW_OK;
+}
+
+int sww_regime_list(sww_model *m, const char *key, const double *v, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        if (!isfinite(v[i]))
+            return sww_fail(m, SWW_EINVAL, "key '%s': value %g (entry %zu) is not a finite number",
+                            key, v[i], i);
+    m->ready = 0;
+    if (!strcmp(key, "coeffs")) {
+        if (n < 1 || n > SWW_MAX_COEFFS)
+            return sww_fail(m, SWW_EINVAL, "key 'coeffs': %zu values, expected 1 to %d", n,
+                            SWW_MAX_COEFFS);
+        memcpy(m->coeffs, v, n * sizeof *v);
+        m->ncoeffs = n;
+        return SWW_OK;
+    }
+    if (!strcmp(key, "vn"))
+        return set_table_part(m, key, v, n, 0);
+    if (!strcmp(key, "dCrit"))
+        return set_table_part(m, key, v, n, 1);
+    for (int k = 0; k < K_NNUM; k++)
+        if (!strcmp(key, num_keys[k]))
+            return sww_fail(m, SWW_EINVAL, "key '%s': expects one number, got a list of %zu", key, n);
+    if (!strcmp(key, "representation") || !strcmp(key, "basis") || !strcmp(key, "label"))
+        return sww_fail(m, SWW_EINVAL, "key '%s': expects a word, got a list of %zu", key, n);
+    return SWW_OK;
+}
+
+int sww_regime_word(sww_model *m, const char *key, const char *w)
+{
+    m->ready = 0;
+    if (!strcmp(key, "representation")) {
+        if (!strcmp(w, "polynomial"))
+            m->representation = 1;
+        else if (!strcmp(w, "table"))
+            m->representation = 2;
+        else
+            return sww_fail(m, SWW_EINVAL,
+                            "key 'representation': value '%s' is not polynomial or table", w);
+        return SWW_OK;
+    }
+    if (!strcmp(key, "basis")) {
+        if (!strcmp(w, "log"))
+            m->basis = 1;
+        else if (!strcmp(w, "linear"))
+            m->basis = 2;
+        else
+            return sww_fail(m, SWW_EINVAL, "key 'basis': value '%s' is not log or linear", w);
+        return SWW_OK;
+    }
+    if (!strcmp(key, "label")) {
+        snprintf(m->label, sizeof m->label, "%s", w);
+        return SWW_OK;
+    }
+    for (int k = 0; k < K_NNUM; k++)
+        if (!strcmp(key, num_keys[k]))
+            return sww_fail(m, SWW_EINVAL, "key '%s': value '%s' is not a number", key, w);
+    if (!strcmp(key, "coeffs") || !strcmp(key, "vn") || !strcmp(key, "dCrit"))
+        return sww_fail(m, SWW_EINVAL, "key '%s': expects a list ( ... ), got '%s'", key, w);
+    return SWW_OK;
+}
+
+/* ---------------------------------------------------------------- the fit */
+
+/* d_crit inside the range (no range handling). */
+static double fit_eval(const sww_model *m, double vn)
+{
+    if (m->representation == 2) {
+        const double x = log(vn);
+        const double *X = m->tab_lnv, *Y = m->tab_lnd;
+        size_t lo = 0, hi = m->ntab - 1;
+        if (x <= X[0])
+            return exp(Y[0]);
+        if (x >= X[hi])
+            return exp(Y[hi]);
+        while (hi - lo > 1) {
+            const size_t mid = (lo + hi) / 2;
+            if (X[mid] <= x)
+                lo = mid;
+            else
+                hi = mid;
+        }
+        const double t = (x - X[lo]) / (X[hi] - X[lo]);
+        return exp(Y[lo] + t * (Y[hi] - Y[lo]));
+    }
+    const double x = m->basis == 2 ? vn : log(vn);
+    double s = m->coeffs[m->ncoeffs - 1];
+    for (size_t i = m->ncoeffs - 1; i-- > 0;)
+        s = s * x + m->coeffs[i];
+    return m->basis == 2 ? s : exp(s);
+}
+
+double sww_dcrit(const sww_model *m, double vn)
+{
+    if (!m->ready || isnan(vn))
+        return NAN;
+    if (vn <= 0.0)
+        return INFINITY;
+    const double lo = m->num[K_VNMIN], hi = m->num[K_VNMAX];
+    if (vn < lo)
+        return m->d_lo * pow(vn / lo, m->num[K_SLOPELOW]);
+    if (vn > hi)
+        return m->d_hi * pow(vn / hi, m->num[K_SLOPEHIGH]);
+    return fit_eval(m, vn);
+}
+
+int sww_regime_commit(sww_model *m, const char *origin)
+{
+    const char *o = origin ? origin : "regime";
+    m->ready = 0;
+    if (!m->representation)
+        return sww_fail(m, SWW_EMISSING, "%s: missing key 'representation' (polynomial or table)", o);
+    static const int required[] = { K_VNMIN, K_VNMAX, K_SLOPELOW, K_SLOPEHIGH };
+    for (size_t i = 0; i < sizeof required / sizeof *required; i++)
+        if (!m->has[required[i]])
+            return sww_fail(m, SWW_EMISSING, "%s: missing key '%s'", o, num_keys[required[i]]);
+    const double lo = m->num[K_VNMIN], hi = m->num[K_VNMAX];
+    if (!(lo > 0.0))
+        return sww_fail(m, SWW_EINVAL, "%s: key 'vnMin': value %g must be > 0", o, lo);
+    if (!(lo < hi))
+        return sww_fail(m, SWW_EINVAL, "%s: key 'vnMin': value %g is not below vnMax %g", o, lo, hi);
+    if (m->num[K_SLOPELOW] > 0.0)
+        return sww_fail(m, SWW_EINVAL, "%s: key 'slopeLow': value %g > 0: the interface must "
+                        "be decreasing or flat", o, m->num[K_SLOPELOW]);
+    if (m->num[K_SLOPEHIGH] > 0.0)
+        return sww_fail(m, SWW_EINVAL, "%s: key 'slopeHigh': value %g > 0: the interface must "
+                        "be decreasing or flat", o, m->num[K_SLOPEHIGH]);
+    if (m->has[K_VERSION] && m->num[K_VERSION] != 1.0)
+        return sww_fail(m, SWW_EINVAL, "%s: key 'version': value %g is not supported (1)", o,
+                        m->num[K_VERSION]);
+    const char *fitkey;
+    if (m->representation == 1) {
+        fitkey = "coeffs";
+        if (!m->ncoeffs)
+            return sww_fail(m, SWW_EMISSING, "%s: missing key 'coeffs' (representation polynomial)", o);
+        if (m->has[K_DEGREE] && m->num[K_DEGREE] != (double)(m->ncoeffs - 1))
+            return sww_fail(m, SWW_EINVAL, "%s: key 'degree': value %g does not match the %zu "
+                            "coeffs (degree %zu)", o, m->num[K_DEGREE], m->ncoeffs, m->ncoeffs - 1);
+    } else {
+        fitkey = "dCrit";
+        if (!m->has_vn)
+            return sww_fail(m, SWW_EMISSING, "%s: missing key 'vn' (representation table)", o);
+        if (!m->has_dcrit)
+            return sww_fail(m, SWW_EMISSING, "%s: missing key 'dCrit' (representation table)", o);
+        if (m->n_vn != m->n_dcrit)
+            return sww_fail(m, SWW_EINVAL, "%s: key 'dCrit': %zu values but 'vn' has %zu", o,
+                            m->n_dcrit, m->n_vn);
+        m->ntab = m->n_vn;
+        const double v0 = exp(m->tab_lnv[0]), v1 = exp(m->tab_lnv[m->ntab - 1]);
+        if (v0 > lo * (1.0 + 1e-12) || v1 < hi * (1.0 - 1e-12))
+            return sww_fail(m, SWW_EINVAL, "%s: key 'vn': table span [%g, %g] does not cover "
+                            "[vnMin, vnMax] = [%g, %g]", o, v0, v1, lo, hi);
+    }
+    if (m->has[K_YIELD] && !(m->num[K_YIELD] > 0.0))
+        return sww_fail(m, SWW_EINVAL, "%s: key 'yieldVelocity': value %g must be > 0", o, m->num[K_YIELD]);
+    if (m->has[K_REBOUND] && !(m->num[K_REBOUND] >= 0.0 && m->num[K_REBOUND] <= 1.0))
+        return sww_fail(m, SWW_EINVAL, "%s: key 'reboundNormal': value %g is not in [0, 1]", o,
+                        m->num[K_REBOUND]);
+    static const int positive[] = { K_GAMMA, K_ESTAR, K_RHO, K_DMIN, K_DMAX };
+    for (size_t i = 0; i < sizeof positive / sizeof *positive; i++)
+        if (m->has[positive[i]] && !(m->num[positive[i]] > 0.0))
+            return sww_fail(m, SWW_EINVAL, "%s: key '%s': value %g must be > 0", o,
+                            num_keys[positive[i]], m->num[positive[i]]);
+    if (m->has[K_MU] && !(m->num[K_MU] >= 0.0))
+        return sww_fail(m, SWW_EINVAL, "%s: key 'mu': value %g must be >= 0", o, m->num[K_MU]);
+    /* the interface inside its range: positive, finite, decreasing or flat */
+    const int N = 512;
+    double prev = INFINITY, vprev = lo;
+    for (int i = 0; i <= N; i++) {
+        const double v = i == N ? hi : lo * pow(hi / lo, (double)i / N);
+        const double d = fit_eval(m, v);
+        if (!(d > 0.0) || !isfinite(d))
+            return sww_fail(m, SWW_EINVAL, "%s: key '%s': d_crit(%g m/s) = %g is not a finite "
+                            "positive diameter", o, fitkey, v, d);
+        if (d > prev * (1.0 + 1e-9))
+            return sww_fail(m, SWW_EINVAL, "%s: key '%s': the interface increases from d_crit(%g) "
+                            "= %g to d_crit(%g) = %g inside [vnMin, vnMax]: it must be "
+                            "decreasing or flat", o, fitkey, vprev, prev, v, d);
+        prev = d;
+        vprev = v;
+    }
+    m->d_lo = fit_eval(m, lo);
+    m->d_hi = fit_eval(m, hi);
+    m->ready = 1;
+    m->err[0] = '\0';
+    /* an adhesion shear gate set before needs the (new) regime's data */
+    if (m->shear_on == 2 && !(m->has[K_GAMMA] && m->has[K_ESTAR])) {
+        m->shear_on = 0;
+        return sww_fail(m, SWW_EMISSING, "%s: the adhesion shear gate needs 'gamma' and "
+                        "'Estar' in the regime dictionary", o);
+    }
+    return SWW_OK;
+}
+
+/* ---------------------------------------------------------------- options */
+
+int sww_set_tangential_gate(sww_model *m, double vt_max, double d_ref, double exponent)
+{
+    if (!(vt_max >= 0.0) || isinf(vt_max))
+        return sww_fail(m, SWW_EINVAL, "tangential gate: vtMax %g must be a finite speed >= 0", vt_max);
+    if (!(d_ref > 0.0) || isinf(d_ref))
+        return sww_fail(m, SWW_EINVAL, "tangential gate: dRef %g must be a finite diameter > 0", d_ref);
+    if (!isfinite(exponent))
+        return sww_fail(m, SWW_EINVAL, "tangential gate: exponent %g is not a finite number", exponent);
+    m->vt_on = 1;
+    m->vt_max = vt_max;
+    m->vt_dref = d_ref;
+    m->vt_exp = exponent;
+    return SWW_OK;
+}
+
+void sww_set_tangential_off(sww_model *m)
+{
+    m->vt_on = 0;
+}
+
+int sww_set_shear_gate_constant(sww_model *m, double tau_c)
+{
+    if (!(tau_c >= 0.0) || isinf(tau_c))
+        return sww_fail(m, SWW_EINVAL, "shear gate: tauCrit %g must be a finite stress >= 0 Pa", tau_c);
+    m->shear_on = 1;
+    m->tau_c = tau_c;
+    return SWW_OK;
+}
+
+int sww_set_shear_gate_adhesion(sww_model *m, double roughness)
+{
+    if (!(roughness > 0.0 && roughness <= 1.0))
+        return sww_fail(m, SWW_EINVAL, "shear gate: roughnessFactor %g is not in (0, 1]", roughness);
+    if (!m->has[K_GAMMA])
+        return sww_fail(m, SWW_EMISSING, "shear gate model adhesion: missing key 'gamma' "
+                        "(work of adhesion) in the regime dictionary");
+    if (!m->has[K_ESTAR])
+        return sww_fail(m, SWW_EMISSING, "shear gate model adhesion: missing key 'Estar' "
+                        "(effective modulus) in the regime dictionary");
+    m->shear_on = 2;
+    m->roughness = roughness;
+    return SWW_OK;
+}
+
+void sww_set_shear_off(sww_model *m)
+{
+    m->shear_on = 0;
+}
+
+int sww_set_rebound_tangential(sww_model *m, double e_t)
+{
+    if (!(e_t >= 0.0 && e_t <= 1.0))
+        return sww_fail(m, SWW_EINVAL, "reboundTangential %g is not in [0, 1]", e_t);
+    m->e_t = e_t;
+    return SWW_OK;
+}
+
+/* ---------------------------------------------------------------- queries */
+
+double sww_rebound_normal(const sww_model *m, double vn)
+{
+    if (m->has[K_REBOUND])
+        return m->num[K_REBOUND];
+    if (m->has[K_YIELD])
+        return vn > 0.0 ? swp_cor_thornton(m->num[K_YIELD] / vn) : 1.0;
+    return 1.0;
+}
+
+double sww_vt_max(const sww_model *m, double d)
+{
+    if (!m->vt_on)
+        return INFINITY;
+    return m->vt_exp == 0.0 ? m->vt_max : m->vt_max * pow(d / m->vt_dref, m->vt_exp);
+}
+
+double sww_tau_crit(const sww_model *m, double d)
+{
+    switch (m->shear_on) {
+    case 1:
+        return m->tau_c;
+    case 2:
+        return swp_tau_detach(m->num[K_GAMMA], m->num[K_ESTAR], 0.5 * d,
+                              m->has[K_MU] ? m->num[K_MU] : 0.0, m->roughness);
+    default:
+        return INFINITY;
+    }
+}
+
+int sww_ready(const sww_model *m) { return m->ready; }
+int sww_tangential_on(const sww_model *m) { return m->vt_on; }
+int sww_shear_on(const sww_model *m) { return m->shear_on != 0; }
+double sww_vn_min(const sww_model *m) { return m->num[K_VNMIN]; }
+double sww_vn_max(const sww_model *m) { return m->num[K_VNMAX]; }
+const char *sww_label(const sww_model *m) { return m->label; }
+
+const char *sww_fate_name(sww_fate f)
+{
+    switch (f) {
+    case SWW_STICK: return "stick";
+    case SWW_BOUNCE: return "bounce";
+    case SWW_RIPOFF: return "ripoff";
+    }
+    return "?";
+}
+
+void sww_describe(const sww_model *m, char *buf, size_t n)
+{
+    if (!n)
+        return;
+    if (!m->ready) {
+        snprintf(buf, n, "snowWall: no regime map loaded");
+        return;
+    }
+    char reb[96], vt[128], sh[128];
+    if (m->has[K_REBOUND])
+        snprintf(reb, sizeof reb, "e_n %g", m->num[K_REBOUND]);
+    else if (m->has[K_YIELD])
+        snprintf(reb, sizeof reb, "e_n Thornton(V_y %g m/s)", m->num[K_YIELD]);
+    else
+        snprintf(reb, sizeof reb, "e_n 1 (no yieldVelocity/reboundNormal)");
+    if (m->vt_on)
+        snprintf(vt, sizeof vt, "on: vtMax %g m/s (d/%g m)^%g", m->vt_max, m->vt_dref, m->vt_exp);
+    else
+        snprintf(vt, sizeof vt, "off");
+    if (m->shear_on == 1)
+        snprintf(sh, sizeof sh, "on: tau_c %g Pa", m->tau_c);
+    else if (m->shear_on == 2)
+        snprintf(sh, sizeof sh, "on: adhesion, roughness %g, tau_c(50 um) %.4g Pa", m->roughness,
+                 sww_tau_crit(m, 5e-5));
+    else
+        snprintf(sh, sizeof sh, "off");
+    snprintf(buf, n, "'%s' %s, vn [%g, %g] m/s, d_crit(vnMin) %.4g m, d_crit(vnMax) %.4g m, "
+             "slopes %g/%g; %s, e_t %g; tangential gate %s; shear gate %s",
+             m->label, m->representation == 2 ? "table" : (m->basis == 2 ? "polynomial(linear)"
+             : "polynomial(log)"), m->num[K_VNMIN], m->num[K_VNMAX], m->d_lo, m->d_hi,
+             m->num[K_SLOPELOW], m->num[K_SLOPEHIGH], reb, m->e_t, vt, sh);
+}
+
+/* ---------------------------------------------------------------- decide */
+
+/* The stick-probability hook: a sharp map gives 0 or 1. A rough-wall map will
+ * return a probability in between here; callers already pass the random number. */
+static double stick_probability(const sww_model *m, double d, double d_crit)
+{
+    (void)m;
+    return d <= d_crit ? 1.0 : 0.0;
+}
+
+int sww_decide(const sww_model *m, const sww_impact *in, sww_outcome *out)
+{
+    if (!m->ready)
+        return SWW_ENOTREADY;
+    if (!(in->d > 0.0) || isinf(in->d) || !(in->vn >= 0.0) || isinf(in->vn)
+        || !(in->vt >= 0.0) || isinf(in->vt) || !(in->u >= 0.0 && in->u < 1.0))
+        return SWW_EINVAL;
+    const double dc = sww_dcrit(m, in->vn);
+    out->d_crit = dc;
+    out->p_stick = stick_probability(m, in->d, dc);
+    out->reason = SWW_BY_CRITERION;
+    int stick = in->u < out->p_stick;
+    if (stick && m->vt_on && in->vt > sww_vt_max(m, in->d)) {
+        stick = 0;
+        out->reason = SWW_BY_TANGENTIAL;
+    }
+    if (stick && m->shear_on) {
+        if (!(in->tau_w >= 0.0) || isinf(in->tau_w))
+            return SWW_EINVAL;
+        if (in->tau_w >= sww_tau_crit(m, in->d)) {
+            out->fate = SWW_RIPOFF;
+            out->reason = SWW_BY_SHEAR;
+            out->e_n = sww_rebound_normal(m, in->vn);
+            out->e_t = m->e_t;
+            return SWW_OK;
+        }
+    }
+    if (stick) {
+        out->fate = SWW_STICK;
+        out->e_n = out->e_t = 1.0;
+    } else {
+        out->fate = SWW_BOUNCE;
+        out->e_n = sww_rebound_normal(m, in->vn);
+        out->e_t = m->e_t;
+    }
+    return SWW_OK;
+}

@@ -1,0 +1,134 @@
+/* sww.h - SnowWall wall-interaction core: stick / bounce / rip-off of one
+ * particle impact from a regime map (doc/wallmodel.md, doc/regime-coeffs.md).
+ *
+ * Plain C11, no global state. Lifecycle:
+ *   sww_model *m = sww_alloc();
+ *   sww_regime_load(m, "regime.coeffs")            -- or sww_regime_number/list/word
+ *                                                      + sww_regime_commit (from code)
+ *   sww_set_tangential_gate(...), sww_set_shear_gate_*(...), ...   (optional)
+ *   sww_decide(m, &impact, &outcome)                -- any number of times, any thread
+ *   sww_free(m);
+ * Every set/load function returns SWW_OK (0) or a negative SWW_E* code; the
+ * message (one line naming input and value) is then in sww_errmsg(m). Setting
+ * up a model is not thread-safe; sww_decide and the sww_* queries only read the
+ * (const) model, allocate nothing and may run concurrently in many threads.
+ */
+#ifndef SWW_H
+#define SWW_H
+
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+enum {
+    SWW_OK = 0,
+    SWW_EINVAL = -1,     /* bad value (NaN, out of range, wrong type)        */
+    SWW_EMISSING = -2,   /* a required key is missing                        */
+    SWW_EPARSE = -3,     /* malformed coefficients file                      */
+    SWW_EIO = -4,        /* cannot read the file                             */
+    SWW_ENOTREADY = -5,  /* sww_decide before a successful commit / load     */
+    SWW_ENOMEM = -6
+};
+
+typedef enum { SWW_STICK = 0, SWW_BOUNCE = 1, SWW_RIPOFF = 2 } sww_fate;
+
+/* Why the fate was chosen. */
+typedef enum {
+    SWW_BY_CRITERION = 0,   /* d <= d_crit(v_n): stick; d > d_crit: bounce      */
+    SWW_BY_TANGENTIAL = 1,  /* stick candidate bounced: |v_t| > vtMax(d)        */
+    SWW_BY_SHEAR = 2        /* stick candidate ripped off: tau_w >= tau_c(d)    */
+} sww_reason;
+
+/* One impact, velocities relative to the wall. */
+typedef struct {
+    double d;      /* particle diameter [m], > 0                                   */
+    double vn;     /* normal impact speed towards the wall [m/s], >= 0             */
+    double vt;     /* tangential impact speed magnitude [m/s], >= 0                */
+    double tau_w;  /* wall shear stress magnitude [Pa], >= 0 (read only when the
+                      shear gate is on)                                            */
+    double u;      /* caller's uniform random number in [0, 1): the stick
+                      probability hook (with today's sharp map p_stick is 0 or 1,
+                      so any u gives the same answer)                              */
+} sww_impact;
+
+typedef struct {
+    sww_fate fate;
+    sww_reason reason;
+    double d_crit;   /* d_crit(v_n) [m] (INFINITY for v_n = 0)                       */
+    double p_stick;  /* stick probability used (0 or 1 for a sharp map)             */
+    double e_n;      /* bounce / rip-off: v_n' = e_n v_n (1 for a stick)            */
+    double e_t;      /* bounce / rip-off: v_t' = e_t v_t (1 for a stick)            */
+} sww_outcome;
+
+typedef struct sww_model sww_model;
+
+sww_model *sww_alloc(void);
+void sww_free(sww_model *m);
+/* Last error message ("" when none). */
+const char *sww_errmsg(const sww_model *m);
+
+/* ---- the regime map (doc/regime-coeffs.md) ---------------------------------
+ * Load the file `snowregime map` writes: the sub-dictionary regime { ... }. */
+int sww_regime_load(sww_model *m, const char *path);
+/* Or set the same keys from code (the keys of the regime dictionary), then commit.
+ * number keys: version degree vnMin vnMax dMin dMax slopeLow slopeHigh rmsResidual
+ *   maxResidual yieldVelocity reboundNormal gamma Estar rhoParticle mu
+ * list keys: coeffs vn dCrit;  word keys: representation basis label
+ * Unknown keys are accepted and ignored (forward compatibility). Setting any key
+ * makes the model not ready until the next successful sww_regime_commit. */
+int sww_regime_number(sww_model *m, const char *key, double v);
+int sww_regime_list(sww_model *m, const char *key, const double *v, size_t n);
+int sww_regime_word(sww_model *m, const char *key, const char *w);
+/* Check required keys and consistency; origin names the source in messages. */
+int sww_regime_commit(sww_model *m, const char *origin);
+/* Forget every regime key (before setting a new map from code). */
+void sww_regime_clear(sww_model *m);
+
+/* ---- options (each off / neutral by default) ----------------------------- */
+/* Tangential gate: a stick candidate sticks only if vt <= vt_max (d/d_ref)^exponent. */
+int sww_set_tangential_gate(sww_model *m, double vt_max, double d_ref, double exponent);
+void sww_set_tangential_off(sww_model *m);
+/* Shear gate with a constant critical wall shear stress tau_c [Pa]. */
+int sww_set_shear_gate_constant(sww_model *m, double tau_c);
+/* Shear gate with tau_c(d) from JKR rolling / sliding detachment
+ * (regime/physics/swp_detach.h) using the regime's gamma, Estar and mu (mu
+ * missing: sliding ignored); roughness in (0, 1] multiplies the pull-off force. */
+int sww_set_shear_gate_adhesion(sww_model *m, double roughness);
+void sww_set_shear_off(sww_model *m);
+/* Tangential rebound factor e_t in [0, 1] (default 1). */
+int sww_set_rebound_tangential(sww_model *m, double e_t);
+
+/* ---- use ------------------------------------------------------------------ */
+/* Decide one impact. Returns SWW_OK, SWW_EINVAL (bad impact: NaN, d <= 0,
+ * negative speed, u outside [0,1), tau_w bad while the shear gate is on) or
+ * SWW_ENOTREADY. Thread-safe, allocates nothing, writes no message. */
+int sww_decide(const sww_model *m, const sww_impact *in, sww_outcome *out);
+
+/* d_crit(v_n) [m]: the fit inside [vnMin, vnMax]; outside it the power law
+ * d_crit(vn_end) (v_n/vn_end)^slope anchored at the range end; INFINITY for
+ * v_n <= 0; NaN only for NaN input or a model that is not ready. */
+double sww_dcrit(const sww_model *m, double vn);
+/* Normal rebound factor e_n(v_n) (Thornton with yieldVelocity, or the constant). */
+double sww_rebound_normal(const sww_model *m, double vn);
+/* Tangential limit vtMax(d) [m/s] (INFINITY when the gate is off). */
+double sww_vt_max(const sww_model *m, double d);
+/* Critical wall shear stress tau_c(d) [Pa] (INFINITY when the gate is off). */
+double sww_tau_crit(const sww_model *m, double d);
+/* 1 when sww_decide may be called. */
+int sww_ready(const sww_model *m);
+int sww_tangential_on(const sww_model *m);
+int sww_shear_on(const sww_model *m);
+/* The fit range and the label of the map. */
+double sww_vn_min(const sww_model *m);
+double sww_vn_max(const sww_model *m);
+const char *sww_label(const sww_model *m);
+/* One-line description of the model for logs, into buf (always terminated). */
+void sww_describe(const sww_model *m, char *buf, size_t n);
+const char *sww_fate_name(sww_fate f);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

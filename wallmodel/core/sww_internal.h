@@ -1,0 +1,49 @@
+/* sww_internal.h - the model structure shared by sww.c and sww_load.c (private). */
+#ifndef SWW_INTERNAL_H
+#define SWW_INTERNAL_H
+
+#include "sww.h"
+
+#define SWW_MAX_COEFFS 16
+#define SWW_MAX_TABLE 4096
+#define SWW_ERRLEN 512
+#define SWW_LABELLEN 256
+
+/* numeric keys of the regime dictionary, in this order */
+enum {
+    K_VERSION, K_DEGREE, K_VNMIN, K_VNMAX, K_DMIN, K_DMAX, K_SLOPELOW, K_SLOPEHIGH,
+    K_RMS, K_MAXRES, K_YIELD, K_REBOUND, K_GAMMA, K_ESTAR, K_RHO, K_MU, K_NNUM
+};
+
+struct sww_model {
+    /* regime keys as given */
+    double num[K_NNUM];
+    int has[K_NNUM];
+    int representation;            /* 0 unset, 1 polynomial, 2 table */
+    int basis;                     /* 0 unset (log), 1 log, 2 linear */
+    double coeffs[SWW_MAX_COEFFS];
+    size_t ncoeffs;
+    double *tab_lnv, *tab_lnd;     /* table in ln-ln, allocated at set time */
+    size_t ntab;
+    int has_vn, has_dcrit;
+    size_t n_vn, n_dcrit;
+    char label[SWW_LABELLEN];
+    /* derived at commit */
+    int ready;
+    double d_lo, d_hi;             /* d_crit at vnMin, vnMax */
+    /* options */
+    int vt_on;
+    double vt_max, vt_dref, vt_exp;
+    int shear_on;                  /* 0 off, 1 constant, 2 adhesion */
+    double tau_c, roughness;
+    double e_t;
+    char err[SWW_ERRLEN];
+};
+
+int sww_fail(sww_model *m, int code, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
+#endif

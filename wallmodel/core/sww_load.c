@@ -1,0 +1,295 @@
+/* sww_load.c - reader of regime.coeffs (doc/regime-coeffs.md): the subset of
+ * OpenFOAM dictionary syntax `//` and C comments, `key value;`, `key (v ...);`,
+ * `key "text";` and sub-dictionaries `name { ... }`. Only the entries of the
+ * sub-dictionary `regime` are used; they go through sww_regime_number/list/word
+ * (the same path as numbers set from code), then sww_regime_commit. */
+#include "sww_internal.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define MAX_FILE (1L << 22)
+#define MAX_TOK 256
+
+typedef enum { T_EOF, T_WORD, T_STRING, T_LPAR, T_RPAR, T_LBRACE, T_RBRACE, T_SEMI } tok_kind;
+
+typedef struct {
+    const char *path;
+    const char *s, *p, *end;
+    int line;
+    /* current token */
+    tok_kind kind;
+    int tline;
+    char text[MAX_TOK];
+    sww_model *m;
+} lexer;
+
+static int lex_fail(lexer *L, int code, int line, const char *what)
+{
+    return sww_fail(L->m, code, "%s:%d: %s", L->path, line, what);
+}
+
+/* Advance to the next token; returns SWW_OK or an error. */
+static int next(lexer *L)
+{
+    for (;;) {
+        while (L->p < L->end && isspace((unsigned char)*L->p)) {
+            if (*L->p == '\n')
+                L->line++;
+            L->p++;
+        }
+        if (L->p + 1 < L->end && L->p[0] == '/' && L->p[1] == '/') {
+            while (L->p < L->end && *L->p != '\n')
+                L->p++;
+            continue;
+        }
+        if (L->p + 1 < L->end && L->p[0] == '/' && L->p[1] == '*') {
+            const int start = L->line;
+            L->p += 2;
+            while (L->p + 1 < L->end && !(L->p[0] == '*' && L->p[1] == '/')) {
+                if (*L->p == '\n')
+                    L->line++;
+                L->p++;
+            }
+            if (L->p + 1 >= L->end)
+                return lex_fail(L, SWW_EPARSE, start, "unterminated /* comment");
+            L->p += 2;
+            continue;
+        }
+        break;
+    }
+    L->tline = L->line;
+    L->text[0] = '\0';
+    if (L->p >= L->end) {
+        L->kind = T_EOF;
+        return SWW_OK;
+    }
+    const char c = *L->p;
+    switch (c) {
+    case '(': L->kind = T_LPAR; L->p++; return SWW_OK;
+    case ')': L->kind = T_RPAR; L->p++; return SWW_OK;
+    case '{': L->kind = T_LBRACE; L->p++; return SWW_OK;
+    case '}': L->kind = T_RBRACE; L->p++; return SWW_OK;
+    case ';': L->kind = T_SEMI; L->p++; return SWW_OK;
+    default: break;
+    }
+    size_t n = 0;
+    if (c == '"') {
+        L->p++;
+        while (L->p < L->end && *L->p != '"' && *L->p != '\n') {
+            if (n + 1 >= MAX_TOK)
+                return lex_fail(L, SWW_EPARSE, L->tline, "string longer than 255 characters");
+            L->text[n++] = *L->p++;
+        }
+        if (L->p >= L->end || *L->p != '"')
+            return lex_fail(L, SWW_EPARSE, L->tline, "unterminated string (missing \")");
+        L->p++;
+        L->text[n] = '\0';
+        L->kind = T_STRING;
+        return SWW_OK;
+    }
+    while (L->p < L->end && !isspace((unsigned char)*L->p) && !strchr("(){};\"", *L->p)
+           && !(L->p + 1 < L->end && L->p[0] == '/' && (L->p[1] == '/' || L->p[1] == '*'))) {
+        if (!isprint((unsigned char)*L->p)) {
+            char msg[64];
+            snprintf(msg, sizeof msg, "unexpected byte 0x%02x", (unsigned char)*L->p);
+            return lex_fail(L, SWW_EPARSE, L->line, msg);
+        }
+        if (n + 1 >= MAX_TOK)
+            return lex_fail(L, SWW_EPARSE, L->tline, "word longer than 255 characters");
+        L->text[n++] = *L->p++;
+    }
+    L->text[n] = '\0';
+    L->kind = T_WORD;
+    return SWW_OK;
+}
+
+static const char *tok_desc(const lexer *L)
+{
+    switch (L->kind) {
+    case T_EOF: return "end of file";
+    case T_LPAR: return "'('";
+    case T_RPAR: return "')'";
+    case T_LBRACE: return "'{'";
+    case T_RBRACE: return "'}'";
+    case T_SEMI: return "';'";
+    default: return L->text;
+    }
+}
+
+static int expect_fail(lexer *L, const char *key, const char *what)
+{
+    return sww_fail(L->m, SWW_EPARSE, "%s:%d: key '%s': expected %s, found '%s'", L->path,
+                    L->tline, key, what, tok_desc(L));
+}
+
+/* strict number: the whole word must convert, finite */
+static int to_number(const char *w, double *v)
+{
+    char *e;
+    errno = 0;
+    *v = strtod(w, &e);
+    return e != w && *e == '\0';
+}
+
+/* prefix "path:line: " to the setter's message */
+static int setter_fail(lexer *L, int line, int rc)
+{
+    char msg[SWW_ERRLEN];
+    snprintf(msg, sizeof msg, "%s", L->m->err);
+    sww_fail(L->m, rc, "%s:%d: %s", L->path, line, msg);
+    return rc;
+}
+
+/* One entry after its keyword; use = 1 inside `regime` (send to the model). */
+static int parse_dict(lexer *L, int use, int depth, int *found_regime);
+
+static int parse_entry(lexer *L, const char *key, int keyline, int use, int depth, int *found_regime)
+{
+    int rc;
+    if (L->kind == T_LBRACE) {
+        if (depth > 16)
+            return lex_fail(L, SWW_EPARSE, keyline, "sub-dictionaries nested too deep");
+        const int is_regime = depth == 0 && !strcmp(key, "regime");
+        if (is_regime) {
+            if (*found_regime)
+                return sww_fail(L->m, SWW_EPARSE, "%s:%d: sub-dictionary 'regime' appears twice",
+                                L->path, keyline);
+            *found_regime = 1;
+        }
+        if ((rc = next(L)))
+            return rc;
+        if ((rc = parse_dict(L, is_regime, depth + 1, found_regime)))
+            return rc;
+        if (L->kind != T_RBRACE)
+            return sww_fail(L->m, SWW_EPARSE, "%s:%d: sub-dictionary '%s' (line %d) is not closed "
+                            "by '}'", L->path, L->tline, key, keyline);
+        return next(L);
+    }
+    if (L->kind == T_LPAR) {
+        double vals[SWW_MAX_TABLE];
+        size_t n = 0;
+        int line = L->tline;
+        for (;;) {
+            if ((rc = next(L)))
+                return rc;
+            if (L->kind == T_RPAR)
+                break;
+            if (L->kind != T_WORD)
+                return expect_fail(L, key, "a number or ')'");
+            if (n >= SWW_MAX_TABLE)
+                return sww_fail(L->m, SWW_EPARSE, "%s:%d: key '%s': more than %d values", L->path,
+                                L->tline, key, SWW_MAX_TABLE);
+            if (!to_number(L->text, &vals[n]))
+                return sww_fail(L->m, SWW_EINVAL, "%s:%d: key '%s': value '%s' (entry %zu) is "
+                                "not a number", L->path, L->tline, key, L->text, n);
+            n++;
+        }
+        if ((rc = next(L)))
+            return rc;
+        if (L->kind != T_SEMI)
+            return expect_fail(L, key, "';' after the list");
+        if (use && (rc = sww_regime_list(L->m, key, vals, n)))
+            return setter_fail(L, line, rc);
+        return next(L);
+    }
+    if (L->kind == T_WORD || L->kind == T_STRING) {
+        char val[MAX_TOK];
+        const int is_string = L->kind == T_STRING, line = L->tline;
+        memcpy(val, L->text, sizeof val);
+        if ((rc = next(L)))
+            return rc;
+        if (L->kind != T_SEMI)
+            return expect_fail(L, key, "';'");
+        if (use) {
+            double v;
+            if (!is_string && to_number(val, &v))
+                rc = sww_regime_number(L->m, key, v);
+            else
+                rc = sww_regime_word(L->m, key, val);
+            if (rc)
+                return setter_fail(L, line, rc);
+        }
+        return next(L);
+    }
+    (void)keyline;
+    return expect_fail(L, key, "a value, '(' or '{'");
+}
+
+static int parse_dict(lexer *L, int use, int depth, int *found_regime)
+{
+    /* keys seen in this dictionary (duplicates are an error inside regime) */
+    char seen[64][MAX_TOK];
+    int nseen = 0, rc;
+    while (L->kind == T_WORD) {
+        char key[MAX_TOK];
+        const int line = L->tline;
+        memcpy(key, L->text, sizeof key);
+        if (key[0] == '#' || key[0] == '$')
+            return sww_fail(L->m, SWW_EPARSE, "%s:%d: '%s': directives and $variables are not "
+                            "part of the regime.coeffs syntax", L->path, line, key);
+        if (use) {
+            for (int i = 0; i < nseen; i++)
+                if (!strcmp(seen[i], key))
+                    return sww_fail(L->m, SWW_EPARSE, "%s:%d: key '%s' appears twice", L->path,
+                                    line, key);
+            if (nseen < 64)
+                memcpy(seen[nseen++], key, sizeof key);
+        }
+        if ((rc = next(L)))
+            return rc;
+        if ((rc = parse_entry(L, key, line, use, depth, found_regime)))
+            return rc;
+    }
+    if (L->kind == T_STRING)
+        return sww_fail(L->m, SWW_EPARSE, "%s:%d: expected a keyword, found the string \"%s\"",
+                        L->path, L->tline, L->text);
+    return SWW_OK;
+}
+
+int sww_regime_load(sww_model *m, const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return sww_fail(m, SWW_EIO, "%s: cannot open: %s", path, strerror(errno));
+    char *buf = malloc(MAX_FILE);
+    if (!buf) {
+        fclose(f);
+        return sww_fail(m, SWW_ENOMEM, "%s: out of memory", path);
+    }
+    const size_t n = fread(buf, 1, MAX_FILE, f);
+    const int err = ferror(f), more = !feof(f);
+    fclose(f);
+    if (err) {
+        free(buf);
+        return sww_fail(m, SWW_EIO, "%s: read error", path);
+    }
+    if (more) {
+        free(buf);
+        return sww_fail(m, SWW_EIO, "%s: file larger than %ld bytes", path, MAX_FILE);
+    }
+    sww_regime_clear(m);
+    lexer L = { .path = path, .s = buf, .p = buf, .end = buf + n, .line = 1, .m = m };
+    int found = 0, rc = next(&L);
+    if (!rc)
+        rc = parse_dict(&L, 0, 0, &found);
+    if (!rc && L.kind != T_EOF)
+        rc = sww_fail(m, SWW_EPARSE, "%s:%d: expected a keyword, found %s", path, L.tline, tok_desc(&L));
+    free(buf);
+    if (rc) {
+        sww_regime_clear(m);
+        return rc;
+    }
+    if (!found) {
+        sww_regime_clear(m);
+        return sww_fail(m, SWW_EMISSING, "%s: missing sub-dictionary 'regime { ... }'", path);
+    }
+    rc = sww_regime_commit(m, path);
+    if (rc)
+        m->ready = 0;
+    return rc;
+}
