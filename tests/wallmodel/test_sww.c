@@ -1,0 +1,568 @@
+/* test_sww.c - the wall-interaction core (wallmodel/core, sww_) and the shear
+ * detachment closed forms (regime/physics/swp_detach) against independent numbers. */
+#include <math.h>
+#include <pthread.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include <cmocka.h>
+
+#include "sww.h"
+#include "swp_contact.h"
+#include "swp_cor.h"
+#include "swp_detach.h"
+
+#define ASSERT_REL(x, ref, tol) assert_true(fabs((x) - (ref)) <= (tol) * fabs(ref))
+
+static const char *const FIXTURE = SWW_FIXTURES "/regime.coeffs";
+/* the fixture's fit: ln d = C0 + C1 x + C2 x^2 + C3 x^3, x = ln v */
+static const double C0 = -10.414313, C1 = -1.3, C2 = -0.02, C3 = -0.005;
+static const double VNMIN = 0.2, VNMAX = 6.0, SLO = -1.2, SHI = -1.4, VY = 1.44e-4;
+
+static double fit(double v)
+{
+    const double x = log(v);
+    return exp(C0 + C1 * x + C2 * x * x + C3 * x * x * x);
+}
+
+static char tmpdir[64];
+
+static int setup(void **s)
+{
+    (void)s;
+    strcpy(tmpdir, "/tmp/sww-test-XXXXXX");
+    return mkdtemp(tmpdir) ? 0 : -1;
+}
+
+static int teardown(void **s)
+{
+    (void)s;
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmpdir);
+    return system(cmd) == 0 ? 0 : -1;
+}
+
+static sww_model *load_fixture(void)
+{
+    sww_model *m = sww_alloc();
+    assert_non_null(m);
+    const int rc = sww_regime_load(m, FIXTURE);
+    if (rc)
+        fprintf(stderr, "%s\n", sww_errmsg(m));
+    assert_int_equal(rc, SWW_OK);
+    return m;
+}
+
+static sww_outcome decide(const sww_model *m, double d, double vn, double vt, double tau, double u)
+{
+    sww_impact in = { .d = d, .vn = vn, .vt = vt, .tau_w = tau, .u = u };
+    sww_outcome out;
+    assert_int_equal(sww_decide(m, &in, &out), SWW_OK);
+    return out;
+}
+
+/* ------------------------------------------------------------- criterion */
+
+static void fixture_loads(void **s)
+{
+    (void)s;
+    sww_model *m = load_fixture();
+    assert_true(sww_ready(m));
+    assert_string_equal(sww_label(m), "test fixture: dry snow on ABS");
+    assert_true(sww_vn_min(m) == VNMIN && sww_vn_max(m) == VNMAX);
+    for (double v = VNMIN; v <= VNMAX; v *= 1.37)
+        ASSERT_REL(sww_dcrit(m, v), fit(v), 1e-12);
+    ASSERT_REL(sww_dcrit(m, 1.0), 3e-5, 1e-6);
+    assert_false(sww_tangential_on(m));
+    assert_false(sww_shear_on(m));
+    char buf[512];
+    sww_describe(m, buf, sizeof buf);
+    assert_non_null(strstr(buf, "tangential gate off; shear gate off"));
+    sww_free(m);
+}
+
+static void criterion_stick_bounce(void **s)
+{
+    (void)s;
+    sww_model *m = load_fixture();
+    const double vns[] = { 0.05, 0.2, 0.7, 1.0, 3.3, 6.0, 20.0 };
+    for (size_t i = 0; i < sizeof vns / sizeof *vns; i++) {
+        const double v = vns[i], dc = sww_dcrit(m, v);
+        sww_outcome o = decide(m, dc * 0.999, v, 5.0, 0.0, 0.3);
+        assert_int_equal(o.fate, SWW_STICK);
+        assert_int_equal(o.reason, SWW_BY_CRITERION);
+        assert_true(o.e_n == 1.0 && o.e_t == 1.0 && o.p_stick == 1.0);
+        o = decide(m, dc, v, 0.0, 0.0, 0.0); /* d == d_crit: sticks (bounce if d > d_crit) */
+        assert_int_equal(o.fate, SWW_STICK);
+        o = decide(m, dc * 1.001, v, 0.0, 0.0, 0.999);
+        assert_int_equal(o.fate, SWW_BOUNCE);
+        assert_int_equal(o.reason, SWW_BY_CRITERION);
+        assert_true(o.p_stick == 0.0);
+        /* rebound factors: Thornton with the file's yield velocity, e_t default 1 */
+        ASSERT_REL(o.e_n, swp_cor_thornton(VY / v), 1e-14);
+        assert_true(o.e_n > 0.0 && o.e_n < 1.0);
+        assert_true(o.e_t == 1.0);
+        ASSERT_REL(o.d_crit, dc, 0.0);
+    }
+    /* constant rebound and tangential factor */
+    assert_int_equal(sww_regime_number(m, "reboundNormal", 0.3), SWW_OK);
+    assert_false(sww_ready(m)); /* changed: must be committed again */
+    sww_impact in = { .d = 1e-4, .vn = 2.0, .u = 0.5 };
+    sww_outcome o;
+    assert_int_equal(sww_decide(m, &in, &o), SWW_ENOTREADY);
+    assert_int_equal(sww_regime_commit(m, "code"), SWW_OK);
+    assert_int_equal(sww_set_rebound_tangential(m, 0.8), SWW_OK);
+    o = decide(m, 1e-4, 2.0, 1.0, 0.0, 0.5);
+    assert_int_equal(o.fate, SWW_BOUNCE);
+    assert_true(o.e_n == 0.3 && o.e_t == 0.8);
+    assert_int_equal(sww_set_rebound_tangential(m, 1.5), SWW_EINVAL);
+    assert_non_null(strstr(sww_errmsg(m), "1.5"));
+    sww_free(m);
+}
+
+/* d_crit is never the polynomial outside [vnMin, vnMax]: power law anchored at the end. */
+static void range_handling(void **s)
+{
+    (void)s;
+    sww_model *m = load_fixture();
+    const double dlo = fit(VNMIN), dhi = fit(VNMAX);
+    const double lows[] = { 0.19999, 0.1, 1e-3, 1e-9 };
+    for (size_t i = 0; i < 4; i++)
+        ASSERT_REL(sww_dcrit(m, lows[i]), dlo * pow(lows[i] / VNMIN, SLO), 1e-12);
+    const double highs[] = { 6.0001, 10.0, 100.0, 1e6 };
+    for (size_t i = 0; i < 4; i++) {
+        ASSERT_REL(sww_dcrit(m, highs[i]), dhi * pow(highs[i] / VNMAX, SHI), 1e-12);
+        /* the cubic itself would turn elsewhere: it is not used out here */
+    }
+    assert_true(fit(1e6) != sww_dcrit(m, 1e6));
+    /* continuous at both ends */
+    ASSERT_REL(sww_dcrit(m, VNMIN * (1 - 1e-12)), sww_dcrit(m, VNMIN), 1e-9);
+    ASSERT_REL(sww_dcrit(m, VNMAX * (1 + 1e-12)), sww_dcrit(m, VNMAX), 1e-9);
+    /* extreme inputs: no NaN, physically sensible limits */
+    assert_true(isinf(sww_dcrit(m, 0.0)));
+    assert_true(isinf(sww_dcrit(m, 1e-320)) || sww_dcrit(m, 1e-320) > 1.0);
+    assert_true(sww_dcrit(m, 1e300) >= 0.0);
+    assert_true(isnan(sww_dcrit(m, NAN)));
+    sww_outcome o = decide(m, 1e-3, 0.0, 0.0, 0.0, 0.1); /* v_n = 0: no bounce */
+    assert_int_equal(o.fate, SWW_STICK);
+    o = decide(m, 1e-6, 1e300, 0.0, 0.0, 0.1);
+    assert_int_equal(o.fate, SWW_BOUNCE);
+    assert_false(isnan(o.e_n));
+    sww_free(m);
+}
+
+static void table_and_linear_from_code(void **s)
+{
+    (void)s;
+    sww_model *m = sww_alloc();
+    const double vn[] = { 0.1, 1.0, 10.0 }, dc[] = { 1e-4, 1e-5, 4e-6 };
+    assert_int_equal(sww_regime_word(m, "representation", "table"), SWW_OK);
+    assert_int_equal(sww_regime_list(m, "vn", vn, 3), SWW_OK);
+    assert_int_equal(sww_regime_list(m, "dCrit", dc, 3), SWW_OK);
+    assert_int_equal(sww_regime_number(m, "vnMin", 0.1), SWW_OK);
+    assert_int_equal(sww_regime_number(m, "vnMax", 10.0), SWW_OK);
+    assert_int_equal(sww_regime_number(m, "slopeLow", -1.0), SWW_OK);
+    assert_int_equal(sww_regime_number(m, "slopeHigh", 0.0), SWW_OK);
+    assert_int_equal(sww_regime_commit(m, "code"), SWW_OK);
+    /* linear in ln-ln: geometric means at the log midpoints */
+    ASSERT_REL(sww_dcrit(m, sqrt(0.1 * 1.0)), sqrt(1e-4 * 1e-5), 1e-12);
+    ASSERT_REL(sww_dcrit(m, sqrt(10.0)), sqrt(1e-5 * 4e-6), 1e-12);
+    ASSERT_REL(sww_dcrit(m, 1.0), 1e-5, 1e-12);
+    ASSERT_REL(sww_dcrit(m, 0.01), 1e-4 * pow(0.1, -1.0), 1e-12);
+    ASSERT_REL(sww_dcrit(m, 1000.0), 4e-6, 1e-12); /* flat slope */
+    /* no yieldVelocity, no reboundNormal: elastic rebound */
+    assert_true(sww_rebound_normal(m, 3.0) == 1.0);
+
+    /* linear basis: d_crit = 5e-5 - 4e-6 v on [1, 10] */
+    sww_regime_clear(m);
+    const double c[] = { 5e-5, -4e-6 };
+    assert_int_equal(sww_regime_word(m, "representation", "polynomial"), SWW_OK);
+    assert_int_equal(sww_regime_word(m, "basis", "linear"), SWW_OK);
+    assert_int_equal(sww_regime_list(m, "coeffs", c, 2), SWW_OK);
+    assert_int_equal(sww_regime_number(m, "degree", 1), SWW_OK);
+    assert_int_equal(sww_regime_number(m, "vnMin", 1.0), SWW_OK);
+    assert_int_equal(sww_regime_number(m, "vnMax", 10.0), SWW_OK);
+    assert_int_equal(sww_regime_number(m, "slopeLow", -1.0), SWW_OK);
+    assert_int_equal(sww_regime_number(m, "slopeHigh", -2.0), SWW_OK);
+    assert_int_equal(sww_regime_number(m, "reboundNormal", 0.5), SWW_OK);
+    assert_int_equal(sww_regime_commit(m, "code"), SWW_OK);
+    ASSERT_REL(sww_dcrit(m, 5.0), 3e-5, 1e-12);
+    ASSERT_REL(sww_dcrit(m, 20.0), 1e-5 * 0.25, 1e-12);
+    /* the linear polynomial would go negative at 12.5 m/s; the power law does not */
+    assert_true(sww_dcrit(m, 13.0) > 0.0);
+    sww_free(m);
+}
+
+/* ------------------------------------------------------------- gates */
+
+static void tangential_gate(void **s)
+{
+    (void)s;
+    sww_model *m = load_fixture();
+    const double d = 1e-5, v = 1.0; /* well below d_crit = 30 um: a stick candidate */
+    assert_true(isinf(sww_vt_max(m, d)));
+    assert_int_equal(decide(m, d, v, 1e3, 0.0, 0.5).fate, SWW_STICK); /* off: any v_t sticks */
+    assert_int_equal(sww_set_tangential_gate(m, 2.0, 5e-5, 0.0), SWW_OK);
+    assert_int_equal(decide(m, d, v, 2.0, 0.0, 0.5).fate, SWW_STICK);
+    sww_outcome o = decide(m, d, v, 2.0001, 0.0, 0.5);
+    assert_int_equal(o.fate, SWW_BOUNCE);
+    assert_int_equal(o.reason, SWW_BY_TANGENTIAL);
+    ASSERT_REL(o.e_n, swp_cor_thornton(VY / v), 1e-14);
+    /* a bouncing particle stays a bounce by the criterion */
+    o = decide(m, 1e-4, v, 100.0, 0.0, 0.5);
+    assert_int_equal(o.reason, SWW_BY_CRITERION);
+    /* power law vtMax(d) = 2 (d / 50 um)^-0.5 */
+    assert_int_equal(sww_set_tangential_gate(m, 2.0, 5e-5, -0.5), SWW_OK);
+    ASSERT_REL(sww_vt_max(m, 1.25e-5), 4.0, 1e-14);
+    assert_int_equal(decide(m, 1.25e-5, v, 3.99, 0.0, 0.5).fate, SWW_STICK);
+    assert_int_equal(decide(m, 1.25e-5, v, 4.01, 0.0, 0.5).fate, SWW_BOUNCE);
+    sww_set_tangential_off(m);
+    assert_int_equal(decide(m, 1.25e-5, v, 400.0, 0.0, 0.5).fate, SWW_STICK);
+    assert_int_equal(sww_set_tangential_gate(m, NAN, 5e-5, 0), SWW_EINVAL);
+    assert_non_null(strstr(sww_errmsg(m), "vtMax nan"));
+    assert_int_equal(sww_set_tangential_gate(m, 1.0, -5e-5, 0), SWW_EINVAL);
+    assert_non_null(strstr(sww_errmsg(m), "dRef -5e-05"));
+    assert_int_equal(sww_set_tangential_gate(m, 1.0, 5e-5, INFINITY), SWW_EINVAL);
+    assert_false(sww_tangential_on(m));
+    sww_free(m);
+}
+
+/* Independent critical shear stress: moments / forces written out here. */
+static double tau_indep(double G, double Es, double R, double mu, double k)
+{
+    const double Fc = k * 1.5 * M_PI * G * R;
+    const double a0 = cbrt(9.0 * M_PI * G * R * R / (2.0 * Es));
+    /* per unit tau: drag 1.7009*3 pi mu d (R/mu) = 1.7009*6 pi R^2; torque 0.944*4 pi R^3 */
+    const double drag1 = 1.7009 * 3.0 * M_PI * (2.0 * R) * R;
+    const double torque1 = 0.944 * 4.0 * M_PI * R * R * R;
+    const double roll = Fc * a0 / (drag1 * R + torque1);
+    const double slide = mu * Fc / drag1;
+    return mu > 0 && slide < roll ? slide : roll;
+}
+
+static void detach_physics(void **s)
+{
+    (void)s;
+    const double G = 0.2, Es = 1.88e9, R = 25e-6;
+    ASSERT_REL(swp_tau_detach(G, Es, R, 0.05, 1.0), tau_indep(G, Es, R, 0.05, 1.0), 1e-12);
+    /* smooth JKR: order 10 Pa for 50 um (snow-physics.md section 8): ~33.7 Pa, rolling */
+    const double t50 = swp_tau_detach(G, Es, R, 0.05, 1.0);
+    assert_true(t50 > 10.0 && t50 < 100.0);
+    assert_true(swp_tau_roll(G, Es, R, 1.0) < swp_tau_slide(G, R, 0.05, 1.0));
+    ASSERT_REL(t50, 33.7, 0.01);
+    /* at the threshold the moments balance */
+    ASSERT_REL(swp_shear_moment(t50, R),
+               swp_jkr_pulloff_force(G, R) * swp_jkr_a0(G, Es, R), 1e-12);
+    /* a tiny friction coefficient makes sliding the weaker mode */
+    ASSERT_REL(swp_tau_detach(G, Es, R, 1e-3, 1.0), swp_tau_slide(G, R, 1e-3, 1.0), 1e-12);
+    ASSERT_REL(swp_shear_drag(swp_tau_slide(G, R, 1e-3, 1.0), R),
+               1e-3 * swp_jkr_pulloff_force(G, R), 1e-12);
+    /* roughness scales linearly; smaller particles resist larger stresses (~R^-4/3) */
+    ASSERT_REL(swp_tau_detach(G, Es, R, 0.05, 0.1), 0.1 * t50, 1e-12);
+    ASSERT_REL(swp_tau_roll(G, Es, R / 8.0, 1.0), swp_tau_roll(G, Es, R, 1.0) * 16.0, 1e-12);
+    /* mu <= 0: sliding ignored */
+    ASSERT_REL(swp_tau_detach(G, Es, R, 0.0, 1.0), swp_tau_roll(G, Es, R, 1.0), 1e-15);
+}
+
+static void shear_gate(void **s)
+{
+    (void)s;
+    sww_model *m = load_fixture();
+    const double d = 2e-5, v = 1.0; /* stick candidate */
+    /* off: tau_w is not even read (NaN accepted) */
+    assert_true(isinf(sww_tau_crit(m, d)));
+    assert_int_equal(decide(m, d, v, 0.0, NAN, 0.5).fate, SWW_STICK);
+    assert_int_equal(sww_set_shear_gate_constant(m, 1.5), SWW_OK);
+    assert_int_equal(decide(m, d, v, 0.0, 1.49, 0.5).fate, SWW_STICK);
+    sww_outcome o = decide(m, d, v, 0.5, 1.5, 0.5);
+    assert_int_equal(o.fate, SWW_RIPOFF);
+    assert_int_equal(o.reason, SWW_BY_SHEAR);
+    ASSERT_REL(o.e_n, swp_cor_thornton(VY / v), 1e-14);
+    /* a bounce is a bounce whatever the shear */
+    assert_int_equal(decide(m, 1e-4, v, 0.0, 1e6, 0.5).fate, SWW_BOUNCE);
+    /* shear on: a bad tau_w is an input error */
+    sww_impact in = { .d = d, .vn = v, .tau_w = NAN, .u = 0.5 };
+    assert_int_equal(sww_decide(m, &in, &o), SWW_EINVAL);
+    in.tau_w = -1.0;
+    assert_int_equal(sww_decide(m, &in, &o), SWW_EINVAL);
+    /* adhesion: tau_c(d) from the regime's gamma, Estar, mu */
+    assert_int_equal(sww_set_shear_gate_adhesion(m, 0.1), SWW_OK);
+    const double tc = tau_indep(0.2, 1.88e9, d / 2, 0.05, 0.1);
+    ASSERT_REL(sww_tau_crit(m, d), tc, 1e-12);
+    assert_int_equal(decide(m, d, v, 0.0, tc * 0.999, 0.5).fate, SWW_STICK);
+    assert_int_equal(decide(m, d, v, 0.0, tc * 1.001, 0.5).fate, SWW_RIPOFF);
+    /* tangential gate is checked first: a bounce, not a rip-off */
+    assert_int_equal(sww_set_tangential_gate(m, 0.1, 5e-5, 0.0), SWW_OK);
+    assert_int_equal(decide(m, d, v, 0.2, tc * 2, 0.5).fate, SWW_BOUNCE);
+    sww_set_shear_off(m);
+    assert_false(sww_shear_on(m));
+    assert_int_equal(sww_set_shear_gate_adhesion(m, 0.0), SWW_EINVAL);
+    assert_non_null(strstr(sww_errmsg(m), "roughnessFactor 0"));
+    assert_int_equal(sww_set_shear_gate_constant(m, -1.0), SWW_EINVAL);
+    assert_non_null(strstr(sww_errmsg(m), "tauCrit -1"));
+    sww_free(m);
+
+    /* adhesion without gamma in the map */
+    m = sww_alloc();
+    const double c[] = { -10.0, -1.0 };
+    sww_regime_word(m, "representation", "polynomial");
+    sww_regime_list(m, "coeffs", c, 2);
+    sww_regime_number(m, "vnMin", 0.1);
+    sww_regime_number(m, "vnMax", 1.0);
+    sww_regime_number(m, "slopeLow", -1.0);
+    sww_regime_number(m, "slopeHigh", -1.0);
+    assert_int_equal(sww_regime_commit(m, "code"), SWW_OK);
+    assert_int_equal(sww_set_shear_gate_adhesion(m, 1.0), SWW_EMISSING);
+    assert_non_null(strstr(sww_errmsg(m), "'gamma'"));
+    sww_free(m);
+}
+
+/* The caller's random number: any u in [0,1) gives the sharp map's answer. */
+static void probability_hook_and_bad_impacts(void **s)
+{
+    (void)s;
+    sww_model *m = load_fixture();
+    const double dc = sww_dcrit(m, 2.0);
+    for (double u = 0.0; u < 1.0; u += 0.0625) {
+        assert_int_equal(decide(m, dc * 0.99, 2.0, 0, 0, u).fate, SWW_STICK);
+        assert_int_equal(decide(m, dc * 1.01, 2.0, 0, 0, u).fate, SWW_BOUNCE);
+    }
+    const sww_impact bad[] = {
+        { .d = 0.0, .vn = 1.0 }, { .d = -1e-5, .vn = 1.0 }, { .d = NAN, .vn = 1.0 },
+        { .d = INFINITY, .vn = 1.0 }, { .d = 1e-5, .vn = -1.0 }, { .d = 1e-5, .vn = NAN },
+        { .d = 1e-5, .vn = 1.0, .vt = -1.0 }, { .d = 1e-5, .vn = 1.0, .vt = NAN },
+        { .d = 1e-5, .vn = 1.0, .u = 1.0 }, { .d = 1e-5, .vn = 1.0, .u = -0.1 },
+        { .d = 1e-5, .vn = 1.0, .u = NAN }, { .d = 1e-5, .vn = INFINITY },
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof *bad; i++) {
+        sww_outcome o;
+        assert_int_equal(sww_decide(m, &bad[i], &o), SWW_EINVAL);
+    }
+    sww_free(m);
+    sww_model *e = sww_alloc();
+    sww_outcome o;
+    sww_impact ok = { .d = 1e-5, .vn = 1.0, .u = 0.5 };
+    assert_int_equal(sww_decide(e, &ok, &o), SWW_ENOTREADY);
+    assert_true(isnan(sww_dcrit(e, 1.0)));
+    sww_free(e);
+}
+
+/* Setting the numbers from code gives the same model as the file. */
+static void code_equals_file(void **s)
+{
+    (void)s;
+    sww_model *f = load_fixture(), *c = sww_alloc();
+    const double co[] = { C0, C1, C2, C3 };
+    sww_regime_word(c, "representation", "polynomial");
+    sww_regime_list(c, "coeffs", co, 4);
+    sww_regime_number(c, "vnMin", VNMIN);
+    sww_regime_number(c, "vnMax", VNMAX);
+    sww_regime_number(c, "slopeLow", SLO);
+    sww_regime_number(c, "slopeHigh", SHI);
+    sww_regime_number(c, "yieldVelocity", VY);
+    assert_int_equal(sww_regime_commit(c, "code"), SWW_OK);
+    for (double v = 1e-3; v < 1e3; v *= 1.9)
+        ASSERT_REL(sww_dcrit(c, v), sww_dcrit(f, v), 1e-13);
+    assert_true(sww_rebound_normal(c, 2.0) == sww_rebound_normal(f, 2.0));
+    sww_free(f);
+    sww_free(c);
+}
+
+/* Many threads deciding with one model give the serial answers. */
+typedef struct { const sww_model *m; int offset; long mismatches; } job;
+static int serial_fate[4096];
+
+static void *worker(void *arg)
+{
+    job *j = arg;
+    for (int rep = 0; rep < 50; rep++)
+        for (int i = 0; i < 4096; i++) {
+            const int k = (i + j->offset) % 4096;
+            sww_impact in = { .d = 1e-6 * (1 + k % 97), .vn = 0.01 * (1 + k / 8), .vt = 0.001 * k,
+                              .tau_w = 0.1 * (k % 13), .u = (k % 10) / 10.0 };
+            sww_outcome o;
+            if (sww_decide(j->m, &in, &o) != SWW_OK || (int)o.fate != serial_fate[k])
+                j->mismatches++;
+        }
+    return NULL;
+}
+
+static void thread_safe(void **s)
+{
+    (void)s;
+    sww_model *m = load_fixture();
+    assert_int_equal(sww_set_tangential_gate(m, 2.0, 5e-5, -0.3), SWW_OK);
+    assert_int_equal(sww_set_shear_gate_adhesion(m, 0.01), SWW_OK);
+    int counts[3] = { 0, 0, 0 };
+    for (int k = 0; k < 4096; k++) {
+        sww_impact in = { .d = 1e-6 * (1 + k % 97), .vn = 0.01 * (1 + k / 8), .vt = 0.001 * k,
+                          .tau_w = 0.1 * (k % 13), .u = (k % 10) / 10.0 };
+        sww_outcome o;
+        assert_int_equal(sww_decide(m, &in, &o), SWW_OK);
+        serial_fate[k] = o.fate;
+        counts[o.fate]++;
+    }
+    assert_true(counts[0] > 0 && counts[1] > 0 && counts[2] > 0); /* all three fates occur */
+    pthread_t t[4];
+    job jobs[4];
+    for (int i = 0; i < 4; i++) {
+        jobs[i] = (job){ m, i * 1000, 0 };
+        assert_int_equal(pthread_create(&t[i], NULL, worker, &jobs[i]), 0);
+    }
+    for (int i = 0; i < 4; i++) {
+        pthread_join(t[i], NULL);
+        assert_int_equal(jobs[i].mismatches, 0);
+    }
+    sww_free(m);
+}
+
+/* ------------------------------------------------------------- loader errors */
+
+static const char *GOOD =
+    "regime\n{\n"
+    "    representation polynomial;\n"
+    "    basis log;\n"
+    "    degree 1;\n"
+    "    coeffs (-10.0 -1.0);\n"
+    "    vnMin 0.2;\n"
+    "    vnMax 6.0;\n"
+    "    slopeLow -1.2;\n"
+    "    slopeHigh -1.4;\n"
+    "}\n";
+
+/* Replace the first line containing `what` (a key) with `with` ("" deletes it). */
+static char *edit(const char *base, const char *what, const char *with)
+{
+    static char out[4096];
+    const char *p = strstr(base, what);
+    assert_non_null(p);
+    const char *ls = p;
+    while (ls > base && ls[-1] != '\n')
+        ls--;
+    const char *le = strchr(p, '\n');
+    snprintf(out, sizeof out, "%.*s%s%s", (int)(ls - base), base, with, le);
+    return out;
+}
+
+static int load_text(const char *text, char *path, sww_model **mp)
+{
+    static int n;
+    snprintf(path, 256, "%s/case%d.coeffs", tmpdir, n++);
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fputs(text, f);
+    fclose(f);
+    *mp = sww_alloc();
+    return sww_regime_load(*mp, path);
+}
+
+typedef struct {
+    const char *key, *with;   /* edit of GOOD (key NULL: `with` is the whole text) */
+    int rc;
+    const char *msg1, *msg2;  /* must appear in the message (besides the path) */
+} bad_case;
+
+static void loader_errors(void **s)
+{
+    (void)s;
+    const bad_case cases[] = {
+        { "representation", "", SWW_EMISSING, "missing key 'representation'", NULL },
+        { "coeffs", "", SWW_EMISSING, "missing key 'coeffs'", NULL },
+        { "vnMin", "", SWW_EMISSING, "missing key 'vnMin'", NULL },
+        { "vnMax", "", SWW_EMISSING, "missing key 'vnMax'", NULL },
+        { "slopeLow", "", SWW_EMISSING, "missing key 'slopeLow'", NULL },
+        { "slopeHigh", "", SWW_EMISSING, "missing key 'slopeHigh'", NULL },
+        { "vnMin", "vnMin nan;", SWW_EINVAL, "key 'vnMin'", "not a finite number" },
+        { "vnMax", "vnMax inf;", SWW_EINVAL, "key 'vnMax'", "not a finite number" },
+        { "coeffs", "coeffs (-10 nan);", SWW_EINVAL, "key 'coeffs'", "entry 1" },
+        { "coeffs", "coeffs (-10 abc);", SWW_EINVAL, "key 'coeffs'", "'abc'" },
+        { "vnMin", "vnMin 0.2x;", SWW_EINVAL, "key 'vnMin'", "'0.2x' is not a number" },
+        { "vnMin", "vnMin 7;", SWW_EINVAL, "key 'vnMin'", "7 is not below vnMax 6" },
+        { "vnMin", "vnMin 6;", SWW_EINVAL, "key 'vnMin'", "6 is not below vnMax 6" },
+        { "vnMin", "vnMin -1;", SWW_EINVAL, "key 'vnMin'", "-1 must be > 0" },
+        { "degree", "degree 3;", SWW_EINVAL, "key 'degree'", "value 3 does not match the 2" },
+        { "coeffs", "coeffs (-10.0 1.0);", SWW_EINVAL, "key 'coeffs'", "increases" },
+        { "slopeLow", "slopeLow 0.5;", SWW_EINVAL, "key 'slopeLow'", "0.5" },
+        { "slopeHigh", "slopeHigh 2;", SWW_EINVAL, "key 'slopeHigh'", "value 2" },
+        { "representation", "representation spline;", SWW_EINVAL, "key 'representation'", "'spline'" },
+        { "basis", "basis log10;", SWW_EINVAL, "key 'basis'", "'log10'" },
+        { "vnMax", "vnMax (1 2);", SWW_EINVAL, "key 'vnMax'", "expects one number" },
+        { "coeffs", "coeffs -10;", SWW_EINVAL, "key 'coeffs'", "expects a list" },
+        { "vnMax", "vnMax 6.0", SWW_EPARSE, "key 'vnMax'", "expected ';'" },
+        { "vnMax", "vnMax 6.0; vnMax 7;", SWW_EPARSE, "key 'vnMax' appears twice", NULL },
+        { "vnMax", "vnMax 6.0; /* open", SWW_EPARSE, "unterminated /* comment", NULL },
+        { "vnMax", "vnMax \"6.0;", SWW_EPARSE, "unterminated string", NULL },
+        { "vnMax", "#include \"x\"", SWW_EPARSE, "'#include'", NULL },
+        { "vnMax", "vnMax 6.0; yieldVelocity -1;", SWW_EINVAL, "key 'yieldVelocity'", "-1" },
+        { "vnMax", "vnMax 6.0; reboundNormal 1.2;", SWW_EINVAL, "key 'reboundNormal'", "1.2" },
+        { "vnMax", "vnMax 6.0; gamma 0;", SWW_EINVAL, "key 'gamma'", "0 must be > 0" },
+        { "vnMax", "vnMax 6.0; version 2;", SWW_EINVAL, "key 'version'", "2" },
+        { NULL, "other { a 1; }\n", SWW_EMISSING, "missing sub-dictionary 'regime", NULL },
+        { NULL, "regime { vnMin 1; ", SWW_EPARSE, "'regime'", "not closed" },
+        { NULL, "regime { vnMin 1; } }", SWW_EPARSE, "found '}'", NULL },
+        { NULL, "", SWW_EMISSING, "missing sub-dictionary", NULL },
+        /* table representation */
+        { NULL, "regime { representation table; vn (0.1 1 10); vnMin 0.2; vnMax 6; slopeLow -1; "
+                "slopeHigh -1; }", SWW_EMISSING, "missing key 'dCrit'", NULL },
+        { NULL, "regime { representation table; dCrit (1e-4 1e-5 1e-6); vnMin 0.2; vnMax 6; "
+                "slopeLow -1; slopeHigh -1; }", SWW_EMISSING, "missing key 'vn'", NULL },
+        { NULL, "regime { representation table; vn (0.1 1 1); dCrit (1e-4 1e-5 1e-6); vnMin 0.2; "
+                "vnMax 6; slopeLow -1; slopeHigh -1; }", SWW_EINVAL, "key 'vn'", "strictly increasing" },
+        { NULL, "regime { representation table; vn (0.1 1 10); dCrit (1e-4 0 1e-6); vnMin 0.2; "
+                "vnMax 6; slopeLow -1; slopeHigh -1; }", SWW_EINVAL, "key 'dCrit'", "value 0" },
+        { NULL, "regime { representation table; vn (0.1 1 10); dCrit (1e-4 1e-5); vnMin 0.2; "
+                "vnMax 6; slopeLow -1; slopeHigh -1; }", SWW_EINVAL, "key 'dCrit'", "2 values" },
+        { NULL, "regime { representation table; vn (0.1 1 10); dCrit (1e-4 1e-5 2e-5); vnMin 0.2; "
+                "vnMax 6; slopeLow -1; slopeHigh -1; }", SWW_EINVAL, "key 'dCrit'", "increases" },
+        { NULL, "regime { representation table; vn (0.3 1 10); dCrit (1e-4 1e-5 1e-6); vnMin 0.2; "
+                "vnMax 6; slopeLow -1; slopeHigh -1; }", SWW_EINVAL, "key 'vn'", "does not cover" },
+        { NULL, "regime { representation polynomial; basis linear; coeffs (1e-5 -1e-5); "
+                "vnMin 0.2; vnMax 6; slopeLow -1; slopeHigh -1; }", SWW_EINVAL, "key 'coeffs'",
+                "not a finite positive diameter" },
+    };
+    char path[256];
+    for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
+        const bad_case *c = &cases[i];
+        sww_model *m;
+        const int rc = load_text(c->key ? edit(GOOD, c->key, c->with) : c->with, path, &m);
+        const char *msg = sww_errmsg(m);
+        if (rc != c->rc || !strstr(msg, path) || !strstr(msg, c->msg1)
+            || (c->msg2 && !strstr(msg, c->msg2)) || strchr(msg, '\n'))
+            fail_msg("case %zu: rc %d (want %d), message: %s", i, rc, c->rc, msg);
+        assert_false(sww_ready(m));
+        sww_free(m);
+    }
+    /* the good text loads, with a line number in a later parse error */
+    sww_model *m;
+    assert_int_equal(load_text(GOOD, path, &m), SWW_OK);
+    sww_free(m);
+    assert_int_equal(load_text(edit(GOOD, "vnMax", "vnMax 6.0 ;;"), path, &m), SWW_EPARSE);
+    assert_non_null(strstr(sww_errmsg(m), ":8:"));
+    sww_free(m);
+    m = sww_alloc();
+    assert_int_equal(sww_regime_load(m, "/nonexistent/regime.coeffs"), SWW_EIO);
+    assert_non_null(strstr(sww_errmsg(m), "/nonexistent/regime.coeffs: cannot open"));
+    sww_free(m);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(fixture_loads),
+        cmocka_unit_test(criterion_stick_bounce),
+        cmocka_unit_test(range_handling),
+        cmocka_unit_test(table_and_linear_from_code),
+        cmocka_unit_test(tangential_gate),
+        cmocka_unit_test(detach_physics),
+        cmocka_unit_test(shear_gate),
+        cmocka_unit_test(probability_hook_and_bad_impacts),
+        cmocka_unit_test(code_equals_file),
+        cmocka_unit_test(thread_safe),
+        cmocka_unit_test(loader_errors),
+    };
+    return cmocka_run_group_tests_name("wallmodel", tests, setup, teardown);
+}
