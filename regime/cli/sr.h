@@ -1,0 +1,59 @@
+/* sr.h - shared pieces of the snowregime command-line program. */
+#ifndef SR_H
+#define SR_H
+
+#include <stdio.h>
+
+#include "swr_collide.h"
+#include "swr_params.h"
+#include "swt_fit.h"
+#include "swt_io.h"
+#include "swt_map.h"
+#include "swt_vcrit.h"
+
+#define SR_EXIT_FAIL 1   /* computation or output failure */
+#define SR_EXIT_USAGE 2  /* bad option, setting or input */
+
+/* Command-line cursor: argv[i] is the word being looked at. */
+typedef struct {
+    int argc;
+    char **argv;
+    int i;
+    const char *cmd;     /* subcommand name, for messages */
+    char err[400];
+} sr_args;
+
+/* Settings common to every subcommand: --config FILE, --set key=value. */
+typedef struct {
+    const char *config;
+    const char *sets[256];
+    int nsets;
+    int threads;
+} sr_settings;
+
+/* 1 when argv[i] is option `name` ("--name VALUE" or "--name=VALUE"); *val gets
+ * the value (NULL and a message in a->err when it is missing). */
+int sr_opt(sr_args *a, const char *name, const char **val);
+/* 1 when argv[i] is the flag `name`. */
+int sr_flag(sr_args *a, const char *name);
+/* Handles --config/--set/--threads at argv[i]: 1 taken, 0 not, -1 error (a->err). */
+int sr_settings_opt(sr_args *a, sr_settings *s);
+/* defaults + config + sets + validate; -1 with message on error */
+int sr_settings_apply(const sr_settings *s, swr_params *p, char *err, size_t errlen);
+/* Usage error: prints "snowregime CMD: MSG" and returns SR_EXIT_USAGE. */
+int sr_usage_error(const char *cmd, const char *msg);
+int sr_fail(const char *cmd, const char *msg);
+/* Prints the help text of a subcommand (to stdout). */
+void sr_help(const char *cmd);
+
+/* Automatic normal-speed range of a map: [v_crit(dmax) / 1.5, 1.5 v_crit(dmin)]. */
+int sr_auto_vrange(const swr_model *m, swt_grid *g, int set_min, int set_max,
+                   const swt_vcrit_opts *o, char *err, size_t errlen);
+
+int sr_cmd_collide(int argc, char **argv);
+int sr_cmd_vcrit(int argc, char **argv);
+int sr_cmd_map(int argc, char **argv);
+int sr_cmd_sensitivity(int argc, char **argv);
+int sr_cmd_convergence(int argc, char **argv);
+
+#endif

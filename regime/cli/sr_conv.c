@@ -1,0 +1,176 @@
+/* sr_conv.c - snowregime convergence: error of v_crit against wall time per collision. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sr.h"
+
+int sr_cmd_convergence(int argc, char **argv)
+{
+    const char *cmd = "convergence";
+    sr_args a = { argc, argv, 1, cmd, "" };
+    sr_settings s = { 0 };
+    s.threads = 1;
+    double *d = NULL, *acc = NULL;
+    int nd = 0, nacc = 0, plot = 1, rc = 0;
+    double ref_factor = 8.0, tol = 1e-7, min_time = 0.02;
+    const char *out = NULL, *v;
+    for (; a.i < argc; a.i++) {
+        int r = sr_settings_opt(&a, &s);
+        if (r < 0) { rc = sr_usage_error(cmd, a.err); goto done; }
+        if (r > 0) continue;
+        if (sr_flag(&a, "--help") || sr_flag(&a, "-h")) { sr_help(cmd); goto done; }
+        if (sr_flag(&a, "--no-plot")) { plot = 0; continue; }
+        int bad = 0;
+        if (sr_opt(&a, "--out", &v)) { if (!v || !*v) { snprintf(a.err, sizeof a.err, "--out: missing folder name"); bad = 1; } else out = v; }
+        else if (sr_opt(&a, "--d", &v)) { free(d); d = NULL; bad = !v || swt_parse_list("--d", v, 1e-300, 1.0, &d, &nd, a.err, sizeof a.err); }
+        else if (sr_opt(&a, "--accuracy", &v)) { free(acc); acc = NULL; bad = !v || swt_parse_list("--accuracy", v, 1.0, 1e6, &acc, &nacc, a.err, sizeof a.err); }
+        else if (sr_opt(&a, "--ref-factor", &v)) bad = !v || swt_parse_double("--ref-factor", v, 2.0, 1e3, &ref_factor, a.err, sizeof a.err);
+        else if (sr_opt(&a, "--tol", &v)) bad = !v || swt_parse_double("--tol", v, 1e-12, 0.1, &tol, a.err, sizeof a.err);
+        else if (sr_opt(&a, "--min-time", &v)) bad = !v || swt_parse_double("--min-time", v, 0.0, 3600.0, &min_time, a.err, sizeof a.err);
+        else {
+            snprintf(a.err, sizeof a.err, "unknown option '%s' (see snowregime convergence --help)", argv[a.i]);
+            bad = 1;
+        }
+        if (bad) { rc = sr_usage_error(cmd, a.err); goto done; }
+    }
+    if (!out) { rc = sr_usage_error(cmd, "--out: missing (output folder)"); goto done; }
+    if (!d) {
+        static const double dd[] = { 10e-6, 30e-6, 100e-6 };
+        nd = 3;
+        d = malloc(sizeof dd);
+        if (d) memcpy(d, dd, sizeof dd);
+    }
+    if (!acc) {
+        static const double aa[] = { 8, 12, 16, 24, 32, 48, 64, 96, 128 };
+        nacc = 9;
+        acc = malloc(sizeof aa);
+        if (acc) memcpy(acc, aa, sizeof aa);
+    }
+    if (!d || !acc) { rc = sr_fail(cmd, "out of memory"); goto done; }
+
+    char err[400];
+    swr_params base;
+    if (sr_settings_apply(&s, &base, err, sizeof err) != 0) { rc = sr_usage_error(cmd, err); goto done; }
+    double amax = 0.0;
+    for (int k = 0; k < nacc; k++) amax = fmax(amax, acc[k]);
+    const int ncol = nacc + 1;   /* last: the reference */
+    swr_model **models = calloc((size_t)ncol, sizeof *models);
+    double *vc = calloc((size_t)nd * ncol, sizeof *vc), *us = calloc((size_t)nd * ncol, sizeof *us);
+    double *spc = calloc((size_t)nd * ncol, sizeof *spc), *dts = calloc((size_t)nd * ncol, sizeof *dts);
+    if (!models || !vc || !us || !spc || !dts) { rc = sr_fail(cmd, "out of memory"); goto freeall; }
+    for (int k = 0; k < ncol; k++) {
+        swr_params p = base;
+        char txt[64];
+        snprintf(txt, sizeof txt, "%.10g", k < nacc ? acc[k] : ref_factor * amax);
+        if (swr_params_set(&p, "accuracy", txt, err, sizeof err) != 0 ||
+            swr_params_validate(&p, err, sizeof err) != 0 ||
+            !(models[k] = swr_model_alloc(&p, err, sizeof err))) {
+            char e2[500];
+            snprintf(e2, sizeof e2, "%s%s", k == nacc ? "reference accuracy (--ref-factor x max): " : "--accuracy: ", err);
+            rc = sr_usage_error(cmd, e2);
+            goto freeall;
+        }
+    }
+    swt_vcrit_opts o;
+    swt_vcrit_opts_default(&o);
+    o.rtol = tol;
+    double t_all = swt_now();
+    for (int i = 0; i < nd && rc == 0; i++) {
+        for (int k = ncol - 1; k >= 0; k--) {
+            swt_vcrit_result r;
+            swt_vcrit(models[k], d[i], &o, &r);
+            if (r.status != SWT_VCRIT_FOUND) {
+                snprintf(err, sizeof err, "--d: '%g': no v_crit in [%g, %g] m/s at accuracy %s: %s", d[i],
+                         o.vmin, o.vmax, k < nacc ? "setting" : "reference",
+                         r.status == SWT_VCRIT_ERROR ? r.msg : r.status == SWT_VCRIT_NO_STICK ? "bounces everywhere" : "sticks everywhere");
+                rc = r.status == SWT_VCRIT_ERROR ? sr_usage_error(cmd, err) : sr_fail(cmd, err);
+                break;
+            }
+            size_t q = (size_t)i * ncol + k;
+            vc[q] = r.vcrit;
+            spc[q] = (double)r.steps / (double)r.collisions;
+            dts[q] = 0.5 * (r.dt_min + r.dt_max);
+            if (k == nacc) continue;   /* the reference is not timed */
+            long coll = 0;
+            int reps = 0;
+            double t0 = swt_now(), t1;
+            do {
+                swt_vcrit_result rr;
+                swt_vcrit(models[k], d[i], &o, &rr);
+                coll += rr.collisions;
+                reps++;
+                t1 = swt_now();
+            } while (t1 - t0 < min_time && reps < 100000);
+            us[q] = 1e6 * (t1 - t0) / (double)coll;
+        }
+    }
+    double sec = swt_now() - t_all;
+    swt_outset *os = NULL;
+    FILE *fc = NULL, *fm = NULL;
+    if (rc == 0 && !(os = swt_outset_alloc(out, err, sizeof err))) rc = sr_fail(cmd, err);
+    if (rc == 0 && (!(fc = swt_outset_open(os, "convergence.csv", err, sizeof err)) ||
+                    !(fm = swt_outset_open(os, "convergence.md", err, sizeof err))))
+        rc = sr_fail(cmd, err);
+    if (rc == 0) {
+        fprintf(fc, "# snowregime convergence: v_crit (bisection tol %g) against the reference accuracy %g\n",
+                tol, ref_factor * amax);
+        fprintf(fc, "# accuracy = steps per Hertz contact time; us_per_collision: mean over the searches\n");
+        fprintf(fc, "d_m,accuracy,vcrit_m_s,vcrit_ref_m_s,rel_error,us_per_collision,steps_per_collision,dt_s\n");
+        fprintf(fm, "Relative error of v_crit against a reference with accuracy %g (bisection tolerance %g),\n"
+                    "and the mean wall time per collision of the search (1 thread).\n\n", ref_factor * amax, tol);
+        fprintf(fm, "| d [m] | accuracy | v_crit [m/s] | rel. error | us / collision | steps / collision | dt [s] |\n");
+        fprintf(fm, "|---|---|---|---|---|---|---|\n");
+        printf("%-10s %9s %14s %11s %12s %10s %10s\n", "d_m", "accuracy", "vcrit_m_s", "rel_error",
+               "us/collision", "steps/coll", "dt_s");
+        for (int i = 0; i < nd; i++) {
+            double ref = vc[(size_t)i * ncol + nacc];
+            for (int k = 0; k < nacc; k++) {
+                size_t q = (size_t)i * ncol + k;
+                double e = fabs(vc[q] / ref - 1.0);
+                fprintf(fc, "%.6g,%g,%.10g,%.10g,%.4g,%.4g,%.1f,%.4g\n", d[i], acc[k], vc[q], ref, e,
+                        us[q], spc[q], dts[q]);
+                fprintf(fm, "| %.3g | %g | %.7g | %.2e | %.3g | %.0f | %.3g |\n", d[i], acc[k], vc[q], e,
+                        us[q], spc[q], dts[q]);
+                printf("%-10.4g %9g %14.8g %11.3e %12.3f %10.0f %10.3g\n", d[i], acc[k], vc[q], e, us[q],
+                       spc[q], dts[q]);
+            }
+            fprintf(fc, "\n\n");
+        }
+        fprintf(fm, "\nCommand: snowregime convergence --out %s (%.2f s)\n", out, sec);
+        printf("wall time %.2f s\n", sec);
+    }
+    if (rc == 0 && plot) {
+        fflush(NULL);
+        const char *png = swt_outset_add(os, "convergence.png", err, sizeof err);
+        const char *tc = swt_outset_add(os, "convergence.csv", err, sizeof err);
+        char gp[4200];
+        snprintf(gp, sizeof gp, "%s.gp", png);
+        FILE *f = fopen(gp, "w");
+        if (!f) rc = sr_fail(cmd, "cannot write the gnuplot script");
+        else {
+            swt_gnuplot_png_header(f, png, 850, 600);
+            fprintf(f, "set datafile separator ','\nset logscale xy\nset key top right\n");
+            fprintf(f, "set xlabel 'wall time per collision [us]'\nset ylabel 'relative error of v_{crit}'\n");
+            fprintf(f, "set title 'snowregime convergence: error against run time (labels: accuracy)'\n");
+            fprintf(f, "plot ");
+            for (int i = 0; i < nd; i++)
+                fprintf(f, "%s'%s' index %d using 6:($5 > 1e-9 ? $5 : 1e-9) with linespoints lw 2 pt 7 title 'd = %g um', "
+                           "'' index %d using 6:($5 > 1e-9 ? $5 : 1e-9):(sprintf('%%g', $2)) with labels offset 0.8,0.6 font ',7' notitle",
+                        i ? ", \\\n     " : "", tc, i, d[i] * 1e6, i);
+            fprintf(f, "\n");
+            fclose(f);
+            if (swt_run_gnuplot(gp, err, sizeof err) != 0) rc = sr_fail(cmd, err);
+            remove(gp);
+        }
+    }
+    if (rc == 0 && swt_outset_commit(os, err, sizeof err) != 0) rc = sr_fail(cmd, err);
+    if (rc == 0) printf("written to %s/\n", out);
+    swt_outset_free(os);
+freeall:
+    for (int k = 0; models && k < ncol; k++) swr_model_free(models[k]);
+    free(models); free(vc); free(us); free(spc); free(dts);
+done:
+    free(d); free(acc);
+    return rc;
+}

@@ -1,0 +1,412 @@
+/* sr_main.c - snowregime: stick/bounce regime maps of snow particles on a wall.
+ * Subcommand dispatch, shared option handling and the manual pages. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "sr.h"
+
+static const char *help_main =
+"NAME\n"
+"    snowregime - stick/bounce regime of dry-snow particles hitting a wall\n"
+"\n"
+"SYNOPSIS\n"
+"    snowregime COMMAND [OPTIONS]\n"
+"    snowregime COMMAND --help\n"
+"    snowregime --help | --version\n"
+"\n"
+"DESCRIPTION\n"
+"    Runs the SnowWall DEM collision kernel (one ice sphere hitting a flat wall,\n"
+"    JKR adhesion with hysteresis, Thornton plastic COR, friction and rolling\n"
+"    resistance) and turns many impacts into a regime map, its fitted interface\n"
+"    d_crit(v_n) and the regime.coeffs file the wall model reads.\n"
+"\n"
+"COMMANDS\n"
+"    collide       one impact: outcome, rebound COR, contact time, trajectory\n"
+"    vcrit         critical normal sticking velocity per diameter (bisection)\n"
+"    map           regime map over diameter x normal speed, fit, regime.coeffs, PNG\n"
+"    sensitivity   each material parameter at the ends of its range: map changes\n"
+"    convergence   error of v_crit against wall time per collision (accuracy knob)\n"
+"\n"
+"SETTINGS (every command)\n"
+"    --config FILE        read settings, one \"key value\" or \"key = value\" per line, # comments\n"
+"    --set KEY=VALUE      override one setting (repeatable; applied after --config)\n"
+"    Keys (SI units, defaults = dry snow (ice) on ABS):\n"
+"      rho 920  E 9.8e9  nu 0.31  sigma_y 1e6  E_wall 2e9  nu_wall 0.35  rho_wall 1100\n"
+"      gamma 0.2  adhesion jkr|none  z0 3e-10\n"
+"      cor elastic|<e in (0,1]>|thornton|thornton-asymptote (default thornton)\n"
+"      cor_pair wall|particle  mu 0.05  xi_crit 1e-9  accuracy 60 (steps per Hertz contact time)\n"
+"\n"
+"EXIT STATUS\n"
+"    0 success; 1 computation or output failure; 2 bad option, setting or input.\n"
+"    On any failure no output file is left behind.\n"
+"\n"
+"EXAMPLES\n"
+"    snowregime collide --d 50e-6 --vn 0.5\n"
+"    snowregime vcrit --d 10e-6,50e-6,100e-6\n"
+"    snowregime map --out results/map --set gamma=0.5\n";
+
+static const char *help_collide =
+"NAME\n"
+"    snowregime collide - simulate one impact of an ice sphere on the wall\n"
+"\n"
+"SYNOPSIS\n"
+"    snowregime collide --d D --vn V [--vt V] [--omega W] [--trace-csv FILE]\n"
+"                       [--trace-vtk FILE] [--stride N] [--config FILE] [--set KEY=VALUE]...\n"
+"\n"
+"DESCRIPTION\n"
+"    Integrates one impact from first contact until the outcome is decided and\n"
+"    prints it: bounce, stick (normal contact kept and sliding and rolling\n"
+"    arrested) or contact-kept-sliding (normal contact kept, still moving\n"
+"    tangentially), with the rebound CORs, the contact time, the largest\n"
+"    overlap, the time step, the number of steps and its bound, the energy\n"
+"    balance error of the integration and any warning (e.g. Tabor parameter\n"
+"    outside the JKR range).\n"
+"\n"
+"OPTIONS\n"
+"    --d D             particle diameter [m] (required, > 0)\n"
+"    --vn V            normal approach speed [m/s] (required, > 0)\n"
+"    --vt V            tangential speed [m/s] (default 0)\n"
+"    --omega W         initial spin [rad/s] (default 0)\n"
+"    --trace-csv FILE  trajectory as CSV: t, centre x and z, overlap, speeds, force, contact radius, spin\n"
+"    --trace-vtk FILE  trajectory as legacy VTK polydata (a polyline of the particle\n"
+"                      centre with the same quantities as point data), for ParaView\n"
+"    --stride N        trace every N-th step (default 1)\n"
+"    --config FILE, --set KEY=VALUE   settings (see snowregime --help)\n"
+"\n"
+"OUTPUT\n"
+"    \"key: value\" lines on stdout (SI units): outcome, contact_kept, stick, e_n, e_t,\n"
+"    t_contact, delta_max, e_target, dt, steps, max_steps, status, energy_err, tabor, warning.\n"
+"\n"
+"EXIT STATUS\n"
+"    0 success; 1 output failure; 2 bad option, setting or input.\n"
+"\n"
+"EXAMPLES\n"
+"    snowregime collide --d 20e-6 --vn 0.3\n"
+"    snowregime collide --d 50e-6 --vn 1 --vt 0.5 --trace-vtk impact.vtk --trace-csv impact.csv\n";
+
+static const char *help_vcrit =
+"NAME\n"
+"    snowregime vcrit - critical normal sticking velocity per diameter\n"
+"\n"
+"SYNOPSIS\n"
+"    snowregime vcrit --d D1,D2,... [--vt V | --angle DEG] [--omega W] [--full-stick]\n"
+"                     [--tol T] [--vmin V] [--vmax V] [--scan-ratio R] [--threads N]\n"
+"                     [--config FILE] [--set KEY=VALUE]...\n"
+"\n"
+"DESCRIPTION\n"
+"    For each diameter, scans the normal speed over [vmin, vmax] at log-spaced\n"
+"    points (ratio R) for the first stick -> bounce change, then bisects in\n"
+"    ln(v_n) until the bracket [v_lo, v_hi] has v_hi/v_lo <= 1 + T; v_crit is its\n"
+"    geometric mean (relative error <= T/2 on top of the kernel's accuracy).\n"
+"    The outcome is \"normal contact kept\" unless --full-stick. A non-monotone\n"
+"    outcome (sticks again above v_crit) is detected in the scan and reported.\n"
+"\n"
+"OPTIONS\n"
+"    --d LIST          diameters [m], comma separated (required)\n"
+"    --vt V            tangential speed of every impact [m/s] (default 0)\n"
+"    --angle DEG       instead: impact angle from the wall normal, vt = vn tan(DEG)\n"
+"    --omega W         initial spin [rad/s] (default 0)\n"
+"    --full-stick      outcome = contact kept AND sliding and rolling arrested\n"
+"    --tol T           relative bracket width (default 1e-3)\n"
+"    --vmin V, --vmax V  search range [m/s] (default 1e-3, 50)\n"
+"    --scan-ratio R    ratio of neighbouring scan speeds (default 2)\n"
+"    --threads N       threads over the diameters (default 2)\n"
+"    --config FILE, --set KEY=VALUE   settings (see snowregime --help)\n"
+"\n"
+"OUTPUT\n"
+"    Lines starting with # are comments (settings, per-diameter details:\n"
+"    bracket, collisions, steps, time step, non-monotone and range warnings).\n"
+"    Every other line is  <d in m><TAB><v_crit in m/s> , one per diameter, in\n"
+"    the order given. When no change is found in [vmin, vmax] the value is nan\n"
+"    and a comment says whether it bounces or sticks everywhere.\n"
+"\n"
+"EXIT STATUS\n"
+"    0 every v_crit found; 1 some diameter has no v_crit in the range;\n"
+"    2 bad option, setting or input.\n"
+"\n"
+"EXAMPLES\n"
+"    snowregime vcrit --d 10e-6,50e-6,100e-6\n"
+"    snowregime vcrit --d 30e-6 --set cor=elastic --tol 1e-5\n";
+
+static const char *help_map =
+"NAME\n"
+"    snowregime map - stick/bounce regime map, fitted interface, regime.coeffs\n"
+"\n"
+"SYNOPSIS\n"
+"    snowregime map --out DIR [--nd N] [--nv N] [--dmin D] [--dmax D] [--vmin V]\n"
+"                   [--vmax V] [--vlog 0|1] [--degree K] [--full-stick]\n"
+"                   [--vt LIST | --angle LIST] [--omega W] [--refine 0|1] [--tol T]\n"
+"                   [--threads N] [--no-plot] [--config FILE] [--set KEY=VALUE]...\n"
+"\n"
+"DESCRIPTION\n"
+"    Simulates every point of a diameter x normal-speed grid (rows split over\n"
+"    threads). Diameters are linearly spaced, speeds log-spaced (or linear with\n"
+"    --vlog 0). Without --vmin/--vmax the speed range is [v_crit(dmax)/1.5,\n"
+"    1.5 v_crit(dmin)], so the interface lies inside it. In each speed column the\n"
+"    first stick -> bounce change along d is refined by bisection in ln d to\n"
+"    relative width T (--refine 0: midpoint of the two grid cells). The points\n"
+"    are fitted by least squares (GSL) as ln d_crit = sum_i c_i (ln v_n)^i; when\n"
+"    the fit of degree K is not non-increasing over its span, lower degrees are\n"
+"    tried (reported).\n"
+"    With --vt LIST or --angle LIST (impact angle from the normal in degrees,\n"
+"    vt = vn tan(angle)) one map per value is made and the outcome is full stick.\n"
+"\n"
+"OPTIONS\n"
+"    --out DIR         output folder (created; required)\n"
+"    --nd N, --nv N    grid size (default 46 x 50)\n"
+"    --dmin, --dmax    diameter range [m] (default 10e-6, 100e-6)\n"
+"    --vmin, --vmax    normal speed range [m/s] (default automatic)\n"
+"    --vlog 0|1        log-spaced speeds (default 1)\n"
+"    --degree K        polynomial degree of the fit, 1..8 (default 3)\n"
+"    --full-stick      outcome = full stick (default: normal contact kept)\n"
+"    --vt LIST         tangential speeds [m/s]: one map each (full stick)\n"
+"    --angle LIST      impact angles from the normal [deg]: one map each (full stick)\n"
+"    --omega W         initial spin [rad/s] (default 0)\n"
+"    --refine 0|1      refine interface points by bisection (default 1)\n"
+"    --tol T           relative tolerance of the refinement (default 1e-3)\n"
+"    --threads N       threads (default 2)\n"
+"    --no-plot         do not run gnuplot (no PNG)\n"
+"    --config FILE, --set KEY=VALUE   settings (see snowregime --help)\n"
+"\n"
+"OUTPUT\n"
+"    In DIR (SUFFIX is empty, or -vt<V> / -angle<A> per third-axis value):\n"
+"    mapSUFFIX.csv         d_m,vn_m_s,stick,contact_kept,e_n,e_t,status per grid point\n"
+"    interfaceSUFFIX.csv   vn_m_s,dcrit_m,dfit_m,rel_residual per interface point\n"
+"    fitSUFFIX.txt         degree, coefficients, residuals, slopes, counts, timing\n"
+"    regimeSUFFIX.coeffs   the interface for the wall model (doc/regime-coeffs.md)\n"
+"    mapSUFFIX.png         the map with the interface points and the fit (gnuplot)\n"
+"    A summary is printed on stdout. All files appear together or not at all.\n"
+"\n"
+"EXIT STATUS\n"
+"    0 success; 1 computation failure (e.g. no interface inside the grid, gnuplot\n"
+"    failed); 2 bad option, setting or input.\n"
+"\n"
+"EXAMPLES\n"
+"    snowregime map --out results/map\n"
+"    snowregime map --out results/map-g05 --set gamma=0.5 --degree 4\n"
+"    snowregime map --out results/angles --angle 0,30,60 --nd 20 --nv 30\n";
+
+static const char *help_sensitivity =
+"NAME\n"
+"    snowregime sensitivity - regime map change with each material parameter\n"
+"\n"
+"SYNOPSIS\n"
+"    snowregime sensitivity --out DIR [--nd N] [--nv N] [--dmin D] [--dmax D]\n"
+"                   [--vmin V] [--vmax V] [--vlog 0|1] [--refine 0|1] [--tol T]\n"
+"                   [--threads N] [--no-plot] [--config FILE] [--set KEY=VALUE]...\n"
+"\n"
+"DESCRIPTION\n"
+"    Computes the baseline map (settings as given) and, on the same grid, a map\n"
+"    with each material parameter at each end of its range (snow-physics.md\n"
+"    section 2), the others at baseline: E 8.9e9 / 11.2e9 Pa, nu 0.29 / 0.36,\n"
+"    gamma 0.1 / 1.0 J/m2, sigma_y 0.5e6 / 1.5e6 Pa. Reports the number of\n"
+"    sticking grid points, its ratio to the baseline, and the shift of the\n"
+"    interface: the mean relative change of d_crit over the speed columns where\n"
+"    both maps have an interface point.\n"
+"\n"
+"OPTIONS\n"
+"    Grid options as for snowregime map (the automatic speed range comes from\n"
+"    the baseline); --threads N (default 2); --no-plot; settings.\n"
+"    --out DIR         output folder (created; required)\n"
+"\n"
+"OUTPUT\n"
+"    sensitivity.csv             param,value,n_stick,ratio,d_shift_rel,columns,n_interface\n"
+"    sensitivity.md              the same as a markdown table\n"
+"    sensitivity-interfaces.csv  param,value,vn_m_s,dcrit_m for every map\n"
+"    sensitivity.png             the interfaces overlaid\n"
+"\n"
+"EXIT STATUS\n"
+"    0 success; 1 computation or output failure; 2 bad option, setting or input.\n"
+"\n"
+"EXAMPLES\n"
+"    snowregime sensitivity --out results/sensitivity\n"
+"    snowregime sensitivity --out results/sens-small --nd 20 --nv 20\n";
+
+static const char *help_convergence =
+"NAME\n"
+"    snowregime convergence - error of v_crit against wall time per collision\n"
+"\n"
+"SYNOPSIS\n"
+"    snowregime convergence --out DIR [--d LIST] [--accuracy LIST] [--ref-factor F]\n"
+"                   [--tol T] [--min-time S] [--no-plot] [--config FILE] [--set KEY=VALUE]...\n"
+"\n"
+"DESCRIPTION\n"
+"    For each diameter, v_crit is computed at every accuracy setting (key\n"
+"    `accuracy`, steps per Hertz contact time) and at a reference accuracy F times\n"
+"    the largest setting, each with bisection tolerance T (well below the errors\n"
+"    measured). Reports the relative error of v_crit against the reference and\n"
+"    the mean wall time per collision of the search (repeated until at least S\n"
+"    seconds were timed), with the steps per collision and the time step.\n"
+"\n"
+"OPTIONS\n"
+"    --out DIR         output folder (created; required)\n"
+"    --d LIST          diameters [m] (default 10e-6,30e-6,100e-6)\n"
+"    --accuracy LIST   accuracy settings (default 8,12,16,24,32,48,64,96,128)\n"
+"    --ref-factor F    reference accuracy = F x the largest setting (default 8)\n"
+"    --tol T           bisection tolerance (default 1e-7)\n"
+"    --min-time S      minimum timed wall time per setting [s] (default 0.02)\n"
+"    --no-plot         do not run gnuplot\n"
+"\n"
+"OUTPUT\n"
+"    convergence.csv  d_m,accuracy,vcrit_m_s,vcrit_ref_m_s,rel_error,us_per_collision,\n"
+"                     steps_per_collision,dt_s\n"
+"    convergence.md   the same as a markdown table\n"
+"    convergence.png  relative error against time per collision, log-log\n"
+"\n"
+"EXIT STATUS\n"
+"    0 success; 1 computation or output failure; 2 bad option, setting or input.\n"
+"\n"
+"EXAMPLES\n"
+"    snowregime convergence --out results/convergence\n";
+
+void sr_help(const char *cmd)
+{
+    const char *t = help_main;
+    if (cmd && strcmp(cmd, "collide") == 0) t = help_collide;
+    else if (cmd && strcmp(cmd, "vcrit") == 0) t = help_vcrit;
+    else if (cmd && strcmp(cmd, "map") == 0) t = help_map;
+    else if (cmd && strcmp(cmd, "sensitivity") == 0) t = help_sensitivity;
+    else if (cmd && strcmp(cmd, "convergence") == 0) t = help_convergence;
+    fputs(t, stdout);
+}
+
+int sr_opt(sr_args *a, const char *name, const char **val)
+{
+    const char *w = a->argv[a->i];
+    size_t n = strlen(name);
+    if (strncmp(w, name, n) != 0) return 0;
+    if (w[n] == '=') { *val = w + n + 1; return 1; }
+    if (w[n] != '\0') return 0;
+    if (a->i + 1 >= a->argc) {
+        *val = NULL;
+        snprintf(a->err, sizeof a->err, "%s: missing value", name);
+        return 1;
+    }
+    *val = a->argv[++a->i];
+    return 1;
+}
+
+int sr_flag(sr_args *a, const char *name)
+{
+    return strcmp(a->argv[a->i], name) == 0;
+}
+
+int sr_settings_opt(sr_args *a, sr_settings *s)
+{
+    const char *v;
+    if (sr_opt(a, "--config", &v)) {
+        if (!v) return -1;
+        s->config = v;
+        return 1;
+    }
+    if (sr_opt(a, "--set", &v)) {
+        if (!v) return -1;
+        if (s->nsets == (int)(sizeof s->sets / sizeof s->sets[0])) {
+            snprintf(a->err, sizeof a->err, "--set: too many (max 256)");
+            return -1;
+        }
+        s->sets[s->nsets++] = v;
+        return 1;
+    }
+    if (sr_opt(a, "--threads", &v)) {
+        long n;
+        if (!v || swt_parse_int("--threads", v, 1, 64, &n, a->err, sizeof a->err) != 0) return -1;
+        s->threads = (int)n;
+        return 1;
+    }
+    return 0;
+}
+
+int sr_settings_apply(const sr_settings *s, swr_params *p, char *err, size_t errlen)
+{
+    char e[300];
+    swr_params_default(p);
+    if (s->config && swr_params_load(p, s->config, e, sizeof e) != 0) {
+        snprintf(err, errlen, "--config: %s", e);
+        return -1;
+    }
+    for (int k = 0; k < s->nsets; k++)
+        if (swr_params_set_kv(p, s->sets[k], e, sizeof e) != 0) {
+            snprintf(err, errlen, "--set: %s", e);
+            return -1;
+        }
+    if (swr_params_validate(p, e, sizeof e) != 0) {
+        snprintf(err, errlen, "settings: %s", e);
+        return -1;
+    }
+    return 0;
+}
+
+int sr_usage_error(const char *cmd, const char *msg)
+{
+    fprintf(stderr, "snowregime%s%s: %s\n", cmd ? " " : "", cmd ? cmd : "", msg);
+    return SR_EXIT_USAGE;
+}
+
+int sr_fail(const char *cmd, const char *msg)
+{
+    fprintf(stderr, "snowregime%s%s: %s\n", cmd ? " " : "", cmd ? cmd : "", msg);
+    return SR_EXIT_FAIL;
+}
+
+int sr_auto_vrange(const swr_model *m, swt_grid *g, int set_min, int set_max,
+                   const swt_vcrit_opts *o, char *err, size_t errlen)
+{
+    swt_vcrit_opts vo = *o;
+    vo.vmin = 1e-4;
+    vo.vmax = 100.0;
+    vo.rtol = 1e-2;
+    swt_vcrit_result rlo, rhi;
+    if (!set_min) {
+        swt_vcrit(m, g->dmax, &vo, &rhi);
+        if (rhi.status != SWT_VCRIT_FOUND) {
+            snprintf(err, errlen, "automatic speed range: no v_crit for d = %g m in [%g, %g] m/s "
+                     "(%s); give --vmin and --vmax", g->dmax, vo.vmin, vo.vmax,
+                     rhi.status == SWT_VCRIT_ALL_STICK ? "sticks everywhere" :
+                     rhi.status == SWT_VCRIT_NO_STICK ? "bounces everywhere" : rhi.msg);
+            return -1;
+        }
+        g->vmin = rhi.vcrit / 1.5;
+    }
+    if (!set_max) {
+        swt_vcrit(m, g->dmin, &vo, &rlo);
+        if (rlo.status != SWT_VCRIT_FOUND) {
+            snprintf(err, errlen, "automatic speed range: no v_crit for d = %g m in [%g, %g] m/s "
+                     "(%s); give --vmin and --vmax", g->dmin, vo.vmin, vo.vmax,
+                     rlo.status == SWT_VCRIT_ALL_STICK ? "sticks everywhere" :
+                     rlo.status == SWT_VCRIT_NO_STICK ? "bounces everywhere" : rlo.msg);
+            return -1;
+        }
+        g->vmax = 1.5 * rlo.vcrit;
+    }
+    if (!(g->vmax > g->vmin)) {
+        snprintf(err, errlen, "speed range [%g, %g] m/s is empty: give --vmin and --vmax",
+                 g->vmin, g->vmax);
+        return -1;
+    }
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        fputs("usage: snowregime COMMAND [OPTIONS]   (snowregime --help for the manual)\n", stderr);
+        return SR_EXIT_USAGE;
+    }
+    const char *c = argv[1];
+    if (strcmp(c, "--help") == 0 || strcmp(c, "-h") == 0 || strcmp(c, "help") == 0) {
+        sr_help(argc > 2 ? argv[2] : NULL);
+        return 0;
+    }
+    if (strcmp(c, "--version") == 0) {
+        puts("snowregime (SnowWall) 0.1");
+        return 0;
+    }
+    if (strcmp(c, "collide") == 0) return sr_cmd_collide(argc - 1, argv + 1);
+    if (strcmp(c, "vcrit") == 0) return sr_cmd_vcrit(argc - 1, argv + 1);
+    if (strcmp(c, "map") == 0) return sr_cmd_map(argc - 1, argv + 1);
+    if (strcmp(c, "sensitivity") == 0) return sr_cmd_sensitivity(argc - 1, argv + 1);
+    if (strcmp(c, "convergence") == 0) return sr_cmd_convergence(argc - 1, argv + 1);
+    fprintf(stderr, "snowregime: unknown command '%s' (snowregime --help lists them)\n", c);
+    return SR_EXIT_USAGE;
+}

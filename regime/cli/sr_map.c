@@ -1,0 +1,512 @@
+/* sr_map.c - snowregime map and snowregime sensitivity. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sr.h"
+
+/* Grid and map options shared by map and sensitivity. */
+typedef struct {
+    swt_grid g;
+    int set_vmin, set_vmax;
+    int degree, refine, plot;
+    swt_vcrit_opts o;       /* outcome, tangential motion, tolerance */
+    const char *out;
+} sr_mapopt;
+
+static void mapopt_default(sr_mapopt *m)
+{
+    memset(m, 0, sizeof *m);
+    m->g = (swt_grid){ 46, 50, 10e-6, 100e-6, 0.0, 0.0, 1 };
+    m->degree = 3;
+    m->refine = 1;
+    m->plot = 1;
+    swt_vcrit_opts_default(&m->o);
+}
+
+/* 1 taken, 0 not mine, -1 error */
+static int mapopt_parse(sr_args *a, sr_mapopt *m)
+{
+    const char *v;
+    long n;
+    if (sr_flag(a, "--no-plot")) { m->plot = 0; return 1; }
+    if (sr_opt(a, "--out", &v)) {
+        if (!v || !*v) { snprintf(a->err, sizeof a->err, "--out: missing folder name"); return -1; }
+        m->out = v;
+        return 1;
+    }
+#define INT_OPT(NAME, LO, HI, DST) \
+    if (sr_opt(a, NAME, &v)) { \
+        if (!v || swt_parse_int(NAME, v, LO, HI, &n, a->err, sizeof a->err)) return -1; \
+        DST = (int)n; return 1; }
+#define DBL_OPT(NAME, LO, HI, DST, EXTRA) \
+    if (sr_opt(a, NAME, &v)) { \
+        if (!v || swt_parse_double(NAME, v, LO, HI, &DST, a->err, sizeof a->err)) return -1; \
+        EXTRA; return 1; }
+    INT_OPT("--nd", 2, 10000, m->g.nd)
+    INT_OPT("--nv", 2, 10000, m->g.nv)
+    INT_OPT("--vlog", 0, 1, m->g.vlog)
+    INT_OPT("--degree", 1, SWT_FIT_MAXDEG, m->degree)
+    INT_OPT("--refine", 0, 1, m->refine)
+    DBL_OPT("--dmin", 1e-300, 1.0, m->g.dmin, (void)0)
+    DBL_OPT("--dmax", 1e-300, 1.0, m->g.dmax, (void)0)
+    DBL_OPT("--vmin", 1e-300, 1e4, m->g.vmin, m->set_vmin = 1)
+    DBL_OPT("--vmax", 1e-300, 1e4, m->g.vmax, m->set_vmax = 1)
+    DBL_OPT("--tol", 1e-12, 0.5, m->o.rtol, (void)0)
+#undef INT_OPT
+#undef DBL_OPT
+    return 0;
+}
+
+static int mapopt_check(sr_mapopt *m, char *err, size_t errlen)
+{
+    if (!m->out) { snprintf(err, errlen, "--out: missing (output folder)"); return -1; }
+    if (!(m->g.dmax > m->g.dmin)) {
+        snprintf(err, errlen, "--dmax: '%g' must be > --dmin (%g)", m->g.dmax, m->g.dmin);
+        return -1;
+    }
+    if (m->set_vmin && m->set_vmax && !(m->g.vmax > m->g.vmin)) {
+        snprintf(err, errlen, "--vmax: '%g' must be > --vmin (%g)", m->g.vmax, m->g.vmin);
+        return -1;
+    }
+    return 0;
+}
+
+/* One computed map with its interface and fit. */
+typedef struct {
+    swt_map *mp;
+    swt_interface it;
+    swt_fit fit;
+    int fit_ok;
+    char fit_err[300];
+    double seconds_total;
+} sr_mapres;
+
+static void mapres_free(sr_mapres *r)
+{
+    swt_map_free(r->mp);
+    swt_interface_free(&r->it);
+    memset(r, 0, sizeof *r);
+}
+
+static int compute_map(const swr_model *m, const sr_mapopt *mo, const swt_vcrit_opts *o,
+                       int threads, sr_mapres *r, char *err, size_t errlen)
+{
+    memset(r, 0, sizeof *r);
+    double t0 = swt_now();
+    r->mp = swt_map_alloc(&mo->g, err, errlen);
+    if (!r->mp) return -1;
+    if (swt_map_run(r->mp, m, o, threads, err, errlen) != 0) return -1;
+    if (swt_interface_extract(r->mp, m, o, mo->refine, threads, &r->it, err, errlen) != 0) return -1;
+    r->fit_ok = swt_fit_interface(&r->it, mo->degree, &r->fit, r->fit_err, sizeof r->fit_err) == 0;
+    r->seconds_total = swt_now() - t0;
+    return 0;
+}
+
+static void write_map_csv(FILE *f, const sr_mapres *r, const swr_params *p, const char *what)
+{
+    const swt_map *mp = r->mp;
+    fprintf(f, "# snowregime map: %s; %d x %d grid, d %g..%g m (linear), vn %g..%g m/s (%s)\n",
+            what, mp->g.nd, mp->g.nv, mp->g.dmin, mp->g.dmax, mp->g.vmin, mp->g.vmax,
+            mp->g.vlog ? "log" : "linear");
+    fprintf(f, "# stick: 1 sticks (outcome of the map), contact_kept: normal contact kept, "
+               "status: 0 ok, 1 step bound\n");
+    swr_params_print(p, "# setting ", f);
+    fprintf(f, "d_m,vn_m_s,stick,contact_kept,e_n,e_t,status\n");
+    for (int i = 0; i < mp->g.nd; i++)
+        for (int j = 0; j < mp->g.nv; j++) {
+            size_t k = (size_t)i * mp->g.nv + j;
+            fprintf(f, "%.9g,%.9g,%d,%d,%.6g,%.6g,%d\n", mp->d[i], mp->v[j], mp->stick[k],
+                    mp->kept[k], mp->e_n[k], mp->e_t[k], mp->status[k]);
+        }
+}
+
+static void write_interface_csv(FILE *f, const sr_mapres *r)
+{
+    fprintf(f, "# interface points: first stick -> bounce change along d in each speed column\n");
+    fprintf(f, "# dfit: the fitted polynomial (ln basis), rel_residual = dfit/dcrit - 1\n");
+    fprintf(f, "vn_m_s,dcrit_m,dfit_m,rel_residual\n");
+    for (int k = 0; k < r->it.n; k++) {
+        double df = r->fit_ok ? exp(swt_fit_eval(&r->fit, r->it.vn[k])) : 0.0;
+        fprintf(f, "%.9g,%.9g,%.9g,%.6g\n", r->it.vn[k], r->it.dcrit[k], df,
+                r->fit_ok ? df / r->it.dcrit[k] - 1.0 : 0.0);
+    }
+}
+
+static void write_fit_txt(FILE *f, const sr_mapres *r, int threads)
+{
+    const swt_fit *F = &r->fit;
+    fprintf(f, "fit of the interface: ln(d_crit / 1 m) = sum_i c_i (ln(v_n / 1 m/s))^i\n");
+    fprintf(f, "degree: %d (asked %d)\n", F->degree, F->degree_asked);
+    if (F->note[0]) fprintf(f, "note: %s\n", F->note);
+    fprintf(f, "coeffs:");
+    for (int i = 0; i <= F->degree; i++) fprintf(f, " %.10g", F->c[i]);
+    fprintf(f, "\npoints: %d\nvn_range: %.6g %.6g m/s\n", F->npts, F->vnmin, F->vnmax);
+    fprintf(f, "rms_rel_residual: %.4g\nmax_rel_residual: %.4g\n", F->rms, F->maxres);
+    fprintf(f, "slope_low: %.5g\nslope_high: %.5g\n", F->slope_lo, F->slope_hi);
+    fprintf(f, "columns_all_stick: %d\ncolumns_all_bounce: %d\ncolumns_nonmonotone: %d\n",
+            r->it.cols_all_stick, r->it.cols_all_bounce, r->it.cols_nonmono);
+    fprintf(f, "grid_points: %ld\nsticking_points: %ld\nstep_bound_points: %ld\n",
+            r->mp->collisions, r->mp->nstick, r->mp->step_bound);
+    fprintf(f, "grid_seconds: %.6f\nrefine_collisions: %ld\ntotal_seconds: %.6f\nthreads: %d\n",
+            r->mp->seconds, r->it.collisions, r->seconds_total, threads);
+}
+
+static void gp_fit_function(FILE *gp, const char *name, const swt_fit *F)
+{
+    fprintf(gp, "%s(x) = (x < %.10g || x > %.10g) ? 1/0 : 1e6*exp(", name, F->vnmin, F->vnmax);
+    for (int i = 0; i <= F->degree; i++) fprintf(gp, "%s(%.17g)*log(x)**%d", i ? " + " : "", F->c[i], i);
+    fprintf(gp, ")\n");
+}
+
+static int write_map_plot(swt_outset *os, const char *sfx, const sr_mapres *r, const char *title,
+                          char *err, size_t errlen)
+{
+    char name[128], gpname[128], csv[128], itf[128];
+    snprintf(name, sizeof name, "map%s.png", sfx);
+    snprintf(gpname, sizeof gpname, "map%s.gp", sfx);
+    snprintf(csv, sizeof csv, "map%s.csv", sfx);
+    snprintf(itf, sizeof itf, "interface%s.csv", sfx);
+    const char *png = swt_outset_add(os, name, err, errlen);
+    const char *tcsv = swt_outset_add(os, csv, err, errlen);
+    const char *titf = swt_outset_add(os, itf, err, errlen);
+    if (!png || !tcsv || !titf) return -1;
+    /* the script is a temporary of its own, never renamed */
+    char gp[4200];
+    snprintf(gp, sizeof gp, "%s.gp", png);
+    FILE *f = fopen(gp, "w");
+    if (!f) { snprintf(err, errlen, "cannot write '%s'", gp); return -1; }
+    swt_gnuplot_png_header(f, png, 800, 700);
+    fprintf(f, "set datafile separator ','\nset key outside below horizontal\nset format x '%%g'\nset mxtics 10\n");
+    if (r->mp->g.vlog) fprintf(f, "set logscale x\n");
+    fprintf(f, "set xrange [%.10g:%.10g]\nset yrange [%.10g:%.10g]\n",
+            r->mp->g.vmin / (r->mp->g.vlog ? 1.05 : 1.0), r->mp->g.vmax * 1.05,
+            r->mp->g.dmin * 1e6 - 2, r->mp->g.dmax * 1e6 + 2);
+    fprintf(f, "set xlabel 'normal impact speed v_n [m/s]'\nset ylabel 'particle diameter d [um]'\n");
+    fprintf(f, "set title \"%s\" noenhanced\nset samples 400\n", title);
+    if (r->fit_ok) gp_fit_function(f, "dfit", &r->fit);
+    fprintf(f, "plot '%s' skip 1 using 2:($3==1 ? $1*1e6 : 1/0) with points pt 5 ps 0.55 lc rgb '#3070d0' title 'stick', \\\n"
+               "     '%s' skip 1 using 2:($3==0 ? $1*1e6 : 1/0) with points pt 5 ps 0.55 lc rgb '#e08070' title 'bounce', \\\n"
+               "     '%s' skip 1 using 1:($2*1e6) with points pt 7 ps 0.8 lc rgb 'black' title 'interface points'",
+            tcsv, tcsv, titf);
+    if (r->fit_ok) fprintf(f, ", \\\n     dfit(x) with lines lw 2 lc rgb '#000000' title 'fit d_{crit}(v_n), degree %d'", r->fit.degree);
+    fprintf(f, "\n");
+    fclose(f);
+    (void)gpname;
+    int rc = swt_run_gnuplot(gp, err, errlen);
+    remove(gp);
+    return rc;
+}
+
+/* Writes one map's files into the set. */
+static int write_map_files(swt_outset *os, const char *sfx, const sr_mapres *r, const swr_params *p,
+                           const char *what, int plot, int threads, char *err, size_t errlen)
+{
+    char name[128];
+    FILE *f;
+    snprintf(name, sizeof name, "map%s.csv", sfx);
+    if (!(f = swt_outset_open(os, name, err, errlen))) return -1;
+    write_map_csv(f, r, p, what);
+    snprintf(name, sizeof name, "interface%s.csv", sfx);
+    if (!(f = swt_outset_open(os, name, err, errlen))) return -1;
+    write_interface_csv(f, r);
+    snprintf(name, sizeof name, "fit%s.txt", sfx);
+    if (!(f = swt_outset_open(os, name, err, errlen))) return -1;
+    write_fit_txt(f, r, threads);
+    char label[200];
+    snprintf(label, sizeof label, "%s, gamma %g", what, p->gamma);
+    snprintf(name, sizeof name, "regime%s.coeffs", sfx);
+    if (!(f = swt_outset_open(os, name, err, errlen))) return -1;
+    swt_coeffs_write(f, &r->fit, p, r->mp->g.dmin, r->mp->g.dmax, label);
+    if (plot) {
+        /* data must be on disk before gnuplot reads the temporaries */
+        fflush(NULL);
+        char title[300];
+        snprintf(title, sizeof title, "snowregime map: %s, gamma %g J/m2, sigma_y %g Pa", what,
+                 p->gamma, p->sigma_y);
+        if (write_map_plot(os, sfx, r, title, err, errlen) != 0) return -1;
+    }
+    return 0;
+}
+
+int sr_cmd_map(int argc, char **argv)
+{
+    const char *cmd = "map";
+    sr_args a = { argc, argv, 1, cmd, "" };
+    sr_settings s = { 0 };
+    s.threads = 2;
+    sr_mapopt mo;
+    mapopt_default(&mo);
+    double *axis = NULL, omega = 0.0;
+    int naxis = 0, axis_angle = 0, rc = 0;
+    const char *v;
+    for (; a.i < argc; a.i++) {
+        int r = sr_settings_opt(&a, &s);
+        if (r == 0) r = mapopt_parse(&a, &mo);
+        if (r < 0) { rc = sr_usage_error(cmd, a.err); goto out; }
+        if (r > 0) continue;
+        if (sr_flag(&a, "--help") || sr_flag(&a, "-h")) { sr_help(cmd); goto out; }
+        if (sr_flag(&a, "--full-stick")) { mo.o.full_stick = 1; continue; }
+        int ang = 0, hit = sr_opt(&a, "--vt", &v);
+        if (!hit) hit = ang = sr_opt(&a, "--angle", &v);
+        if (hit) {
+            if (axis) { rc = sr_usage_error(cmd, "--vt and --angle: give one of them, once"); goto out; }
+            if (!v || swt_parse_list(ang ? "--angle" : "--vt", v, 0.0, ang ? 89.9 : 1e4, &axis,
+                                     &naxis, a.err, sizeof a.err)) {
+                rc = sr_usage_error(cmd, a.err); goto out;
+            }
+            axis_angle = ang;
+            continue;
+        }
+        if (sr_opt(&a, "--omega", &v)) {
+            if (!v || swt_parse_double("--omega", v, -1e12, 1e12, &omega, a.err, sizeof a.err)) {
+                rc = sr_usage_error(cmd, a.err); goto out;
+            }
+            continue;
+        }
+        snprintf(a.err, sizeof a.err, "unknown option '%s' (see snowregime map --help)", argv[a.i]);
+        rc = sr_usage_error(cmd, a.err);
+        goto out;
+    }
+    char err[400];
+    if (mapopt_check(&mo, err, sizeof err) != 0) { rc = sr_usage_error(cmd, err); goto out; }
+    mo.o.omega = omega;
+    swr_params p;
+    if (sr_settings_apply(&s, &p, err, sizeof err) != 0) { rc = sr_usage_error(cmd, err); goto out; }
+    swr_model *m = swr_model_alloc(&p, err, sizeof err);
+    if (!m) { rc = sr_usage_error(cmd, err); goto out; }
+
+    if (axis) mo.o.full_stick = 1;
+    int nmaps = axis ? naxis : 1;
+    /* the speed range (automatic: from the first map's settings) is common to all maps */
+    swt_vcrit_opts o0 = mo.o;
+    if (axis) {
+        if (axis_angle) o0.tan_angle = tan(axis[0] * M_PI / 180.0);
+        else o0.vt = axis[0];
+    }
+    if ((!mo.set_vmin || !mo.set_vmax) &&
+        sr_auto_vrange(m, &mo.g, mo.set_vmin, mo.set_vmax, &o0, err, sizeof err) != 0) {
+        swr_model_free(m);
+        rc = sr_fail(cmd, err);
+        goto out;
+    }
+    if (swt_grid_check(&mo.g, err, sizeof err) != 0) {
+        swr_model_free(m);
+        rc = sr_usage_error(cmd, err);
+        goto out;
+    }
+    swt_outset *os = swt_outset_alloc(mo.out, err, sizeof err);
+    if (!os) { swr_model_free(m); rc = sr_fail(cmd, err); goto out; }
+    for (int k = 0; k < nmaps && rc == 0; k++) {
+        swt_vcrit_opts o = mo.o;
+        char sfx[64] = "", what[160];
+        const char *outc = o.full_stick ? "full stick" : "normal contact kept";
+        if (axis && axis_angle) {
+            o.tan_angle = tan(axis[k] * M_PI / 180.0);
+            snprintf(sfx, sizeof sfx, "-angle%g", axis[k]);
+            snprintf(what, sizeof what, "%s, impact angle %g deg", outc, axis[k]);
+        } else if (axis) {
+            o.vt = axis[k];
+            snprintf(sfx, sizeof sfx, "-vt%g", axis[k]);
+            snprintf(what, sizeof what, "%s, vt %g m/s", outc, axis[k]);
+        } else {
+            snprintf(what, sizeof what, "%s", outc);
+        }
+        sr_mapres r;
+        if (compute_map(m, &mo, &o, s.threads, &r, err, sizeof err) != 0) {
+            rc = sr_usage_error(cmd, err);
+        } else if (!r.fit_ok) {
+            snprintf(err, sizeof err, "%s%s%s", r.fit_err, *sfx ? " for map" : "", sfx);
+            rc = sr_fail(cmd, err);
+        } else if (write_map_files(os, sfx, &r, &p, what, mo.plot, s.threads, err, sizeof err) != 0) {
+            rc = sr_fail(cmd, err);
+        } else {
+            const swt_fit *F = &r.fit;
+            printf("map%s: %s\n", sfx, what);
+            printf("  grid %d x %d: d %.4g..%.4g m, vn %.4g..%.4g m/s (%s)\n", r.mp->g.nd, r.mp->g.nv,
+                   r.mp->g.dmin, r.mp->g.dmax, r.mp->g.vmin, r.mp->g.vmax, r.mp->g.vlog ? "log" : "linear");
+            printf("  sticking points %ld of %ld, step-bound points %ld\n", r.mp->nstick,
+                   r.mp->collisions, r.mp->step_bound);
+            printf("  interface points %d (columns all stick %d, all bounce %d, non-monotone %d)\n",
+                   r.it.n, r.it.cols_all_stick, r.it.cols_all_bounce, r.it.cols_nonmono);
+            printf("  fit degree %d%s%s: coeffs", F->degree, F->note[0] ? " - " : "", F->note);
+            for (int i = 0; i <= F->degree; i++) printf(" %.6g", F->c[i]);
+            printf("\n  residuals (relative, d_crit): rms %.3g, max %.3g; slopes %.3f (low), %.3f (high)\n",
+                   F->rms, F->maxres, F->slope_lo, F->slope_hi);
+            printf("  wall time: grid %.4f s (%ld collisions, %d threads), total %.4f s\n",
+                   r.mp->seconds, r.mp->collisions, s.threads, r.seconds_total);
+            if (r.mp->msg[0]) printf("  kernel warning: %s\n", r.mp->msg);
+        }
+        mapres_free(&r);
+    }
+    if (rc == 0 && swt_outset_commit(os, err, sizeof err) != 0) rc = sr_fail(cmd, err);
+    if (rc == 0) printf("written to %s/\n", mo.out);
+    swt_outset_free(os);
+    swr_model_free(m);
+out:
+    free(axis);
+    return rc;
+}
+
+/* ---- sensitivity ---- */
+
+typedef struct {
+    const char *key;
+    double lo, hi;
+} sr_range;
+
+static const sr_range sens_ranges[] = {
+    { "E", 8.9e9, 11.2e9 },
+    { "nu", 0.29, 0.36 },
+    { "gamma", 0.1, 1.0 },
+    { "sigma_y", 0.5e6, 1.5e6 },
+};
+
+int sr_cmd_sensitivity(int argc, char **argv)
+{
+    const char *cmd = "sensitivity";
+    sr_args a = { argc, argv, 1, cmd, "" };
+    sr_settings s = { 0 };
+    s.threads = 2;
+    sr_mapopt mo;
+    mapopt_default(&mo);
+    for (; a.i < argc; a.i++) {
+        int r = sr_settings_opt(&a, &s);
+        if (r == 0) r = mapopt_parse(&a, &mo);
+        if (r < 0) return sr_usage_error(cmd, a.err);
+        if (r > 0) continue;
+        if (sr_flag(&a, "--help") || sr_flag(&a, "-h")) { sr_help(cmd); return 0; }
+        snprintf(a.err, sizeof a.err, "unknown option '%s' (see snowregime sensitivity --help)", argv[a.i]);
+        return sr_usage_error(cmd, a.err);
+    }
+    char err[400];
+    if (mapopt_check(&mo, err, sizeof err) != 0) return sr_usage_error(cmd, err);
+    swr_params base;
+    if (sr_settings_apply(&s, &base, err, sizeof err) != 0) return sr_usage_error(cmd, err);
+    swr_model *m0 = swr_model_alloc(&base, err, sizeof err);
+    if (!m0) return sr_usage_error(cmd, err);
+    if ((!mo.set_vmin || !mo.set_vmax) &&
+        sr_auto_vrange(m0, &mo.g, mo.set_vmin, mo.set_vmax, &mo.o, err, sizeof err) != 0) {
+        swr_model_free(m0);
+        return sr_fail(cmd, err);
+    }
+    if (swt_grid_check(&mo.g, err, sizeof err) != 0) { swr_model_free(m0); return sr_usage_error(cmd, err); }
+
+    const int nvar = 1 + 2 * (int)(sizeof sens_ranges / sizeof sens_ranges[0]);
+    sr_mapres res[9];
+    char keys[9][16];
+    double vals[9];
+    memset(res, 0, sizeof res);
+    int rc = 0;
+    double t0 = swt_now();
+    for (int k = 0; k < nvar && rc == 0; k++) {
+        swr_params p = base;
+        swr_model *m = m0;
+        if (k == 0) {
+            snprintf(keys[k], sizeof keys[k], "baseline");
+            vals[k] = 0.0;
+        } else {
+            const sr_range *rg = &sens_ranges[(k - 1) / 2];
+            double val = (k - 1) % 2 ? rg->hi : rg->lo;
+            char txt[64];
+            snprintf(txt, sizeof txt, "%.10g", val);
+            snprintf(keys[k], sizeof keys[k], "%s", rg->key);
+            vals[k] = val;
+            if (swr_params_set(&p, rg->key, txt, err, sizeof err) != 0 ||
+                swr_params_validate(&p, err, sizeof err) != 0 ||
+                !(m = swr_model_alloc(&p, err, sizeof err))) {
+                rc = sr_usage_error(cmd, err);
+                break;
+            }
+        }
+        if (compute_map(m, &mo, &mo.o, s.threads, &res[k], err, sizeof err) != 0) rc = sr_usage_error(cmd, err);
+        if (m != m0) swr_model_free(m);
+    }
+    double sec = swt_now() - t0;
+    swt_outset *os = NULL;
+    if (rc == 0 && !(os = swt_outset_alloc(mo.out, err, sizeof err))) rc = sr_fail(cmd, err);
+    FILE *fc = NULL, *fm = NULL, *fi = NULL;
+    if (rc == 0 && (!(fc = swt_outset_open(os, "sensitivity.csv", err, sizeof err)) ||
+                    !(fm = swt_outset_open(os, "sensitivity.md", err, sizeof err)) ||
+                    !(fi = swt_outset_open(os, "sensitivity-interfaces.csv", err, sizeof err))))
+        rc = sr_fail(cmd, err);
+    if (rc == 0) {
+        const sr_mapres *b = &res[0];
+        fprintf(fc, "# snowregime sensitivity: %d x %d grid, d %g..%g m, vn %g..%g m/s (%s)\n",
+                mo.g.nd, mo.g.nv, mo.g.dmin, mo.g.dmax, mo.g.vmin, mo.g.vmax, mo.g.vlog ? "log" : "linear");
+        fprintf(fc, "# d_shift_rel: mean of d_crit/d_crit,baseline - 1 over the common speed columns\n");
+        fprintf(fc, "param,value,n_stick,ratio,d_shift_rel,columns,n_interface\n");
+        fprintf(fm, "Grid %d x %d: d %g..%g m, v_n %.4g..%.4g m/s (%s); outcome: %s.\n\n",
+                mo.g.nd, mo.g.nv, mo.g.dmin, mo.g.dmax, mo.g.vmin, mo.g.vmax, mo.g.vlog ? "log" : "linear",
+                mo.o.full_stick ? "full stick" : "normal contact kept");
+        fprintf(fm, "| parameter | value | sticking points | ratio to baseline | interface shift (mean d_crit change) | common columns |\n");
+        fprintf(fm, "|---|---|---|---|---|---|\n");
+        fprintf(fi, "param,value,vn_m_s,dcrit_m\n");
+        printf("%-10s %-10s %8s %7s %10s %7s\n", "param", "value", "n_stick", "ratio", "d_shift", "cols");
+        for (int k = 0; k < nvar; k++) {
+            const sr_mapres *r = &res[k];
+            double sum = 0.0;
+            int ncol = 0;
+            for (int q = 0; q < r->it.n; q++)
+                for (int u = 0; u < b->it.n; u++)
+                    if (b->it.vn[u] == r->it.vn[q]) {
+                        sum += r->it.dcrit[q] / b->it.dcrit[u] - 1.0;
+                        ncol++;
+                    }
+            double shift = ncol ? sum / ncol : 0.0;
+            double ratio = b->mp->nstick ? (double)r->mp->nstick / (double)b->mp->nstick : 0.0;
+            char vtxt[32];
+            if (k == 0) snprintf(vtxt, sizeof vtxt, "-");
+            else snprintf(vtxt, sizeof vtxt, "%g", vals[k]);
+            fprintf(fc, "%s,%s,%ld,%.6g,%.6g,%d,%d\n", keys[k], k ? vtxt : "", r->mp->nstick, ratio,
+                    shift, ncol, r->it.n);
+            if (ncol) fprintf(fm, "| %s | %s | %ld | %.3f | %+.2f %% | %d |\n", keys[k], vtxt, r->mp->nstick,
+                              ratio, 100.0 * shift, ncol);
+            else fprintf(fm, "| %s | %s | %ld | %.3f | n/a (no common interface column) | 0 |\n", keys[k],
+                         vtxt, r->mp->nstick, ratio);
+            printf("%-10s %-10s %8ld %7.3f %+9.2f%% %7d\n", keys[k], vtxt, r->mp->nstick, ratio,
+                   100.0 * shift, ncol);
+            for (int q = 0; q < r->it.n; q++)
+                fprintf(fi, "%s,%s,%.9g,%.9g\n", keys[k], k ? vtxt : "", r->it.vn[q], r->it.dcrit[q]);
+            fprintf(fi, "\n\n");   /* gnuplot data block separator */
+        }
+        fprintf(fm, "\nCommand: snowregime sensitivity --out %s (%.2f s, %d threads)\n", mo.out, sec, s.threads);
+        printf("wall time %.3f s (%d maps, %d threads)\n", sec, nvar, s.threads);
+    }
+    if (rc == 0 && mo.plot) {
+        fflush(NULL);
+        const char *png = swt_outset_add(os, "sensitivity.png", err, sizeof err);
+        const char *ti = swt_outset_add(os, "sensitivity-interfaces.csv", err, sizeof err);
+        char gp[4200];
+        snprintf(gp, sizeof gp, "%s.gp", png);
+        FILE *f = fopen(gp, "w");
+        if (!f) rc = sr_fail(cmd, "cannot write the gnuplot script");
+        else {
+            swt_gnuplot_png_header(f, png, 950, 650);
+            fprintf(f, "set datafile separator ','\nset key outside right top\nset format x '%%g'\nset mxtics 10\n");
+            if (mo.g.vlog) fprintf(f, "set logscale x\n");
+            fprintf(f, "set xrange [%.10g:%.10g]\nset yrange [%.10g:%.10g]\n", mo.g.vmin, mo.g.vmax,
+                    mo.g.dmin * 1e6, mo.g.dmax * 1e6);
+            fprintf(f, "set xlabel 'normal impact speed v_n [m/s]'\nset ylabel 'critical diameter d_{crit} [um]'\n");
+            fprintf(f, "set title 'snowregime sensitivity: stick/bounce interface per parameter (below: stick)'\n");
+            fprintf(f, "plot ");
+            for (int k = 0; k < nvar; k++) {
+                char lab[64];
+                if (k == 0) snprintf(lab, sizeof lab, "baseline");
+                else snprintf(lab, sizeof lab, "%s = %g", keys[k], vals[k]);
+                fprintf(f, "%s'%s' index %d skip %d using 3:($4*1e6) with linespoints lw %d pt %d ps 0.6 title '%s'",
+                        k ? ", \\\n     " : "", ti, k, k == 0 ? 1 : 0, k == 0 ? 3 : 1, k, lab);
+            }
+            fprintf(f, "\n");
+            fclose(f);
+            if (swt_run_gnuplot(gp, err, sizeof err) != 0) rc = sr_fail(cmd, err);
+            remove(gp);
+        }
+    }
+    if (rc == 0 && swt_outset_commit(os, err, sizeof err) != 0) rc = sr_fail(cmd, err);
+    if (rc == 0) printf("written to %s/\n", mo.out);
+    swt_outset_free(os);
+    for (int k = 0; k < nvar; k++) mapres_free(&res[k]);
+    swr_model_free(m0);
+    return rc;
+}

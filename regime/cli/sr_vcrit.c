@@ -1,0 +1,139 @@
+/* sr_vcrit.c - snowregime vcrit: v_crit per diameter (output contract: see --help). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sr.h"
+#include "swp_contact.h"
+
+typedef struct {
+    const swr_model *m;
+    const swt_vcrit_opts *o;
+    const double *d;
+    swt_vcrit_result *r;
+} vc_ctx;
+
+static void vc_one(void *p, int k)
+{
+    vc_ctx *c = p;
+    swt_vcrit(c->m, c->d[k], c->o, &c->r[k]);
+}
+
+int sr_cmd_vcrit(int argc, char **argv)
+{
+    const char *cmd = "vcrit";
+    sr_args a = { argc, argv, 1, cmd, "" };
+    sr_settings s = { 0 };
+    s.threads = 2;
+    swt_vcrit_opts o;
+    swt_vcrit_opts_default(&o);
+    double *d = NULL;
+    int nd = 0, have_angle = 0, have_vt = 0;
+    const char *v;
+    double angle = 0.0;
+    int rc = 0;
+    for (; a.i < argc; a.i++) {
+        int r = sr_settings_opt(&a, &s);
+        if (r < 0) { rc = sr_usage_error(cmd, a.err); goto out; }
+        if (r > 0) continue;
+        if (sr_flag(&a, "--help") || sr_flag(&a, "-h")) { sr_help(cmd); goto out; }
+        if (sr_flag(&a, "--full-stick")) { o.full_stick = 1; continue; }
+        double *x = NULL;
+        const char *name = NULL;
+        double lo = 0, hi = 0;
+        if (sr_opt(&a, "--d", &v)) {
+            free(d); d = NULL;
+            if (!v || swt_parse_list("--d", v, 1e-300, 1.0, &d, &nd, a.err, sizeof a.err)) {
+                rc = sr_usage_error(cmd, a.err); goto out;
+            }
+            continue;
+        }
+        if (sr_opt(&a, "--vt", &v)) { x = &o.vt; name = "--vt"; lo = 0; hi = 1e4; have_vt = 1; }
+        else if (sr_opt(&a, "--angle", &v)) { x = &angle; name = "--angle"; lo = 0; hi = 89.9; have_angle = 1; }
+        else if (sr_opt(&a, "--omega", &v)) { x = &o.omega; name = "--omega"; lo = -1e12; hi = 1e12; }
+        else if (sr_opt(&a, "--tol", &v)) { x = &o.rtol; name = "--tol"; lo = 1e-12; hi = 0.5; }
+        else if (sr_opt(&a, "--vmin", &v)) { x = &o.vmin; name = "--vmin"; lo = 1e-300; hi = 1e4; }
+        else if (sr_opt(&a, "--vmax", &v)) { x = &o.vmax; name = "--vmax"; lo = 1e-300; hi = 1e4; }
+        else if (sr_opt(&a, "--scan-ratio", &v)) { x = &o.scan_ratio; name = "--scan-ratio"; lo = 1.01; hi = 100; }
+        else {
+            snprintf(a.err, sizeof a.err, "unknown option '%s' (see snowregime vcrit --help)", argv[a.i]);
+            rc = sr_usage_error(cmd, a.err); goto out;
+        }
+        if (!v || swt_parse_double(name, v, lo, hi, x, a.err, sizeof a.err)) {
+            rc = sr_usage_error(cmd, a.err); goto out;
+        }
+    }
+    if (!d) { rc = sr_usage_error(cmd, "--d: missing (comma-separated diameters in m)"); goto out; }
+    if (have_vt && have_angle) { rc = sr_usage_error(cmd, "--vt and --angle exclude each other"); goto out; }
+    if (have_angle) o.tan_angle = tan(angle * M_PI / 180.0);
+    if (!(o.vmax > o.vmin)) {
+        snprintf(a.err, sizeof a.err, "--vmax: '%g' must be > --vmin (%g)", o.vmax, o.vmin);
+        rc = sr_usage_error(cmd, a.err); goto out;
+    }
+
+    swr_params p;
+    char err[400];
+    if (sr_settings_apply(&s, &p, err, sizeof err) != 0) { rc = sr_usage_error(cmd, err); goto out; }
+    swr_model *m = swr_model_alloc(&p, err, sizeof err);
+    if (!m) { rc = sr_usage_error(cmd, err); goto out; }
+    swt_vcrit_result *res = calloc((size_t)nd, sizeof *res);
+    if (!res) { swr_model_free(m); rc = sr_fail(cmd, "out of memory"); goto out; }
+    vc_ctx c = { m, &o, d, res };
+    double t0 = swt_now();
+    swt_parallel_for(nd, s.threads, vc_one, &c);
+    double sec = swt_now() - t0;
+    for (int k = 0; k < nd; k++)
+        if (res[k].status == SWT_VCRIT_ERROR) {
+            snprintf(err, sizeof err, "--d: '%g': %s", d[k], res[k].msg);
+            rc = sr_usage_error(cmd, err);
+            break;
+        }
+    if (rc == 0) {
+        const double Es = swp_effective_modulus(p.E, p.nu, p.E_wall, p.nu_wall);
+        printf("# snowregime vcrit: critical normal sticking velocity, outcome = %s\n",
+               o.full_stick ? "full stick (contact kept, sliding and rolling arrested)"
+                            : "normal contact kept");
+        printf("# search: v in [%g, %g] m/s, scan ratio %g, bisection to v_hi/v_lo <= 1 + %g\n",
+               o.vmin, o.vmax, o.scan_ratio, o.rtol);
+        if (have_angle) printf("# impact angle %g deg from the normal (vt = vn tan angle)\n", angle);
+        else printf("# vt %g m/s, omega %g rad/s\n", o.vt, o.omega);
+        swr_params_print(&p, "# setting ", stdout);
+        printf("# columns: d [m] <TAB> v_crit [m/s]\n");
+        long coll = 0;
+        for (int k = 0; k < nd; k++) {
+            const swt_vcrit_result *r = &res[k];
+            coll += r->collisions;
+            if (r->status == SWT_VCRIT_FOUND) printf("%.9g\t%.9g\n", d[k], r->vcrit);
+            else printf("%.9g\tnan\n", d[k]);
+            printf("# d %.6g: ", d[k]);
+            if (r->status == SWT_VCRIT_FOUND) printf("bracket [%.9g, %.9g]", r->v_lo, r->v_hi);
+            else if (r->status == SWT_VCRIT_NO_STICK) printf("bounces over the whole range: v_crit < %g m/s", o.vmin);
+            else printf("sticks over the whole range: v_crit > %g m/s", o.vmax);
+            printf(", %ld collisions, %ld steps, dt %.3g..%.3g s", r->collisions, r->steps,
+                   r->dt_min, r->dt_max);
+            if (p.adhesion == SWR_ADHESION_JKR && p.cor == SWR_COR_ELASTIC)
+                printf(", Thornton-Ning V_s %.6g m/s",
+                       swp_sticking_velocity_tn(p.gamma, p.rho, Es, 0.5 * d[k]));
+            printf("\n");
+            if (r->changes > 1)
+                printf("# warning: d %.6g: non-monotone outcome: %d stick/bounce changes in the scan%s%.6g m/s\n",
+                       d[k], r->changes, r->v_restick > 0 ? ", sticks again at " : "",
+                       r->v_restick > 0 ? r->v_restick : 0.0);
+            if (r->step_bound)
+                printf("# warning: d %.6g: %ld collisions ended on the step bound\n", d[k], r->step_bound);
+            if (r->msg[0]) printf("# warning: d %.6g: %s\n", d[k], r->msg);
+            if (r->status != SWT_VCRIT_FOUND) {
+                fprintf(stderr, "snowregime vcrit: d %g m: no v_crit in [%g, %g] m/s (%s)\n", d[k],
+                        o.vmin, o.vmax, r->status == SWT_VCRIT_NO_STICK ? "bounces everywhere"
+                                                                       : "sticks everywhere");
+                rc = SR_EXIT_FAIL;
+            }
+        }
+        printf("# %d diameters, %ld collisions, %.6f s wall time, %d threads\n", nd, coll, sec, s.threads);
+    }
+    free(res);
+    swr_model_free(m);
+out:
+    free(d);
+    return rc;
+}

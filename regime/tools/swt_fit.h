@@ -1,0 +1,47 @@
+/* swt_fit.h - polynomial fit of the interface and the regime.coeffs writer.
+ *
+ * Fit (GSL least squares, gsl_multifit_linear) in the log basis of
+ * doc/regime-coeffs.md: ln(d_crit / 1 m) = sum_i c_i (ln(v_n / 1 m/s))^i.
+ * Residuals are relative residuals of d_crit: d_fit / d_point - 1.
+ */
+#ifndef SWT_FIT_H
+#define SWT_FIT_H
+
+#include <stdio.h>
+
+#include "swr_params.h"
+#include "swt_map.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define SWT_FIT_MAXDEG 8
+
+typedef struct {
+    int degree;                    /* degree actually fitted */
+    int degree_asked;
+    double c[SWT_FIT_MAXDEG + 1];  /* c0 first */
+    double rms, maxres;            /* relative residuals of d_crit */
+    double chisq;                  /* of the ln fit */
+    double vnmin, vnmax;           /* span of the points [m/s] */
+    double slope_lo, slope_hi;     /* log-log slopes near each end (from the points) */
+    int decreasing;                /* 1: fit non-increasing over [vnmin, vnmax] */
+    int npts;
+    char note[200];                /* what was adjusted and why ("" if nothing) */
+} swt_fit;
+
+/* ln d_crit from the fitted polynomial at vn. */
+double swt_fit_eval(const swt_fit *f, double vn);
+/* Fit degree `degree` (1..SWT_FIT_MAXDEG) to the interface. When the fit is
+ * not non-increasing over its span, lower degrees are tried (note says so).
+ * 0, or -1 with a message (fewer than degree+1 points, no decreasing fit). */
+int swt_fit_interface(const swt_interface *it, int degree, swt_fit *f, char *err, size_t errlen);
+/* Write regime.coeffs per doc/regime-coeffs.md. */
+void swt_coeffs_write(FILE *fp, const swt_fit *f, const swr_params *p, double dmin, double dmax,
+                      const char *label);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,89 @@
+/* swt_vcrit.c - v_crit by scan + log bisection. */
+#include "swt_vcrit.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+void swt_vcrit_opts_default(swt_vcrit_opts *o)
+{
+    o->vmin = 1e-3;
+    o->vmax = 50.0;
+    o->rtol = 1e-3;
+    o->scan_ratio = 2.0;
+    o->full_stick = 0;
+    o->vt = 0.0;
+    o->tan_angle = 0.0;
+    o->omega = 0.0;
+}
+
+int swt_sticks(const swr_model *m, double d, double vn, const swt_vcrit_opts *o,
+               swt_vcrit_result *r, char *msg, size_t msglen)
+{
+    swr_impact in = { .d = d, .vn = vn, .vt = o->tan_angle > 0.0 ? vn * o->tan_angle : o->vt,
+                      .omega = o->omega };
+    swr_result res;
+    memset(&res, 0, sizeof res);
+    swr_status st = swr_collide(m, &in, &res, NULL);
+    if (st == SWR_EINVAL) {
+        if (msg) snprintf(msg, msglen, "%s", res.msg);
+        return -1;
+    }
+    if (r) {
+        r->collisions++;
+        r->steps += res.steps;
+        if (st == SWR_STEP_BOUND) r->step_bound++;
+        if (r->dt_min == 0.0 || res.dt < r->dt_min) r->dt_min = res.dt;
+        if (res.dt > r->dt_max) r->dt_max = res.dt;
+    }
+    if (msg && res.msg[0] && !msg[0]) snprintf(msg, msglen, "%s", res.msg);
+    return o->full_stick ? (res.stick != 0) : (res.contact_kept != 0);
+}
+
+swt_vcrit_status swt_vcrit(const swr_model *m, double d, const swt_vcrit_opts *o,
+                           swt_vcrit_result *r)
+{
+    memset(r, 0, sizeof *r);
+    const double ratio = o->scan_ratio > 1.0 ? o->scan_ratio : 2.0;
+    const double rtol = o->rtol > 0.0 ? o->rtol : 1e-3;
+    const int nscan = 1 + (int)ceil(log(o->vmax / o->vmin) / log(ratio) - 1e-9);
+    const double step = log(o->vmax / o->vmin) / (nscan > 1 ? nscan - 1 : 1);
+
+    int prev = -1, first_change = -1, s_first = 0;
+    double v_prev = 0.0;
+    for (int k = 0; k < nscan; k++) {
+        double v = (k == nscan - 1) ? o->vmax : o->vmin * exp(step * k);
+        int s = swt_sticks(m, d, v, o, r, r->msg, sizeof r->msg);
+        if (s < 0) { r->status = SWT_VCRIT_ERROR; r->vcrit = o->vmin; return r->status; }
+        if (k > 0 && s != prev) {
+            r->changes++;
+            if (first_change < 0 && prev == 1) {
+                first_change = k;
+                r->v_lo = v_prev;
+                r->v_hi = v;
+            } else if (first_change >= 0 && s == 1 && r->v_restick == 0.0) {
+                r->v_restick = v;
+            }
+        }
+        if (k == 0) s_first = s;
+        prev = s;
+        v_prev = v;
+    }
+    if (first_change < 0) {
+        /* no stick -> bounce change: sticks everywhere or never, or starts bouncing */
+        if (s_first == 1) { r->status = SWT_VCRIT_ALL_STICK; r->vcrit = o->vmax; }
+        else { r->status = SWT_VCRIT_NO_STICK; r->vcrit = o->vmin; }
+        r->v_lo = r->v_hi = r->vcrit;
+        return r->status;
+    }
+    /* bisection in log(v); the loop bound guards against a bad rtol */
+    for (int it = 0; it < 200 && r->v_hi / r->v_lo > 1.0 + rtol; it++) {
+        double v = sqrt(r->v_lo * r->v_hi);
+        int s = swt_sticks(m, d, v, o, r, r->msg, sizeof r->msg);
+        if (s < 0) { r->status = SWT_VCRIT_ERROR; r->vcrit = o->vmin; return r->status; }
+        if (s) r->v_lo = v; else r->v_hi = v;
+    }
+    r->vcrit = sqrt(r->v_lo * r->v_hi);
+    r->status = SWT_VCRIT_FOUND;
+    return r->status;
+}

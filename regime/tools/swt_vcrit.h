@@ -1,0 +1,62 @@
+/* swt_vcrit.h - critical normal sticking velocity of one diameter.
+ *
+ * The outcome at normal speed v ("sticks": the normal contact is kept, or,
+ * with full_stick, contact kept AND sliding and rolling arrested) is scanned
+ * over [vmin, vmax] at log-spaced points (ratio scan_ratio) to find the first
+ * stick -> bounce change and to detect a non-monotone outcome (more than one
+ * change); the bracket is then bisected in log(v) until v_hi / v_lo <= 1 + rtol.
+ * v_crit is the geometric mean of the final bracket: |v_crit - v*| / v* <= rtol / 2
+ * for the first change v* (to the kernel's accuracy).
+ */
+#ifndef SWT_VCRIT_H
+#define SWT_VCRIT_H
+
+#include "swr_collide.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct {
+    double vmin, vmax;    /* search range of the normal speed [m/s], 0 < vmin < vmax */
+    double rtol;          /* relative bracket width at the end (default 1e-3) */
+    double scan_ratio;    /* ratio of neighbouring scan points, > 1 (default 2) */
+    int full_stick;       /* 1: outcome = full stick; 0: normal contact kept */
+    double vt;            /* tangential speed [m/s] of every impact */
+    double tan_angle;     /* if > 0: vt = vn * tan_angle instead (fixed impact angle) */
+    double omega;         /* initial spin [rad/s] */
+} swt_vcrit_opts;
+
+typedef enum {
+    SWT_VCRIT_FOUND = 0,     /* bracketed and bisected */
+    SWT_VCRIT_NO_STICK,      /* bounces over the whole range: v_crit < vmin */
+    SWT_VCRIT_ALL_STICK,     /* sticks over the whole range: v_crit > vmax */
+    SWT_VCRIT_ERROR          /* kernel rejected the input (msg) */
+} swt_vcrit_status;
+
+typedef struct {
+    swt_vcrit_status status;
+    double vcrit;         /* FOUND: the estimate; NO_STICK: vmin; ALL_STICK: vmax */
+    double v_lo, v_hi;    /* final bracket (sticks at v_lo, bounces at v_hi) */
+    int changes;          /* stick/bounce changes seen in the scan (1 when monotone) */
+    double v_restick;     /* first velocity above v_crit where it sticks again (0: none) */
+    long collisions;      /* kernel calls */
+    long steps;           /* total integration steps */
+    long step_bound;      /* calls that ended on the step bound */
+    double dt_min, dt_max;/* range of the time steps used [s] */
+    char msg[200];        /* kernel warning (e.g. Tabor) or error */
+} swt_vcrit_result;
+
+void swt_vcrit_opts_default(swt_vcrit_opts *o);
+/* Does diameter d stick at normal speed vn? Returns 1/0, or -1 on a kernel
+ * error (message copied to msg). Accumulates counters into r when not NULL. */
+int swt_sticks(const swr_model *m, double d, double vn, const swt_vcrit_opts *o,
+               swt_vcrit_result *r, char *msg, size_t msglen);
+/* The search. Returns r->status. */
+swt_vcrit_status swt_vcrit(const swr_model *m, double d, const swt_vcrit_opts *o,
+                           swt_vcrit_result *r);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
