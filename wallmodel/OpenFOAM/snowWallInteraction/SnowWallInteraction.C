@@ -1,0 +1,597 @@
+/*---------------------------------------------------------------------------*\
+    SnowWallInteraction - see SnowWallInteraction.H and doc/wallmodel.md.
+\*---------------------------------------------------------------------------*/
+
+#include "SnowWallInteraction.H"
+#include "fvMesh.H"
+#include "Time.H"
+#include "OSspecific.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::SnowWallInteraction<CloudType>::check
+(
+    int rc,
+    const dictionary& dict
+) const
+{
+    if (rc != SWW_OK)
+    {
+        FatalIOErrorInFunction(dict)
+            << "snowWallInteraction: " << sww_errmsg(model_)
+            << exit(FatalIOError);
+    }
+}
+
+
+template<class CloudType>
+void Foam::SnowWallInteraction<CloudType>::readRegime
+(
+    const dictionary& regimeDict
+)
+{
+    // Every entry goes through the C core's setters: the contract of
+    // doc/regime-coeffs.md is checked once, in C.
+    sww_regime_clear(model_);
+    for (const entry& e : regimeDict)
+    {
+        if (e.isDict())
+        {
+            continue;
+        }
+        const std::string key(e.keyword());
+        ITstream& is = e.stream();
+        if (is.empty())
+        {
+            continue;
+        }
+        const token& t0 = is[0];
+        int rc = SWW_OK;
+        if (t0.isNumber() && is.size() == 1)
+        {
+            rc = sww_regime_number(model_, key.c_str(), t0.number());
+        }
+        else if ((t0.isWord() || t0.isString()) && is.size() == 1)
+        {
+            const std::string w(t0.isWord() ? t0.wordToken() : t0.stringToken());
+            rc = sww_regime_word(model_, key.c_str(), w.c_str());
+        }
+        else if (t0.isPunctuation() && t0.pToken() == token::BEGIN_LIST)
+        {
+            scalarList vals;
+            is >> vals;
+            rc = sww_regime_list(model_, key.c_str(), vals.cdata(), vals.size());
+        }
+        else
+        {
+            FatalIOErrorInFunction(regimeDict)
+                << "snowWallInteraction: regime key '" << e.keyword()
+                << "': cannot read value " << is << exit(FatalIOError);
+        }
+        check(rc, regimeDict);
+    }
+    const std::string origin(regimeDict.name());
+    check(sww_regime_commit(model_, origin.c_str()), regimeDict);
+}
+
+
+template<class CloudType>
+void Foam::SnowWallInteraction<CloudType>::setup()
+{
+    const dictionary& cd = this->coeffDict();
+    model_ = sww_alloc();
+    if (!model_)
+    {
+        FatalErrorInFunction << "out of memory" << exit(FatalError);
+    }
+
+    if (!cd.isDict("regime"))
+    {
+        FatalIOErrorInFunction(cd)
+            << "snowWallInteraction: missing sub-dictionary 'regime' in "
+            << cd.name() << ": add  #include \"regime.coeffs\"  (written by "
+            << "snowregime map) to snowWallInteractionCoeffs"
+            << exit(FatalIOError);
+    }
+    readRegime(cd.subDict("regime"));
+
+    const word stuck(cd.lookupOrDefault<word>("stuckParcels", "remove"));
+    if (stuck == "remove")
+    {
+        removeStuck_ = true;
+    }
+    else if (stuck == "keep")
+    {
+        removeStuck_ = false;
+    }
+    else
+    {
+        FatalIOErrorInFunction(cd)
+            << "snowWallInteraction: stuckParcels '" << stuck
+            << "' is not remove or keep" << exit(FatalIOError);
+    }
+
+    check
+    (
+        sww_set_rebound_tangential
+        (
+            model_, cd.lookupOrDefault<scalar>("reboundTangential", 1.0)
+        ),
+        cd
+    );
+
+    if (cd.isDict("tangentialGate"))
+    {
+        const dictionary& g = cd.subDict("tangentialGate");
+        if (g.lookupOrDefault<Switch>("active", true))
+        {
+            check
+            (
+                sww_set_tangential_gate
+                (
+                    model_,
+                    g.get<scalar>("vtMax"),
+                    g.lookupOrDefault<scalar>("dRef", 5e-5),
+                    g.lookupOrDefault<scalar>("exponent", 0.0)
+                ),
+                g
+            );
+        }
+    }
+
+    if (cd.isDict("shearGate"))
+    {
+        const dictionary& g = cd.subDict("shearGate");
+        if (g.lookupOrDefault<Switch>("active", true))
+        {
+            const word model(g.lookupOrDefault<word>("model", "adhesion"));
+            if (model == "adhesion")
+            {
+                check
+                (
+                    sww_set_shear_gate_adhesion
+                    (
+                        model_, g.lookupOrDefault<scalar>("roughnessFactor", 1.0)
+                    ),
+                    g
+                );
+            }
+            else if (model == "constant")
+            {
+                check
+                (
+                    sww_set_shear_gate_constant(model_, g.get<scalar>("tauCrit")),
+                    g
+                );
+            }
+            else
+            {
+                FatalIOErrorInFunction(g)
+                    << "snowWallInteraction: shearGate model '" << model
+                    << "' is not adhesion or constant" << exit(FatalIOError);
+            }
+            shearOn_ = true;
+            tauName_ = g.lookupOrDefault<word>("field", "wallShearStress");
+            rhoAir_ = g.lookupOrDefault<scalar>("rhoAir", -1.0);
+        }
+    }
+
+    // Interaction type of every patch group
+    groupType_.setSize(patchData_.size());
+    forAll(patchData_, groupi)
+    {
+        const word& t = patchData_[groupi].interactionTypeName();
+        if (t == "none") groupType_[groupi] = 0;
+        else if (t == "rebound") groupType_[groupi] = 1;
+        else if (t == "stick") groupType_[groupi] = 2;
+        else if (t == "escape") groupType_[groupi] = 3;
+        else if (t == "snow") groupType_[groupi] = 4;
+        else
+        {
+            FatalIOErrorInFunction(cd)
+                << "snowWallInteraction: patch " << patchData_[groupi].patchName()
+                << ": type '" << t << "' is not snow, rebound, stick, escape "
+                << "or none" << exit(FatalIOError);
+        }
+    }
+
+    // Snow patches and their totals (cumulative, restored on restart)
+    const polyBoundaryMesh& bm = this->owner().mesh().boundaryMesh();
+    slotOfPatch_.setSize(bm.size(), -1);
+    DynamicList<label> snow;
+    forAll(bm, patchi)
+    {
+        const label groupi = patchData_.applyToPatch(patchi);
+        if (groupi >= 0 && groupType_[groupi] == 4)
+        {
+            slotOfPatch_[patchi] = snow.size();
+            snow.append(patchi);
+        }
+    }
+    snowPatches_.transfer(snow);
+    const label n = snowPatches_.size();
+    nImpact_.setSize(n, 0);
+    nStick_.setSize(n, 0);
+    nBounce_.setSize(n, 0);
+    nRipoff_.setSize(n, 0);
+    massDeposit_.setSize(n, 0.0);
+    forAll(snowPatches_, s)
+    {
+        const word& pn = bm[snowPatches_[s]].name();
+        this->getModelProperty(pn + ":impacts", nImpact_[s]);
+        this->getModelProperty(pn + ":sticks", nStick_[s]);
+        this->getModelProperty(pn + ":bounces", nBounce_[s]);
+        this->getModelProperty(pn + ":ripoffs", nRipoff_[s]);
+        this->getModelProperty(pn + ":depositedMass", massDeposit_[s]);
+    }
+
+    char desc[1024];
+    sww_describe(model_, desc, sizeof desc);
+    Info<< "    snowWallInteraction: regime " << desc << nl
+        << "    snow patches:";
+    for (const label patchi : snowPatches_)
+    {
+        Info<< ' ' << bm[patchi].name();
+    }
+    Info<< nl << "    stuck parcels: " << (removeStuck_ ? "removed" : "kept")
+        << ", deposit field " << this->owner().name() << ":snowDeposit"
+        << endl;
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::SnowWallInteraction<CloudType>::wallShearStress
+(
+    const polyPatch& pp,
+    label facei
+) const
+{
+    const fvMesh& mesh = this->owner().mesh();
+    const volVectorField* tauPtr = mesh.findObject<volVectorField>(tauName_);
+    if (!tauPtr)
+    {
+        FatalErrorInFunction
+            << "snowWallInteraction: the shear gate is on but the field '"
+            << tauName_ << "' does not exist. Add to system/controlDict:" << nl
+            << "    functions { wallShearStress { type wallShearStress; "
+            << "libs (\"libfieldFunctionObjects.so\"); patches ("
+            << pp.name() << "); writeControl writeTime; } }" << nl
+            << "(and real gradSchemes), or set shearGate { active false; }"
+            << exit(FatalError);
+    }
+    const scalar t = mag(tauPtr->boundaryField()[pp.index()][facei]);
+    const dimensionSet& dims = tauPtr->dimensions();
+    if (dims == dimPressure)
+    {
+        return t;
+    }
+    if (dims == dimVelocity*dimVelocity)
+    {
+        if (rhoAir_ <= 0)
+        {
+            FatalErrorInFunction
+                << "snowWallInteraction: the field '" << tauName_
+                << "' is kinematic [m2/s2] (incompressible solver): add "
+                << "rhoAir <air density [kg/m3]>; to shearGate in "
+                << this->coeffDict().name() << exit(FatalError);
+        }
+        return rhoAir_*t;
+    }
+    FatalErrorInFunction
+        << "snowWallInteraction: the field '" << tauName_ << "' has units "
+        << dims << ", expected [Pa] or [m2/s2]" << exit(FatalError);
+    return 0;
+}
+
+
+template<class CloudType>
+void Foam::SnowWallInteraction<CloudType>::writeSeries
+(
+    const labelList& ni,
+    const labelList& ns,
+    const labelList& nb,
+    const labelList& nr,
+    const scalarList& md
+)
+{
+    if (!Pstream::master())
+    {
+        return;
+    }
+    const Time& time = this->owner().mesh().time();
+    if (!seriesPtr_.valid())
+    {
+        const fileName dir
+        (
+            time.globalPath()/"postProcessing"
+           /(this->owner().name() + ":snowWall")
+           /time.timeName(time.startTime().value())
+        );
+        mkDir(dir);
+        seriesPtr_.reset(new OFstream(dir/"snowWall.dat"));
+        OFstream& os = seriesPtr_();
+        os.precision(12);
+        os << "# time";
+        const polyBoundaryMesh& bm = this->owner().mesh().boundaryMesh();
+        for (const label patchi : snowPatches_)
+        {
+            const word& pn = bm[patchi].name();
+            os  << ' ' << pn << ":impacts " << pn << ":sticks "
+                << pn << ":bounces " << pn << ":ripoffs "
+                << pn << ":depositedMass[kg]";
+        }
+        os << endl;
+    }
+    OFstream& os = seriesPtr_();
+    os << time.value();
+    forAll(ni, s)
+    {
+        os << ' ' << ni[s] << ' ' << ns[s] << ' ' << nb[s] << ' ' << nr[s]
+           << ' ' << md[s];
+    }
+    os << endl;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::SnowWallInteraction<CloudType>::SnowWallInteraction
+(
+    const dictionary& dict,
+    CloudType& cloud
+)
+:
+    PatchInteractionModel<CloudType>(dict, cloud, typeName),
+    patchData_(cloud.mesh(), this->coeffDict()),
+    groupType_(),
+    model_(nullptr),
+    removeStuck_(true),
+    shearOn_(false),
+    tauName_("wallShearStress"),
+    rhoAir_(-1),
+    rnd_(1234567 + 7919*Pstream::myProcNo()),
+    slotOfPatch_(),
+    snowPatches_(),
+    depositPtr_(nullptr),
+    seriesPtr_(nullptr)
+{
+    setup();
+    (void)deposit();
+}
+
+
+template<class CloudType>
+Foam::SnowWallInteraction<CloudType>::SnowWallInteraction
+(
+    const SnowWallInteraction<CloudType>& pim
+)
+:
+    PatchInteractionModel<CloudType>(pim),
+    patchData_(pim.patchData_),
+    groupType_(),
+    model_(nullptr),
+    removeStuck_(true),
+    shearOn_(false),
+    tauName_("wallShearStress"),
+    rhoAir_(-1),
+    rnd_(pim.rnd_),
+    slotOfPatch_(),
+    snowPatches_(),
+    depositPtr_(nullptr),
+    seriesPtr_(nullptr)
+{
+    setup();
+    nImpact_ = pim.nImpact_;
+    nStick_ = pim.nStick_;
+    nBounce_ = pim.nBounce_;
+    nRipoff_ = pim.nRipoff_;
+    massDeposit_ = pim.massDeposit_;
+    if (pim.depositPtr_.valid())
+    {
+        // an unregistered copy: the original owns the registered field
+        const volScalarField& d0 = pim.depositPtr_();
+        depositPtr_.reset
+        (
+            new volScalarField
+            (
+                IOobject
+                (
+                    d0.name() + ":copy", d0.instance(), d0.db(),
+                    IOobject::NO_READ, IOobject::NO_WRITE, false
+                ),
+                d0
+            )
+        );
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::SnowWallInteraction<CloudType>::~SnowWallInteraction()
+{
+    sww_free(model_);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::volScalarField& Foam::SnowWallInteraction<CloudType>::deposit()
+{
+    if (!depositPtr_.valid())
+    {
+        const fvMesh& mesh = this->owner().mesh();
+        depositPtr_.reset
+        (
+            new volScalarField
+            (
+                IOobject
+                (
+                    this->owner().name() + ":snowDeposit",
+                    mesh.time().timeName(),
+                    mesh,
+                    IOobject::READ_IF_PRESENT,
+                    IOobject::AUTO_WRITE
+                ),
+                mesh,
+                dimensionedScalar(dimMass/dimArea, Zero)
+            )
+        );
+    }
+    return depositPtr_();
+}
+
+
+template<class CloudType>
+bool Foam::SnowWallInteraction<CloudType>::correct
+(
+    typename CloudType::parcelType& p,
+    const polyPatch& pp,
+    bool& keepParticle
+)
+{
+    const label groupi = patchData_.applyToPatch(pp.index());
+    if (groupi < 0)
+    {
+        return false;
+    }
+
+    vector& U = p.U();
+
+    switch (groupType_[groupi])
+    {
+        case 0: // none
+        {
+            return false;
+        }
+        case 1: // rebound, as localInteraction
+        {
+            keepParticle = true;
+            p.active(true);
+            vector nw, Up;
+            this->owner().patchData(p, pp, nw, Up);
+            U -= Up;
+            const scalar Un = U & nw;
+            const vector Ut = U - Un*nw;
+            if (Un > 0)
+            {
+                U -= (1.0 + patchData_[groupi].e())*Un*nw;
+            }
+            U -= patchData_[groupi].mu()*Ut;
+            U += Up;
+            return true;
+        }
+        case 2: // stick, as localInteraction
+        {
+            keepParticle = true;
+            p.active(false);
+            U = Zero;
+            return true;
+        }
+        case 3: // escape
+        {
+            keepParticle = false;
+            p.active(false);
+            U = Zero;
+            return true;
+        }
+        default:
+            break;
+    }
+
+    // snow: the C core decides, in the wall frame
+    vector nw, Up;
+    this->owner().patchData(p, pp, nw, Up);
+    const vector Urel = U - Up;
+    const scalar Un = Urel & nw;            // > 0: towards the wall
+    const vector Ut = Urel - Un*nw;
+    const label facei = pp.whichFace(p.face());
+
+    sww_impact in;
+    in.d = p.d();
+    in.vn = Un > 0 ? Un : 0;
+    in.vt = mag(Ut);
+    in.tau_w = shearOn_ ? wallShearStress(pp, facei) : 0;
+    in.u = rnd_.sample01<scalar>();
+    if (in.u >= 1) in.u = 0;
+
+    sww_outcome out;
+    if (sww_decide(model_, &in, &out) != SWW_OK)
+    {
+        FatalErrorInFunction
+            << "snowWallInteraction: invalid impact on patch " << pp.name()
+            << ": d " << in.d << " vn " << in.vn << " vt " << in.vt
+            << " tau_w " << in.tau_w << exit(FatalError);
+    }
+
+    const label s = slotOfPatch_[pp.index()];
+    ++nImpact_[s];
+
+    if (out.fate == SWW_STICK)
+    {
+        const scalar dm = p.mass()*p.nParticle();
+        ++nStick_[s];
+        massDeposit_[s] += dm;
+        const scalar area = this->owner().mesh().magSf().boundaryField()
+            [pp.index()][facei];
+        deposit().boundaryFieldRef()[pp.index()][facei] += dm/area;
+        keepParticle = !removeStuck_;
+        p.active(false);
+        U = Zero;
+    }
+    else
+    {
+        if (out.fate == SWW_BOUNCE) ++nBounce_[s]; else ++nRipoff_[s];
+        keepParticle = true;
+        p.active(true);
+        const scalar UnNew = Un > 0 ? -out.e_n*Un : Un;
+        U = Up + out.e_t*Ut + UnNew*nw;
+    }
+    return true;
+}
+
+
+template<class CloudType>
+void Foam::SnowWallInteraction<CloudType>::info(Ostream& os)
+{
+    PatchInteractionModel<CloudType>::info(os);
+
+    labelList ni(nImpact_), ns(nStick_), nb(nBounce_), nr(nRipoff_);
+    scalarList md(massDeposit_);
+    Pstream::listCombineGather(ni, plusEqOp<label>());
+    Pstream::listCombineGather(ns, plusEqOp<label>());
+    Pstream::listCombineGather(nb, plusEqOp<label>());
+    Pstream::listCombineGather(nr, plusEqOp<label>());
+    Pstream::listCombineGather(md, plusEqOp<scalar>());
+
+    const polyBoundaryMesh& bm = this->owner().mesh().boundaryMesh();
+    forAll(snowPatches_, s)
+    {
+        os  << "    snowWall: patch " << bm[snowPatches_[s]].name()
+            << ": impacts " << ni[s] << ", sticks " << ns[s]
+            << ", bounces " << nb[s] << ", ripoffs " << nr[s]
+            << ", deposited mass " << md[s] << " kg" << nl;
+    }
+    writeSeries(ni, ns, nb, nr, md);
+
+    if (this->writeTime())
+    {
+        // local cumulative totals: each processor restores its own on restart
+        forAll(snowPatches_, s)
+        {
+            const word& pn = bm[snowPatches_[s]].name();
+            this->setModelProperty(pn + ":impacts", nImpact_[s]);
+            this->setModelProperty(pn + ":sticks", nStick_[s]);
+            this->setModelProperty(pn + ":bounces", nBounce_[s]);
+            this->setModelProperty(pn + ":ripoffs", nRipoff_[s]);
+            this->setModelProperty(pn + ":depositedMass", massDeposit_[s]);
+        }
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,5 @@
+/* snowWallInteraction for basicKinematicCloud (uncoupledKinematicParcelFoam). */
+#include "basicKinematicCloud.H"
+#include "SnowWallInteraction.H"
+
+makePatchInteractionModelType(SnowWallInteraction, basicKinematicCloud);
