@@ -137,6 +137,7 @@ static void write_fit_txt(FILE *f, const sr_mapres *r, int threads)
 {
     const swt_fit *F = &r->fit;
     fprintf(f, "fit of the interface: ln(d_crit / 1 m) = sum_i c_i (ln(v_n / 1 m/s))^i\n");
+    if (!r->fit_ok) fprintf(f, "no fit: %s\n", r->fit_err);
     fprintf(f, "degree: %d (asked %d)\n", F->degree, F->degree_asked);
     if (F->note[0]) fprintf(f, "note: %s\n", F->note);
     fprintf(f, "coeffs:");
@@ -215,9 +216,11 @@ static int write_map_files(swt_outset *os, const char *sfx, const sr_mapres *r, 
     write_fit_txt(f, r, threads);
     char label[200];
     snprintf(label, sizeof label, "%s, gamma %g", what, p->gamma);
-    snprintf(name, sizeof name, "regime%s.coeffs", sfx);
-    if (!(f = swt_outset_open(os, name, err, errlen))) return -1;
-    swt_coeffs_write(f, &r->fit, p, r->mp->g.dmin, r->mp->g.dmax, label);
+    if (r->fit_ok) {
+        snprintf(name, sizeof name, "regime%s.coeffs", sfx);
+        if (!(f = swt_outset_open(os, name, err, errlen))) return -1;
+        swt_coeffs_write(f, &r->fit, p, r->mp->g.dmin, r->mp->g.dmax, label);
+    }
     if (plot) {
         /* data must be on disk before gnuplot reads the temporaries */
         fflush(NULL);
@@ -315,24 +318,29 @@ int sr_cmd_map(int argc, char **argv)
         sr_mapres r;
         if (compute_map(m, &mo, &o, s.threads, &r, err, sizeof err) != 0) {
             rc = sr_usage_error(cmd, err);
-        } else if (!r.fit_ok) {
-            snprintf(err, sizeof err, "%s%s%s", r.fit_err, *sfx ? " for map" : "", sfx);
-            rc = sr_fail(cmd, err);
+        } else if (!r.fit_ok && !axis) {
+            rc = sr_fail(cmd, r.fit_err);
         } else if (write_map_files(os, sfx, &r, &p, what, mo.plot, s.threads, err, sizeof err) != 0) {
             rc = sr_fail(cmd, err);
         } else {
             const swt_fit *F = &r.fit;
             printf("map%s: %s\n", sfx, what);
+            if (!r.fit_ok) {
+                printf("  warning: no fit and no regime%s.coeffs: %s\n", sfx, r.fit_err);
+                fprintf(stderr, "snowregime map: warning: map%s: no fit: %s\n", sfx, r.fit_err);
+            }
             printf("  grid %d x %d: d %.4g..%.4g m, vn %.4g..%.4g m/s (%s)\n", r.mp->g.nd, r.mp->g.nv,
                    r.mp->g.dmin, r.mp->g.dmax, r.mp->g.vmin, r.mp->g.vmax, r.mp->g.vlog ? "log" : "linear");
             printf("  sticking points %ld of %ld, step-bound points %ld\n", r.mp->nstick,
                    r.mp->collisions, r.mp->step_bound);
             printf("  interface points %d (columns all stick %d, all bounce %d, non-monotone %d)\n",
                    r.it.n, r.it.cols_all_stick, r.it.cols_all_bounce, r.it.cols_nonmono);
-            printf("  fit degree %d%s%s: coeffs", F->degree, F->note[0] ? " - " : "", F->note);
-            for (int i = 0; i <= F->degree; i++) printf(" %.6g", F->c[i]);
-            printf("\n  residuals (relative, d_crit): rms %.3g, max %.3g; slopes %.3f (low), %.3f (high)\n",
-                   F->rms, F->maxres, F->slope_lo, F->slope_hi);
+            if (r.fit_ok) {
+                printf("  fit degree %d%s%s: coeffs", F->degree, F->note[0] ? " - " : "", F->note);
+                for (int i = 0; i <= F->degree; i++) printf(" %.6g", F->c[i]);
+                printf("\n  residuals (relative, d_crit): rms %.3g, max %.3g; slopes %.3f (low), %.3f (high)\n",
+                       F->rms, F->maxres, F->slope_lo, F->slope_hi);
+            }
             printf("  wall time: grid %.4f s (%ld collisions, %d threads), total %.4f s\n",
                    r.mp->seconds, r.mp->collisions, s.threads, r.seconds_total);
             if (r.mp->msg[0]) printf("  kernel warning: %s\n", r.mp->msg);

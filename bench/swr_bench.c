@@ -1,0 +1,161 @@
+/* swr_bench.c - timings of the regime kernel and tools (run by bench/regime.sh).
+ *
+ * Usage: swr_bench [--reps N] [--threads N] [--set KEY=VALUE]...
+ * Prints medians over N repetitions (default 7) of:
+ *   - one collision (mean over a batch of impacts around v_crit, d 10..100 um),
+ *   - v_crit for 46 diameters (10..100 um, tolerance 1e-3),
+ *   - the 46 x 50 map (grid + interface refinement, the speed range fixed
+ *     beforehand as snowregime map chooses it),
+ * and the accuracy of v_crit at the accuracy setting used (against 16x finer steps).
+ * Not a test: it prints figures, it asserts nothing.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "swr_collide.h"
+#include "swr_params.h"
+#include "swt_io.h"
+#include "swt_map.h"
+#include "swt_vcrit.h"
+
+static int cmp(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static double median(double *v, int n)
+{
+    qsort(v, (size_t)n, sizeof *v, cmp);
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+typedef struct { const swr_model *m; const swt_vcrit_opts *o; const double *d; double *vc; } vc_ctx;
+static void vc_one(void *p, int k)
+{
+    vc_ctx *c = p;
+    swt_vcrit_result r;
+    swt_vcrit(c->m, c->d[k], c->o, &r);
+    c->vc[k] = r.vcrit;
+}
+
+int main(int argc, char **argv)
+{
+    int reps = 7, threads = 2;
+    swr_params p;
+    swr_params_default(&p);
+    char err[400];
+    for (int i = 1; i < argc; i++) {
+        if (strcmp(argv[i], "--reps") == 0 && i + 1 < argc) reps = atoi(argv[++i]);
+        else if (strcmp(argv[i], "--threads") == 0 && i + 1 < argc) threads = atoi(argv[++i]);
+        else if (strcmp(argv[i], "--set") == 0 && i + 1 < argc) {
+            if (swr_params_set_kv(&p, argv[++i], err, sizeof err) != 0) {
+                fprintf(stderr, "swr_bench: --set: %s\n", err);
+                return 2;
+            }
+        } else if (strcmp(argv[i], "--help") == 0) {
+            puts("usage: swr_bench [--reps N] [--threads N] [--set KEY=VALUE]...  (see bench/regime.sh)");
+            return 0;
+        } else {
+            fprintf(stderr, "swr_bench: unknown option '%s'\n", argv[i]);
+            return 2;
+        }
+    }
+    if (reps < 1 || reps > 1000 || threads < 1 || threads > 64) {
+        fprintf(stderr, "swr_bench: --reps 1..1000, --threads 1..64\n");
+        return 2;
+    }
+    if (swr_params_validate(&p, err, sizeof err) != 0) { fprintf(stderr, "swr_bench: %s\n", err); return 2; }
+    swr_model *m = swr_model_alloc(&p, err, sizeof err);
+    if (!m) { fprintf(stderr, "swr_bench: %s\n", err); return 2; }
+
+    enum { ND = 46 };
+    double d[ND], vc[ND], t[1000];
+    for (int i = 0; i < ND; i++) d[i] = 10e-6 + 90e-6 * i / (ND - 1);
+    swt_vcrit_opts o;
+    swt_vcrit_opts_default(&o);
+
+    /* v_crit of 46 diameters */
+    vc_ctx c = { m, &o, d, vc };
+    for (int r = 0; r < reps; r++) {
+        double t0 = swt_now();
+        swt_parallel_for(ND, threads, vc_one, &c);
+        t[r] = swt_now() - t0;
+    }
+    double t_vcrit = median(t, reps);
+
+    /* one collision: impacts at 0.5, 0.9, 1.1, 2 v_crit for every diameter */
+    const double f[4] = { 0.5, 0.9, 1.1, 2.0 };
+    long steps = 0, ncoll = 0;
+    for (int r = 0; r < reps; r++) {
+        int n = 0;
+        double t0 = swt_now();
+        do {
+            for (int i = 0; i < ND; i++)
+                for (int k = 0; k < 4; k++) {
+                    swr_impact in = { d[i], f[k] * vc[i], 0.0, 0.0 };
+                    swr_result res;
+                    swr_collide(m, &in, &res, NULL);
+                    if (r == 0) { steps += res.steps; ncoll++; }
+                    n++;
+                }
+        } while (swt_now() - t0 < 0.05);
+        t[r] = (swt_now() - t0) / n;
+    }
+    double t_coll = median(t, reps);
+
+    /* accuracy of v_crit at this setting: against 16x finer steps, 3 diameters */
+    swr_params pf = p;
+    char txt[32];
+    snprintf(txt, sizeof txt, "%.10g", 16.0 * p.accuracy);
+    double acc_err = -1.0;
+    if (swr_params_set(&pf, "accuracy", txt, err, sizeof err) == 0) {
+        swr_model *mf = swr_model_alloc(&pf, err, sizeof err);
+        swt_vcrit_opts of = o;
+        of.rtol = 1e-7;
+        const double dd[3] = { 10e-6, 30e-6, 100e-6 };
+        for (int k = 0; mf && k < 3; k++) {
+            swt_vcrit_result a, b;
+            swt_vcrit(m, dd[k], &of, &a);
+            swt_vcrit(mf, dd[k], &of, &b);
+            if (a.status == SWT_VCRIT_FOUND && b.status == SWT_VCRIT_FOUND)
+                acc_err = fmax(acc_err, fabs(a.vcrit / b.vcrit - 1.0));
+        }
+        swr_model_free(mf);
+    }
+
+    /* the 46 x 50 map, speed range as snowregime map chooses it */
+    swt_grid g = { 46, 50, 10e-6, 100e-6, vc[ND - 1] / 1.5, 1.5 * vc[0], 1 };
+    double tg[1000], tt[1000];
+    long nstick = 0;
+    for (int r = 0; r < reps; r++) {
+        swt_map *mp = swt_map_alloc(&g, err, sizeof err);
+        if (!mp) { fprintf(stderr, "swr_bench: %s\n", err); return 1; }
+        swt_interface it;
+        double t0 = swt_now();
+        swt_map_run(mp, m, &o, threads, err, sizeof err);
+        double t1 = swt_now();
+        swt_interface_extract(mp, m, &o, 1, threads, &it, err, sizeof err);
+        tt[r] = swt_now() - t0;
+        tg[r] = t1 - t0;
+        nstick = mp->nstick;
+        swt_interface_free(&it);
+        swt_map_free(mp);
+    }
+    double t_grid = median(tg, reps), t_map = median(tt, reps);
+
+    printf("swr_bench: %d repetitions, %d threads, accuracy %g steps per contact time\n",
+           reps, threads, p.accuracy);
+    printf("collision_us %.4g\n", 1e6 * t_coll);
+    printf("collision_steps_mean %.1f\n", (double)steps / (double)ncoll);
+    printf("vcrit_rel_error_max %.3g\n", acc_err);
+    printf("vcrit46_ms %.4g\n", 1e3 * t_vcrit);
+    printf("map_grid_ms %.4g\n", 1e3 * t_grid);
+    printf("map_total_ms %.4g\n", 1e3 * t_map);
+    printf("map_sticking_points %ld\n", nstick);
+    printf("map_vrange %.4g %.4g\n", g.vmin, g.vmax);
+    swr_model_free(m);
+    return 0;
+}

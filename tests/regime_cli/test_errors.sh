@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# Bad input of every class: exit 2, one line naming the key/option and value, no files left.
+. "$(dirname "$0")/common.sh"
+printf 'gamma 0.3\nrho = abc\n' >"$WORK/bad.cfg"
+printf 'gamma 0.3\nthis line is malformed\n' >"$WORK/malformed.cfg"
+printf 'gamma 0.3\ncolour blue\n' >"$WORK/unknown.cfg"
+check() {   # expected-text args...
+    local want=$1; shift
+    local out=$WORK/out_$RANDOM
+    "$@" --out "$out" >/dev/null 2>"$WORK/err"; local rc=$?
+    [ $rc -eq 2 ] || fail "'$*': exit $rc, want 2"
+    [ "$(wc -l <"$WORK/err")" -eq 1 ] || fail "'$*': want one error line, got: $(cat "$WORK/err")"
+    grep -qF -- "$want" "$WORK/err" || fail "'$*': message does not name '$want': $(cat "$WORK/err")"
+    [ ! -e "$out" ] || fail "'$*': left $out behind"
+}
+check "foo" "$SR" map --set foo=1
+check "'1'" "$SR" map --set foo=1
+check "gamma" "$SR" map --set gamma=-0.5
+check "-0.5" "$SR" map --set gamma=-0.5
+check "nan" "$SR" map --set gamma=nan
+check "cor" "$SR" map --set cor=sticky
+check "sticky" "$SR" map --set cor=sticky
+check "abc" "$SR" map --config "$WORK/bad.cfg"
+check "bad.cfg:2" "$SR" map --config "$WORK/bad.cfg"
+check "malformed.cfg:2" "$SR" map --config "$WORK/malformed.cfg"
+check "colour" "$SR" map --config "$WORK/unknown.cfg"
+check "no/such.cfg" "$SR" map --config "$WORK/no/such.cfg"
+check "--nd: '1'" "$SR" map --nd 1
+check "--nv: 'x'" "$SR" map --nv x
+check "--dmin: '-1e-5'" "$SR" map --dmin -1e-5
+check "--degree: '9'" "$SR" map --degree 9
+check "--vmin: 'inf'" "$SR" map --vmin inf
+check "--vmax" "$SR" map --vmin 2 --vmax 1
+check "--angle: '95'" "$SR" map --angle 95
+check "unknown option '--frob'" "$SR" map --frob
+check "--set: gamma" "$SR" sensitivity --set gamma=1e9
+check "--nd: '0'" "$SR" sensitivity --nd 0
+check "--accuracy: '-3'" "$SR" convergence --accuracy -3
+check "--d: 'nan'" "$SR" convergence --d nan
+# commands without --out
+for a in "vcrit --d -2e-5|--d: '-2e-5'" "vcrit --d 1e-5,,2e-5|empty item" "vcrit --d 1e-5 --tol 0|--tol: '0'" \
+         "vcrit --d 1e-5 --set mu=-1|mu" "collide --d 1e-5 --vn -1|--vn: '-1'" "collide --vn 1|--d: missing" \
+         "collide --d 1e-5 --vn 1 --set E=abc|abc" "vcrit --d|--d: missing value"; do
+    args=${a%%|*}; want=${a#*|}
+    "$SR" $args >/dev/null 2>"$WORK/err"; rc=$?
+    [ $rc -eq 2 ] || fail "'$args': exit $rc, want 2"
+    grep -qF -- "$want" "$WORK/err" || fail "'$args': message does not name '$want': $(cat "$WORK/err")"
+done
+# a failure after the folder exists leaves the old files untouched and no temporaries
+mkdir -p "$WORK/keep" && echo old >"$WORK/keep/fit.txt"
+"$SR" map --out "$WORK/keep" --set gamma=abc >/dev/null 2>&1
+[ "$(cat "$WORK/keep/fit.txt")" = old ] || fail "existing output changed by a failed run"
+[ "$(ls -A "$WORK/keep")" = fit.txt ] || fail "failed run left files: $(ls -A "$WORK/keep")"
+# a computation failure (no interface in an explicit range) leaves nothing (exit 1)
+"$SR" map --out "$WORK/none/deep" --nd 4 --nv 4 --vmin 20 --vmax 40 --no-plot >/dev/null 2>"$WORK/err"; rc=$?
+[ $rc -eq 1 ] || fail "no-interface map: exit $rc, want 1 ($(cat "$WORK/err"))"
+[ ! -e "$WORK/none" ] || fail "no-interface map left $WORK/none behind"
+ok "error checks done"
+finish
