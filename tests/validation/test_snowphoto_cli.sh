@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# test_snowphoto_cli.sh - the snowphoto command on generated images with a known
+# overlap (IoU 2/3, Dice 0.8, precision 2/3, recall 1), its outputs and its
+# rejection of bad input (exit 2, one line naming the input, no output written).
+set -u
+exe="$SW_BUILD/validation/snowphoto"
+gen="$SW_BUILD/tests/validation/swv_testimg"
+[ -x "$exe" ] && [ -x "$gen" ] || { echo "missing $exe or $gen"; exit 1; }
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fails=0
+check() { if eval "$2"; then echo "ok   $1"; else echo "FAIL $1"; fails=$((fails+1)); fi; }
+near() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN{d=a-b; if (d<0) d=-d; exit !(d<=t)}'; }
+val() { awk -v k="$1" '$1==k {print $3}' "$2"; }
+corners=100,80,540,60,580,420,60,400
+
+"$exe" --help > "$tmp/help" ; check "--help exits 0" "[ $? = 0 ]"
+check "--help documents the threshold" "grep -q -- '--photo-threshold' '$tmp/help' && grep -q EXIT '$tmp/help'"
+
+for ext in png jpg; do
+    "$gen" "$tmp/photo.$ext" "$tmp/sim.csv" || { echo "generator failed"; exit 1; }
+    "$exe" compare --photo "$tmp/photo.$ext" --corners $corners --sim "$tmp/sim.csv" \
+        --out "$tmp/side_$ext.png" > "$tmp/out_$ext" 2> "$tmp/err_$ext"
+    check "$ext: compare exits 0" "[ $? = 0 ]"
+    cat "$tmp/out_$ext"
+    check "$ext: IoU 2/3"       "near $(val iou "$tmp/out_$ext") 0.6667 0.03"
+    check "$ext: Dice 0.8"      "near $(val dice "$tmp/out_$ext") 0.8 0.03"
+    check "$ext: precision 2/3" "near $(val precision "$tmp/out_$ext") 0.6667 0.03"
+    check "$ext: recall 1"      "near $(val recall "$tmp/out_$ext") 1 0.03"
+    check "$ext: side-by-side PNG written" "[ \"\$(head -c 4 '$tmp/side_$ext.png' | tail -c 3)\" = PNG ]"
+done
+# a threshold above the snow's brightness finds no snow in the photo: recall undefined -> 1, IoU 0
+"$exe" compare --photo "$tmp/photo.png" --corners $corners --sim "$tmp/sim.csv" \
+    --photo-threshold 0.95 > "$tmp/out_thr"
+check "photo threshold 0.95: no photo snow" "near $(val photo_snow_fraction "$tmp/out_thr") 0 1e-9 && near $(val iou "$tmp/out_thr") 0 1e-9"
+# an absolute simulation threshold above the map's maximum: no simulated snow
+"$exe" compare --photo "$tmp/photo.png" --corners $corners --sim "$tmp/sim.csv" \
+    --sim-threshold 5 > "$tmp/out_sthr"
+check "sim threshold 5 kg/m2: no simulated snow" "near $(val sim_snow_fraction "$tmp/out_sthr") 0 1e-9"
+
+# regions of the generated map: snow on the left side and in the top part only
+"$exe" regions --sim "$tmp/sim.csv" --label test > "$tmp/regions"
+cat "$tmp/regions"
+check "regions: one row" "[ \$(wc -l < '$tmp/regions') = 1 ] && grep -q '^| test |' '$tmp/regions'"
+
+# bad input: exit 2, a message naming the value, no side-by-side written
+bad() {  # bad NAME EXPECTED_TEXT args...
+    local name=$1 text=$2; shift 2
+    rm -f "$tmp/bad.png"
+    "$exe" "$@" > /dev/null 2> "$tmp/err"; local rc=$?
+    check "$name: exit 2" "[ $rc = 2 ]"
+    check "$name: message names '$text'" "grep -q -- '$text' '$tmp/err' && [ \$(wc -l < '$tmp/err') = 1 ]"
+    check "$name: no output" "[ ! -e '$tmp/bad.png' ]"
+}
+bad "no command" "missing command"
+bad "unknown command" "frobnicate" frobnicate --sim x
+bad "missing --sim" "--sim" compare --photo "$tmp/photo.png" --corners $corners --out "$tmp/bad.png"
+bad "7 corners" "100,80,540,60,580,420,60" compare --photo "$tmp/photo.png" --corners 100,80,540,60,580,420,60 --sim "$tmp/sim.csv" --out "$tmp/bad.png"
+bad "NaN threshold" "nan" compare --photo "$tmp/photo.png" --corners $corners --sim "$tmp/sim.csv" --photo-threshold nan --out "$tmp/bad.png"
+bad "negative sim threshold" "-1" compare --photo "$tmp/photo.png" --corners $corners --sim "$tmp/sim.csv" --sim-threshold -1 --out "$tmp/bad.png"
+bad "corner outside" "corner 3" compare --photo "$tmp/photo.png" --corners 100,80,540,60,900,420,60,400 --sim "$tmp/sim.csv" --out "$tmp/bad.png"
+echo "y,z,d" > "$tmp/empty.csv"
+bad "empty map" "empty.csv" compare --photo "$tmp/photo.png" --corners $corners --sim "$tmp/empty.csv" --out "$tmp/bad.png"
+printf 'y,z,d\n0,0,1\n1,0,1\n0,1,oops\n1,1,1\n' > "$tmp/malformed.csv"
+bad "malformed map" "malformed.csv:4" regions --sim "$tmp/malformed.csv"
+echo "not an image" > "$tmp/text.png"
+bad "not an image" "neither PNG nor JPEG" compare --photo "$tmp/text.png" --corners $corners --sim "$tmp/sim.csv" --out "$tmp/bad.png"
+bad "missing photo" "nothere.jpg" compare --photo "$tmp/nothere.jpg" --corners $corners --sim "$tmp/sim.csv" --out "$tmp/bad.png"
+check "no temporary files left" "[ -z \"\$(ls '$tmp' | grep tmp)\" ]"
+
+[ "$fails" = 0 ] || { echo "$fails check(s) failed"; exit 1; }
+echo "all checks passed"

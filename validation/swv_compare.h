@@ -1,0 +1,77 @@
+/* swv_compare.h - compare a photo of the wedge's rear face with the simulated
+ * deposit map.
+ *
+ * Face coordinates: u in [0, 1] from the viewer's left to right edge (seen from
+ * behind, = +y of the case), v in [0, 1] from the top edge down (-z).
+ * The photo is rectified with the homography (u, v) -> pixel given by the face's
+ * four corners (top-left, top-right, bottom-right, bottom-left in the photo).
+ * Snow in the photo: luminance >= photoThreshold (bright snow on a darker face).
+ * Snow in the simulation: deposit >= simThreshold [kg/m2] (or, when simThreshold
+ * < 0, >= simRelThreshold * the map's maximum).
+ * Both are compared on a res x res grid of the face; the photo is taken as truth:
+ *   precision = TP/(TP+FP), recall = TP/(TP+FN), IoU = TP/(TP+FP+FN),
+ *   Dice = 2TP/(2TP+FP+FN); an empty denominator gives 1 (both masks empty).
+ */
+#ifndef SWV_COMPARE_H
+#define SWV_COMPARE_H
+#include <stddef.h>
+#include "swv_image.h"
+
+/* Simulated map on a regular grid of face centres. */
+typedef struct swv_simmap {
+    int ny, nz;             /* faces along y (left -> right) and z (bottom -> top) */
+    double y0, y1, z0, z1;  /* the face extent [m] (outline, from centres and spacing) */
+    double *val;            /* ny*nz values [kg/m2], index iy + ny*iz, iz = 0 at the bottom */
+    double vmax;
+} swv_simmap;
+
+/* Read the CSV written by tutorials/wedge/post/wedge-post: a header line, then
+ * "y,z,value" per face; the centres must form a full regular grid. */
+int swv_simmap_read(const char *path, swv_simmap **out, char *err, size_t errlen);
+void swv_simmap_free(swv_simmap *m);
+/* Value at face coordinates (u, v) (nearest face). */
+double swv_simmap_at(const swv_simmap *m, double u, double v);
+
+typedef struct swv_config {
+    double corners[4][2];   /* pixel (x, y): top-left, top-right, bottom-right, bottom-left */
+    double photoThreshold;  /* luminance in [0, 1], default 0.5 */
+    double simThreshold;    /* kg/m2; < 0: use simRelThreshold (default -1) */
+    double simRelThreshold; /* fraction of the map's maximum, default 0.1 */
+    int res;                /* comparison grid res x res, default 200 */
+} swv_config;
+
+void swv_config_defaults(swv_config *c);
+
+typedef struct swv_metrics {
+    long tp, fp, fn, tn;
+    double iou, dice, precision, recall;
+    double photoSnowFraction, simSnowFraction;  /* of the face area */
+    double simThresholdUsed;                    /* kg/m2 */
+} swv_metrics;
+
+/* Rectify, segment, compare. When side is non-NULL, *side receives a new image:
+ * rectified photo | simulated map | overlay (white TP, red FP = simulated only,
+ * blue FN = photo only), each res x res. */
+int swv_compare_run(const swv_config *c, const swv_image *photo, const swv_simmap *sim,
+                    swv_metrics *m, swv_image **side, char *err, size_t errlen);
+
+/* Metrics from counts (exposed for tests). */
+void swv_metrics_from_counts(swv_metrics *m);
+
+/* Regions of the rear face (face coordinates, edge band width `band` = 0.1):
+ * edges: the border band; left side: u in [band, 0.35), right side: u in (0.65, 1-band];
+ * centre: u in [0.35, 0.65] x v in [0.3, 0.7]; the sides span v in [band, 1-band].
+ * For each region: mean deposit and the fraction of its faces at or above the
+ * threshold; it "holds snow" when that fraction >= holdFraction. */
+enum { SWV_REGION_LEFT, SWV_REGION_RIGHT, SWV_REGION_CENTRE, SWV_REGION_EDGES, SWV_NREGIONS };
+typedef struct swv_region_stats {
+    int nfaces[SWV_NREGIONS];
+    double mean[SWV_NREGIONS];      /* kg/m2 */
+    double covered[SWV_NREGIONS];   /* fraction of faces >= threshold */
+    int holds[SWV_NREGIONS];
+} swv_region_stats;
+const char *swv_region_name(int r);
+int swv_regions(const swv_simmap *sim, double threshold, double band, double holdFraction,
+                swv_region_stats *s, char *err, size_t errlen);
+
+#endif

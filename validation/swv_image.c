@@ -1,0 +1,259 @@
+/* swv_image.c - PNG (libpng simplified API) and JPEG (libjpeg) reading/writing. */
+#include "swv_image.h"
+
+#include <errno.h>
+#include <stdio.h>      /* before jpeglib.h, which uses FILE */
+#include <jpeglib.h>
+#include <png.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+static int fail(char *err, size_t errlen, int code, const char *fmt, ...)
+{
+    if (err && errlen) {
+        va_list ap;
+        va_start(ap, fmt);
+        vsnprintf(err, errlen, fmt, ap);
+        va_end(ap);
+    }
+    return code;
+}
+
+swv_image *swv_image_alloc(int width, int height)
+{
+    if (width < 1 || height < 1 || width > 100000 || height > 100000)
+        return NULL;
+    swv_image *img = malloc(sizeof *img);
+    if (!img)
+        return NULL;
+    img->width = width;
+    img->height = height;
+    img->rgb = calloc((size_t)width * (size_t)height * 3u, 1);
+    if (!img->rgb) {
+        free(img);
+        return NULL;
+    }
+    return img;
+}
+
+void swv_image_free(swv_image *img)
+{
+    if (!img)
+        return;
+    free(img->rgb);
+    free(img);
+}
+
+static int read_png(const char *path, swv_image **out, char *err, size_t errlen)
+{
+    png_image pi;
+    memset(&pi, 0, sizeof pi);
+    pi.version = PNG_IMAGE_VERSION;
+    if (!png_image_begin_read_from_file(&pi, path))
+        return fail(err, errlen, 2, "%s: not a readable PNG (%s)", path, pi.message);
+    pi.format = PNG_FORMAT_RGB;
+    swv_image *img = swv_image_alloc((int)pi.width, (int)pi.height);
+    if (!img) {
+        png_image_free(&pi);
+        return fail(err, errlen, 2, "%s: bad PNG size %ux%u", path, pi.width, pi.height);
+    }
+    if (!png_image_finish_read(&pi, NULL, img->rgb, 0, NULL)) {
+        swv_image_free(img);
+        return fail(err, errlen, 2, "%s: PNG decoding failed (%s)", path, pi.message);
+    }
+    *out = img;
+    return 0;
+}
+
+struct jerr {
+    struct jpeg_error_mgr pub;
+    jmp_buf jb;
+    char msg[JMSG_LENGTH_MAX];
+};
+
+static void jerr_exit(j_common_ptr cinfo)
+{
+    struct jerr *je = (struct jerr *)cinfo->err;
+    (*cinfo->err->format_message)(cinfo, je->msg);
+    longjmp(je->jb, 1);
+}
+
+static int read_jpeg(const char *path, swv_image **out, char *err, size_t errlen)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return fail(err, errlen, 2, "%s: cannot open (%s)", path, strerror(errno));
+    struct jpeg_decompress_struct ci;
+    struct jerr je;
+    swv_image *volatile img = NULL;
+    ci.err = jpeg_std_error(&je.pub);
+    je.pub.error_exit = jerr_exit;
+    if (setjmp(je.jb)) {
+        jpeg_destroy_decompress(&ci);
+        fclose(f);
+        swv_image_free(img);
+        return fail(err, errlen, 2, "%s: JPEG decoding failed (%s)", path, je.msg);
+    }
+    jpeg_create_decompress(&ci);
+    jpeg_stdio_src(&ci, f);
+    jpeg_read_header(&ci, TRUE);
+    ci.out_color_space = JCS_RGB;
+    jpeg_start_decompress(&ci);
+    if (ci.output_components != 3) {
+        jpeg_destroy_decompress(&ci);
+        fclose(f);
+        return fail(err, errlen, 2, "%s: JPEG with %d components, expected RGB", path,
+                    ci.output_components);
+    }
+    img = swv_image_alloc((int)ci.output_width, (int)ci.output_height);
+    if (!img) {
+        jpeg_destroy_decompress(&ci);
+        fclose(f);
+        return fail(err, errlen, 2, "%s: bad JPEG size %ux%u", path, ci.output_width,
+                    ci.output_height);
+    }
+    while (ci.output_scanline < ci.output_height) {
+        JSAMPROW row = img->rgb + (size_t)ci.output_scanline * (size_t)img->width * 3u;
+        jpeg_read_scanlines(&ci, &row, 1);
+    }
+    jpeg_finish_decompress(&ci);
+    jpeg_destroy_decompress(&ci);
+    fclose(f);
+    *out = img;
+    return 0;
+}
+
+int swv_image_read(const char *path, swv_image **out, char *err, size_t errlen)
+{
+    *out = NULL;
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return fail(err, errlen, 2, "%s: cannot open (%s)", path, strerror(errno));
+    unsigned char magic[8] = {0};
+    size_t n = fread(magic, 1, sizeof magic, f);
+    fclose(f);
+    static const unsigned char png_sig[8] = {0x89, 'P', 'N', 'G', 0x0d, 0x0a, 0x1a, 0x0a};
+    if (n == 8 && memcmp(magic, png_sig, 8) == 0)
+        return read_png(path, out, err, errlen);
+    if (n >= 3 && magic[0] == 0xff && magic[1] == 0xd8 && magic[2] == 0xff)
+        return read_jpeg(path, out, err, errlen);
+    return fail(err, errlen, 2, "%s: neither PNG nor JPEG (unknown file signature)", path);
+}
+
+/* temp file next to path; returns an open FILE and fills tmp */
+static FILE *open_temp(const char *path, char *tmp, size_t tmplen, char *err, size_t errlen)
+{
+    if ((size_t)snprintf(tmp, tmplen, "%s.tmpXXXXXX", path) >= tmplen) {
+        fail(err, errlen, 2, "%s: path too long", path);
+        return NULL;
+    }
+    int fd = mkstemp(tmp);
+    if (fd < 0) {
+        fail(err, errlen, 1, "%s: cannot create a temporary file (%s)", path, strerror(errno));
+        return NULL;
+    }
+    FILE *f = fdopen(fd, "wb");
+    if (!f) {
+        close(fd);
+        unlink(tmp);
+        fail(err, errlen, 1, "%s: fdopen failed (%s)", path, strerror(errno));
+    }
+    return f;
+}
+
+static int finish_temp(FILE *f, const char *tmp, const char *path, char *err, size_t errlen)
+{
+    int bad = ferror(f);
+    if (fclose(f) != 0 || bad) {
+        unlink(tmp);
+        return fail(err, errlen, 1, "%s: write failed", path);
+    }
+    if (rename(tmp, path) != 0) {
+        int e = errno;
+        unlink(tmp);
+        return fail(err, errlen, 1, "%s: rename failed (%s)", path, strerror(e));
+    }
+    return 0;
+}
+
+int swv_image_write_png(const char *path, const swv_image *img, char *err, size_t errlen)
+{
+    char tmp[4096];
+    FILE *f = open_temp(path, tmp, sizeof tmp, err, errlen);
+    if (!f)
+        return 1;
+    png_image pi;
+    memset(&pi, 0, sizeof pi);
+    pi.version = PNG_IMAGE_VERSION;
+    pi.width = (png_uint_32)img->width;
+    pi.height = (png_uint_32)img->height;
+    pi.format = PNG_FORMAT_RGB;
+    if (!png_image_write_to_stdio(&pi, f, 0, img->rgb, 0, NULL)) {
+        fclose(f);
+        unlink(tmp);
+        return fail(err, errlen, 1, "%s: PNG encoding failed (%s)", path, pi.message);
+    }
+    return finish_temp(f, tmp, path, err, errlen);
+}
+
+int swv_image_write_jpeg(const char *path, const swv_image *img, int quality, char *err,
+                         size_t errlen)
+{
+    if (quality < 1 || quality > 100)
+        return fail(err, errlen, 2, "JPEG quality %d outside 1..100", quality);
+    char tmp[4096];
+    FILE *f = open_temp(path, tmp, sizeof tmp, err, errlen);
+    if (!f)
+        return 1;
+    struct jpeg_compress_struct ci;
+    struct jerr je;
+    ci.err = jpeg_std_error(&je.pub);
+    je.pub.error_exit = jerr_exit;
+    if (setjmp(je.jb)) {
+        jpeg_destroy_compress(&ci);
+        fclose(f);
+        unlink(tmp);
+        return fail(err, errlen, 1, "%s: JPEG encoding failed (%s)", path, je.msg);
+    }
+    jpeg_create_compress(&ci);
+    jpeg_stdio_dest(&ci, f);
+    ci.image_width = (JDIMENSION)img->width;
+    ci.image_height = (JDIMENSION)img->height;
+    ci.input_components = 3;
+    ci.in_color_space = JCS_RGB;
+    jpeg_set_defaults(&ci);
+    jpeg_set_quality(&ci, quality, TRUE);
+    jpeg_start_compress(&ci, TRUE);
+    while (ci.next_scanline < ci.image_height) {
+        JSAMPROW row = img->rgb + (size_t)ci.next_scanline * (size_t)img->width * 3u;
+        jpeg_write_scanlines(&ci, &row, 1);
+    }
+    jpeg_finish_compress(&ci);
+    jpeg_destroy_compress(&ci);
+    return finish_temp(f, tmp, path, err, errlen);
+}
+
+static double luma_px(const swv_image *img, int x, int y)
+{
+    const unsigned char *p = img->rgb + ((size_t)y * (size_t)img->width + (size_t)x) * 3u;
+    return (0.299 * p[0] + 0.587 * p[1] + 0.114 * p[2]) / 255.0;
+}
+
+double swv_image_luma(const swv_image *img, double x, double y)
+{
+    /* pixel i covers [i, i+1): centre at i + 0.5 */
+    double fx = x - 0.5, fy = y - 0.5;
+    if (!(fx > 0)) fx = 0;
+    if (!(fy > 0)) fy = 0;
+    if (fx > img->width - 1) fx = img->width - 1;
+    if (fy > img->height - 1) fy = img->height - 1;
+    int x0 = (int)fx, y0 = (int)fy;
+    int x1 = x0 + 1 < img->width ? x0 + 1 : x0;
+    int y1 = y0 + 1 < img->height ? y0 + 1 : y0;
+    double ax = fx - x0, ay = fy - y0;
+    return (1 - ay) * ((1 - ax) * luma_px(img, x0, y0) + ax * luma_px(img, x1, y0)) +
+           ay * ((1 - ax) * luma_px(img, x0, y1) + ax * luma_px(img, x1, y1));
+}

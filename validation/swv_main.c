@@ -1,0 +1,258 @@
+/* swv_main.c - snowphoto: compare a photo of the wedge's rear face with the
+ * simulated deposit map; list which rear-face regions hold snow. */
+#include "swv_compare.h"
+#include "swv_image.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char *usage =
+"NAME\n"
+"    snowphoto - compare a photo of the wedge's rear face with the simulated snow map\n"
+"\n"
+"SYNOPSIS\n"
+"    snowphoto compare --photo FILE --corners X1,Y1,X2,Y2,X3,Y3,X4,Y4 --sim CSV\n"
+"                      [--photo-threshold L] [--sim-threshold KG_M2 | --sim-rel-threshold F]\n"
+"                      [--res N] [--out PNG]\n"
+"    snowphoto regions --sim CSV [--sim-threshold KG_M2 | --sim-rel-threshold F]\n"
+"                      [--band B] [--hold F] [--label TEXT]\n"
+"    snowphoto --help\n"
+"\n"
+"DESCRIPTION\n"
+"    compare rectifies the photo (PNG or JPEG, detected from the file's contents) to\n"
+"    the rear face: the four corners are the pixel positions (x right, y down, origin\n"
+"    at the image's top-left corner) of the face's top-left, top-right, bottom-right\n"
+"    and bottom-left corners as seen from behind. A homography (8x8 linear system,\n"
+"    GSL LU) maps face coordinates (u right, v down, both 0..1) to pixels. Snow in the\n"
+"    photo is every point whose luminance (Rec. 601, 0 = black, 1 = white) is >= L:\n"
+"    bright snow on a darker face; choose L between the face's and the snow's\n"
+"    brightness. Snow in the simulation is every face whose deposit is >= the\n"
+"    simulation threshold. Both masks are sampled on an N x N grid of the face and\n"
+"    compared with the photo as the truth:\n"
+"        precision = TP/(TP+FP)  recall = TP/(TP+FN)  IoU = TP/(TP+FP+FN)\n"
+"        Dice = 2TP/(2TP+FP+FN)  (an empty denominator counts as 1)\n"
+"    The result goes to standard output as 'key = value' lines.\n"
+"\n"
+"    regions reports, for the four regions of the rear face used to describe the\n"
+"    wind-tunnel photos, the mean deposit, the fraction of faces >= the threshold\n"
+"    and whether the region holds snow (fraction >= F of --hold). Regions (face\n"
+"    coordinates): edges = the border band of width B; left side u in [B, 0.35);\n"
+"    right side u in (0.65, 1-B]; centre u in [0.35, 0.65] x v in [0.3, 0.7]; the\n"
+"    sides span v in [B, 1-B]. One markdown table row per region.\n"
+"\n"
+"    CSV is the rear-face map written by tutorials/wedge/post/wedge-post\n"
+"    (results/<gate>/rear_deposit.csv): a header line, then 'y,z,deposit_kg_m2' per\n"
+"    face; y grows to the viewer's right, z upwards; the faces form a regular grid.\n"
+"\n"
+"OPTIONS\n"
+"    --photo FILE            photo of the rear face, PNG or JPEG\n"
+"    --corners LIST          8 numbers: x,y of top-left, top-right, bottom-right,\n"
+"                            bottom-left (pixels); each inside the image\n"
+"    --sim CSV               simulated rear-face map\n"
+"    --photo-threshold L     luminance threshold in [0, 1] (default 0.5)\n"
+"    --sim-threshold T       deposit threshold [kg/m2], >= 0\n"
+"    --sim-rel-threshold F   threshold as a fraction of the map's maximum, in (0, 1]\n"
+"                            (default 0.1; used unless --sim-threshold is given)\n"
+"    --res N                 comparison grid N x N, 2..4000 (default 200)\n"
+"    --out PNG               side-by-side image: rectified photo | simulated map\n"
+"                            (white -> dark blue = 0 -> max) | overlay (white both,\n"
+"                            red simulation only, blue photo only, grey neither)\n"
+"    --band B                edge band width for regions, in (0, 0.3) (default 0.1)\n"
+"    --hold F                covered fraction for 'holds snow', in (0, 1] (default 0.3)\n"
+"    --label TEXT            first column of the regions rows (default: the CSV path)\n"
+"    -h, --help              this text\n"
+"\n"
+"EXIT STATUS\n"
+"    0 success, 2 usage or input error (one line on standard error naming the\n"
+"    input and value), 1 other failure (memory, writing the output).\n"
+"\n"
+"EXAMPLE\n"
+"    snowphoto compare --photo rear.jpg --corners 412,188,1630,204,1611,1402,398,1380 \\\n"
+"        --sim tutorials/wedge/results/tangential/rear_deposit.csv \\\n"
+"        --photo-threshold 0.6 --out compare.png\n";
+
+static int parse_double(const char *opt, const char *s, double *out)
+{
+    char *end;
+    errno = 0;
+    double v = strtod(s, &end);
+    if (end == s || *end != '\0' || errno || !isfinite(v)) {
+        fprintf(stderr, "snowphoto: %s: '%s' is not a finite number\n", opt, s);
+        return 2;
+    }
+    *out = v;
+    return 0;
+}
+
+static int parse_corners(const char *s, double c[4][2])
+{
+    const char *p = s;
+    for (int k = 0; k < 8; k++) {
+        char *end;
+        errno = 0;
+        double v = strtod(p, &end);
+        if (end == p || errno || !isfinite(v) || (k < 7 && *end != ',') || (k == 7 && *end != '\0')) {
+            fprintf(stderr, "snowphoto: --corners: '%s' is not 8 comma-separated finite numbers\n", s);
+            return 2;
+        }
+        c[k / 2][k % 2] = v;
+        p = end + 1;
+    }
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        fprintf(stderr, "snowphoto: missing command (compare or regions); see snowphoto --help\n");
+        return 2;
+    }
+    if (!strcmp(argv[1], "-h") || !strcmp(argv[1], "--help")) {
+        fputs(usage, stdout);
+        return 0;
+    }
+    const char *cmd = argv[1];
+    int is_compare = !strcmp(cmd, "compare"), is_regions = !strcmp(cmd, "regions");
+    if (!is_compare && !is_regions) {
+        fprintf(stderr, "snowphoto: unknown command '%s' (compare or regions); see snowphoto --help\n", cmd);
+        return 2;
+    }
+    swv_config cfg;
+    swv_config_defaults(&cfg);
+    const char *photo_path = NULL, *sim_path = NULL, *out_path = NULL, *label = NULL;
+    int have_corners = 0;
+    double band = 0.1, hold = 0.3;
+    for (int i = 2; i < argc; i++) {
+        const char *o = argv[i];
+        if (!strcmp(o, "-h") || !strcmp(o, "--help")) {
+            fputs(usage, stdout);
+            return 0;
+        }
+        if (i + 1 >= argc) {
+            fprintf(stderr, "snowphoto: option '%s' unknown or missing its value; see snowphoto --help\n", o);
+            return 2;
+        }
+        const char *a = argv[++i];
+        double d;
+        if (!strcmp(o, "--photo") && is_compare) photo_path = a;
+        else if (!strcmp(o, "--sim")) sim_path = a;
+        else if (!strcmp(o, "--out") && is_compare) out_path = a;
+        else if (!strcmp(o, "--label") && is_regions) label = a;
+        else if (!strcmp(o, "--corners") && is_compare) {
+            if (parse_corners(a, cfg.corners)) return 2;
+            have_corners = 1;
+        } else if (!strcmp(o, "--photo-threshold") && is_compare) {
+            if (parse_double(o, a, &d)) return 2;
+            if (d < 0 || d > 1) {
+                fprintf(stderr, "snowphoto: --photo-threshold %s outside [0, 1]\n", a);
+                return 2;
+            }
+            cfg.photoThreshold = d;
+        } else if (!strcmp(o, "--sim-threshold")) {
+            if (parse_double(o, a, &d)) return 2;
+            if (d < 0) {
+                fprintf(stderr, "snowphoto: --sim-threshold %s is negative\n", a);
+                return 2;
+            }
+            cfg.simThreshold = d;
+        } else if (!strcmp(o, "--sim-rel-threshold")) {
+            if (parse_double(o, a, &d)) return 2;
+            if (!(d > 0 && d <= 1)) {
+                fprintf(stderr, "snowphoto: --sim-rel-threshold %s outside (0, 1]\n", a);
+                return 2;
+            }
+            cfg.simRelThreshold = d;
+        } else if (!strcmp(o, "--res") && is_compare) {
+            if (parse_double(o, a, &d)) return 2;
+            if (d != floor(d) || d < 2 || d > 4000) {
+                fprintf(stderr, "snowphoto: --res %s is not an integer in 2..4000\n", a);
+                return 2;
+            }
+            cfg.res = (int)d;
+        } else if (!strcmp(o, "--band") && is_regions) {
+            if (parse_double(o, a, &d)) return 2;
+            if (!(d > 0 && d < 0.3)) {
+                fprintf(stderr, "snowphoto: --band %s outside (0, 0.3)\n", a);
+                return 2;
+            }
+            band = d;
+        } else if (!strcmp(o, "--hold") && is_regions) {
+            if (parse_double(o, a, &d)) return 2;
+            if (!(d > 0 && d <= 1)) {
+                fprintf(stderr, "snowphoto: --hold %s outside (0, 1]\n", a);
+                return 2;
+            }
+            hold = d;
+        } else {
+            fprintf(stderr, "snowphoto %s: unknown option '%s'; see snowphoto --help\n", cmd, o);
+            return 2;
+        }
+    }
+    if (!sim_path) {
+        fprintf(stderr, "snowphoto %s: --sim CSV is required\n", cmd);
+        return 2;
+    }
+    if (is_compare && (!photo_path || !have_corners)) {
+        fprintf(stderr, "snowphoto compare: --photo and --corners are required\n");
+        return 2;
+    }
+    char err[1024] = "";
+    swv_simmap *sim = NULL;
+    int rc = swv_simmap_read(sim_path, &sim, err, sizeof err);
+    if (rc) {
+        fprintf(stderr, "snowphoto: %s\n", err);
+        return rc;
+    }
+    if (is_regions) {
+        double thr = cfg.simThreshold >= 0 ? cfg.simThreshold : cfg.simRelThreshold * sim->vmax;
+        swv_region_stats st;
+        rc = swv_regions(sim, thr, band, hold, &st, err, sizeof err);
+        if (rc) {
+            fprintf(stderr, "snowphoto: %s: %s\n", sim_path, err);
+            swv_simmap_free(sim);
+            return rc;
+        }
+        printf("| %s |", label ? label : sim_path);
+        for (int r = 0; r < SWV_NREGIONS; r++)
+            printf(" %s (%.0f %%, %.3g kg/m2) |", st.holds[r] ? "**snow**" : "no", 100 * st.covered[r], st.mean[r]);
+        printf(" %.3g |\n", thr);
+        swv_simmap_free(sim);
+        return 0;
+    }
+    swv_image *photo = NULL;
+    rc = swv_image_read(photo_path, &photo, err, sizeof err);
+    if (rc) {
+        fprintf(stderr, "snowphoto: %s\n", err);
+        swv_simmap_free(sim);
+        return rc;
+    }
+    swv_metrics m;
+    swv_image *side = NULL;
+    rc = swv_compare_run(&cfg, photo, sim, &m, out_path ? &side : NULL, err, sizeof err);
+    if (rc) {
+        fprintf(stderr, "snowphoto: %s: %s\n", photo_path, err);
+    } else {
+        if (out_path) {
+            rc = swv_image_write_png(out_path, side, err, sizeof err);
+            if (rc) fprintf(stderr, "snowphoto: %s\n", err);
+        }
+        if (!rc) {
+            printf("photo = %s\nsim = %s\n", photo_path, sim_path);
+            printf("photo_threshold = %g\nsim_threshold_kg_m2 = %.6g\nres = %d\n", cfg.photoThreshold,
+                   m.simThresholdUsed, cfg.res);
+            printf("photo_snow_fraction = %.4f\nsim_snow_fraction = %.4f\n", m.photoSnowFraction,
+                   m.simSnowFraction);
+            printf("tp = %ld\nfp = %ld\nfn = %ld\ntn = %ld\n", m.tp, m.fp, m.fn, m.tn);
+            printf("iou = %.4f\ndice = %.4f\nprecision = %.4f\nrecall = %.4f\n", m.iou, m.dice,
+                   m.precision, m.recall);
+            if (out_path) printf("side_by_side = %s\n", out_path);
+        }
+    }
+    swv_image_free(side);
+    swv_image_free(photo);
+    swv_simmap_free(sim);
+    return rc;
+}
