@@ -1,0 +1,43 @@
+# common.sh - sourced by the OpenFOAM tests of tests/openfoam.
+# Skips (exit 77) when OpenFOAM v1912 or the built libsnowWallInteraction.so is absent;
+# sources etc/openfoam-env.sh; makes a temp folder $tmp (removed at exit).
+top=${SW_TOP:-$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)}
+lib="$top/platforms/lib/libsnowWallInteraction.so"
+if [ ! -x /usr/bin/icoUncoupledKinematicParcelFoam ]; then
+    echo "SKIP: OpenFOAM (icoUncoupledKinematicParcelFoam) not installed"; exit 77
+fi
+if [ ! -f "$lib" ]; then
+    echo "SKIP: $lib not built (run ./Allwmake)"; exit 77
+fi
+# shellcheck source=../../etc/openfoam-env.sh
+. "$top/etc/openfoam-env.sh"
+export FOAM_USER_LIBBIN="$top/platforms/lib"
+tmp=$(mktemp -d /tmp/sw-openfoam-XXXXXX)
+trap 'rm -rf "$tmp"' EXIT
+fixture="$top/tests/wallmodel/fixtures/regime.coeffs"
+
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+# run LOG CMD... : run in the current folder, log to LOG, fail with the log tail
+run() {
+    local log=$1; shift
+    if ! "$@" > "$log" 2>&1; then
+        tail -25 "$log" >&2
+        fail "$* (see above)"
+    fi
+}
+
+# series CASE START: the last data line of the snowWall time series
+series_last() { tail -n 1 "$1/postProcessing/kinematicCloud:snowWall/$2/snowWall.dat"; }
+
+# deposit_values FIELDFILE PATCH: the face values of PATCH, one per line
+deposit_values() {
+    awk -v p="$2" '
+        $1 == p && !inb { inb = 1; next }
+        inb && /uniform/ && !/nonuniform/ { v = $0; sub(/.*uniform */, "", v); sub(/;.*/, "", v); print "uniform " v; exit }
+        inb && /nonuniform/ { inl = 1; next }
+        inl && /^\(/ { on = 1; next }
+        inl && /^\)/ { exit }
+        on { print $1 }
+    ' "$1"
+}

@@ -1,0 +1,115 @@
+#!/usr/bin/env bash
+# test_box.sh - snowWallInteraction on the tiny box case (tests/openfoam/box):
+# seven force-free parcels whose fates follow from the fixture regime map, the
+# tangential gate and the adhesion shear gate (see box/constant/kinematicCloudProperties).
+# Checked: serial totals and deposit, decomposePar + mpirun -np 2 (same totals,
+# same deposit), restart from t = 0.05 (same final totals and deposit), and the
+# FatalErrors for a missing wallShearStress field, a missing rhoAir and a bad regime key.
+set -euo pipefail
+# shellcheck source=common.sh
+. "$(dirname "$0")/common.sh"
+
+# expected: 7 impacts, 3 sticks, 3 bounces, 1 ripoff; 3 parcels of 10 um ice stick
+want_counts="7 3 3 1"
+want_mass=$(awk 'BEGIN { printf "%.12g", 3 * 920 * atan2(0, -1) / 6 * 1e-15 }')
+face_area=6.25e-04   # (0.1 m / 4)^2
+
+prep() {
+    cp -r "$top/tests/openfoam/box" "$1"
+    cp "$fixture" "$1/constant/regime.coeffs"
+    (cd "$1" && run log.blockMesh blockMesh)
+}
+
+check_series() { # CASE START: last series line at t 0.1 with the expected totals
+    local line; line=$(series_last "$1" "$2")
+    set -- $line
+    [ "$1" = 0.1 ] || fail "series ends at t=$1, not 0.1: $line"
+    [ "$2 $3 $4 $5" = "$want_counts" ] || fail "totals '$2 $3 $4 $5' != '$want_counts' ($line)"
+    awk -v m="$6" -v w="$want_mass" 'BEGIN { exit !(m > 0 && (m - w) ^ 2 < (1e-9 * w) ^ 2) }' \
+        || fail "deposited mass $6 != $want_mass"
+}
+
+deposit_sum() { # FIELDFILE -> sum(value * area) over the wall patch
+    deposit_values "$1" wall | awk -v a="$face_area" '{ s += $1 * a } END { printf "%.12g", s }'
+}
+
+check_deposit() { # CASE: deposit at 0.1 sums to the expected mass
+    local f="$1/0.1/kinematicCloud:snowDeposit" s
+    [ -f "$f" ] || fail "no deposit field $f"
+    s=$(deposit_sum "$f")
+    awk -v m="$s" -v w="$want_mass" 'BEGIN { exit !((m - w) ^ 2 < (1e-9 * w) ^ 2) }' \
+        || fail "deposit field sums to $s kg, expected $want_mass"
+}
+
+# 1. serial
+prep "$tmp/serial"
+(cd "$tmp/serial" && run log.run icoUncoupledKinematicParcelFoam)
+check_series "$tmp/serial" 0
+check_deposit "$tmp/serial"
+grep -q "snowWall: patch wall: impacts 7, sticks 3, bounces 3, ripoffs 1" "$tmp/serial/log.run" \
+    || fail "no per-patch summary in the log"
+head -n 1 "$tmp/serial/postProcessing/kinematicCloud:snowWall/0/snowWall.dat" \
+    | grep -q '^# time wall:impacts wall:sticks wall:bounces wall:ripoffs wall:depositedMass\[kg\]$' \
+    || fail "time series header"
+# stuck parcels left the tracking: 7 injected - 3 stuck - escaped ones remain
+n_end=$(grep "Current number of parcels" "$tmp/serial/log.run" | tail -1 | awk '{ print $NF }')
+n_esc=$(grep -A1 "Parcel fate: system" "$tmp/serial/log.run" | tail -1 | awk '{ print $4 }' | tr -d ,)
+[ -n "$n_esc" ] && [ "$n_end" = "$((7 - 3 - n_esc))" ] || fail "parcels left: $n_end (escaped $n_esc), stuck ones not removed?"
+echo "serial: ok ($(series_last "$tmp/serial" 0))"
+
+# 1b. stuckParcels keep: same fates, the stuck parcels stay in the cloud (inactive)
+prep "$tmp/keep"
+foamDictionary -entry subModels/snowWallInteractionCoeffs/stuckParcels -set keep \
+    "$tmp/keep/constant/kinematicCloudProperties" > /dev/null
+(cd "$tmp/keep" && run log.run icoUncoupledKinematicParcelFoam)
+check_series "$tmp/keep" 0
+n_keep=$(grep "Current number of parcels" "$tmp/keep/log.run" | tail -1 | awk '{ print $NF }')
+[ "$n_keep" = "$((7 - n_esc))" ] || fail "stuckParcels keep: $n_keep parcels left, expected $((7 - n_esc))"
+echo "keep: ok ($n_keep parcels left)"
+
+# 2. decomposePar + mpirun -np 2 + reconstructPar
+prep "$tmp/par"
+(cd "$tmp/par" && run log.decomposePar decomposePar \
+    && run log.run mpirun -np 2 --oversubscribe icoUncoupledKinematicParcelFoam -parallel \
+    && run log.reconstructPar reconstructPar)
+check_series "$tmp/par" 0
+check_deposit "$tmp/par"
+diff <(deposit_values "$tmp/serial/0.1/kinematicCloud:snowDeposit" wall) \
+     <(deposit_values "$tmp/par/0.1/kinematicCloud:snowDeposit" wall) > /dev/null \
+    || fail "parallel deposit field differs from the serial one"
+echo "parallel: ok ($(series_last "$tmp/par" 0))"
+
+# 3. restart: stop at 0.05 (2 sticks so far), continue to 0.1
+prep "$tmp/restart"
+(cd "$tmp/restart" && foamDictionary -entry endTime -set 0.05 system/controlDict > /dev/null \
+    && run log.run1 icoUncoupledKinematicParcelFoam)
+[ "$(series_last "$tmp/restart" 0 | cut -d' ' -f1-5)" = "0.05 4 2 2 0" ] \
+    || fail "first half: $(series_last "$tmp/restart" 0)"
+(cd "$tmp/restart" && foamDictionary -entry endTime -set 0.1 system/controlDict > /dev/null \
+    && run log.run2 icoUncoupledKinematicParcelFoam)
+check_series "$tmp/restart" 0.05
+check_deposit "$tmp/restart"
+diff <(deposit_values "$tmp/serial/0.1/kinematicCloud:snowDeposit" wall) \
+     <(deposit_values "$tmp/restart/0.1/kinematicCloud:snowDeposit" wall) > /dev/null \
+    || fail "restarted deposit field differs from the uninterrupted one"
+echo "restart: ok ($(series_last "$tmp/restart" 0.05))"
+
+# 4. errors: each must stop the solver with a message naming what to fix
+expect_fatal() { # CASE PATTERN
+    if (cd "$1" && icoUncoupledKinematicParcelFoam > log.run 2>&1); then
+        fail "$1: solver succeeded, expected a FatalError"
+    fi
+    grep -q "$2" "$1/log.run" || { tail -20 "$1/log.run" >&2; fail "$1: no '$2' in the error"; }
+}
+prep "$tmp/noTau"
+foamDictionary -entry functions -remove "$tmp/noTau/system/controlDict" > /dev/null
+expect_fatal "$tmp/noTau" "the shear gate is on but the field 'wallShearStress' does not exist"
+prep "$tmp/noRho"
+foamDictionary -entry subModels/snowWallInteractionCoeffs/shearGate/rhoAir -remove \
+    "$tmp/noRho/constant/kinematicCloudProperties" > /dev/null
+expect_fatal "$tmp/noRho" "is kinematic \[m2/s2\] (incompressible solver): add rhoAir"
+prep "$tmp/badRegime"
+sed -i 's/^\( *vnMin *\)0.2;/\1 9;/' "$tmp/badRegime/constant/regime.coeffs"
+expect_fatal "$tmp/badRegime" "key 'vnMin': value 9 is not below vnMax 6"
+echo "errors: ok"
+echo "PASS"

@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# test_stock.sh - Debian's stock Lagrangian example IO/fileHandler (a hopper,
+# icoUncoupledKinematicParcelFoam), changed only by the lines doc/wallmodel.md
+# documents (libs in controlDict; patchInteractionModel snowWallInteraction and its
+# coefficients with #include "regime.coeffs"), runs with the model: the solver
+# ends normally, the deposit field and the time series are written.
+# (The case writes once and stops, stopAt writeNow; its 6 mm parcels meet the walls
+# through the pairCollision wall model, so no parcel centre reaches a wall face.)
+set -euo pipefail
+# shellcheck source=common.sh
+. "$(dirname "$0")/common.sh"
+stock=/usr/share/doc/openfoam-examples/examples/IO/fileHandler
+[ -d "$stock" ] || { echo "SKIP: $stock not installed (openfoam-examples)"; exit 77; }
+
+c="$tmp/fileHandler"
+cp -r "$stock" "$c"
+find "$c" -name '*.gz' -exec gunzip {} +
+# the documented lines
+cp "$fixture" "$c/constant/regime.coeffs"
+sed -i 's/^application .*/&\nlibs ("libsnowWallInteraction.so");/' "$c/system/controlDict"
+sed -i 's/^\( *\)patchInteractionModel none;/\1patchInteractionModel snowWallInteraction;\
+\1snowWallInteractionCoeffs\
+\1{\
+\1    #include "regime.coeffs"\
+\1    patches ( "(walls|frontAndBack)" { type snow; } ".*" { type escape; } );\
+\1}/' "$c/constant/kinematicCloudProperties"
+grep -q 'patchInteractionModel snowWallInteraction;' "$c/constant/kinematicCloudProperties" \
+    || fail "the stock case no longer has 'patchInteractionModel none;'"
+# the change is exactly these lines
+n=$(diff "$stock/constant/kinematicCloudProperties" "$c/constant/kinematicCloudProperties" \
+    | grep -c '^[<>]' || true)
+[ "$n" = 7 ] || fail "kinematicCloudProperties changed by $n lines, expected 1 replaced + 5 added"
+
+cd "$c"
+run log.blockMesh blockMesh
+run log.run icoUncoupledKinematicParcelFoam
+grep -q "snowWallInteraction: regime 'test fixture" log.run || fail "model not selected"
+grep -q "snowWall: patch walls: impacts" log.run || fail "no per-patch summary"
+t=$(foamListTimes -latestTime | tail -1)
+[ -f "$t/kinematicCloud:snowDeposit" ] || fail "no deposit field in $t"
+head -n 1 "postProcessing/kinematicCloud:snowWall/0/snowWall.dat" | grep -q "frontAndBack:depositedMass" \
+    || fail "time series header"
+echo "PASS (stock fileHandler ran to t=$t with snowWallInteraction)"
