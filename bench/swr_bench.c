@@ -6,7 +6,8 @@
  *   - v_crit for 46 diameters (10..100 um, tolerance 1e-3),
  *   - the 46 x 50 map (grid + interface refinement, the speed range fixed
  *     beforehand as snowregime map chooses it),
- * and the accuracy of v_crit at the accuracy setting used (against 16x finer steps).
+ * the accuracy of v_crit at the accuracy setting used (against accuracy 30720),
+ * and the lowest accuracy setting with v_crit within 0.1 % with its collision time.
  * Not a test: it prints figures, it asserts nothing.
  */
 #include <math.h>
@@ -39,6 +40,49 @@ static void vc_one(void *p, int k)
     swt_vcrit_result r;
     swt_vcrit(c->m, c->d[k], c->o, &r);
     c->vc[k] = r.vcrit;
+}
+
+#define REF_ACCURACY 30720.0   /* 16 x the largest setting tried */
+
+/* mean wall time of one collision over impacts at 0.5, 0.9, 1.1, 2 x v_crit of
+ * every diameter (repeated for at least 50 ms); median over reps */
+static double time_collisions(const swr_model *m, const double *d, const double *vc, int nd,
+                              int reps, double *steps_mean)
+{
+    static const double f[4] = { 0.5, 0.9, 1.1, 2.0 };
+    double t[1000];
+    long steps = 0, ncoll = 0;
+    for (int r = 0; r < reps; r++) {
+        int n = 0;
+        double t0 = swt_now();
+        do {
+            for (int i = 0; i < nd; i++)
+                for (int k = 0; k < 4; k++) {
+                    swr_impact in = { d[i], f[k] * vc[i], 0.0, 0.0 };
+                    swr_result res;
+                    swr_collide(m, &in, &res, NULL);
+                    if (r == 0 && n < 4 * nd) { steps += res.steps; ncoll++; }
+                    n++;
+                }
+        } while (swt_now() - t0 < 0.05);
+        t[r] = (swt_now() - t0) / n;
+    }
+    *steps_mean = (double)steps / (double)ncoll;
+    return median(t, reps);
+}
+
+/* max relative error of v_crit at 3 diameters against the reference values */
+static double vcrit_error(const swr_model *m, const double *dd, const double *vref,
+                          const swt_vcrit_opts *o)
+{
+    double e = 0.0;
+    for (int k = 0; k < 3; k++) {
+        swt_vcrit_result a;
+        swt_vcrit(m, dd[k], o, &a);
+        if (a.status != SWT_VCRIT_FOUND || !isfinite(vref[k])) return INFINITY;
+        e = fmax(e, fabs(a.vcrit / vref[k] - 1.0));
+    }
+    return e;
 }
 
 int main(int argc, char **argv)
@@ -87,43 +131,51 @@ int main(int argc, char **argv)
     double t_vcrit = median(t, reps);
 
     /* one collision: impacts at 0.5, 0.9, 1.1, 2 v_crit for every diameter */
-    const double f[4] = { 0.5, 0.9, 1.1, 2.0 };
-    long steps = 0, ncoll = 0;
-    for (int r = 0; r < reps; r++) {
-        int n = 0;
-        double t0 = swt_now();
-        do {
-            for (int i = 0; i < ND; i++)
-                for (int k = 0; k < 4; k++) {
-                    swr_impact in = { d[i], f[k] * vc[i], 0.0, 0.0 };
-                    swr_result res;
-                    swr_collide(m, &in, &res, NULL);
-                    if (r == 0) { steps += res.steps; ncoll++; }
-                    n++;
-                }
-        } while (swt_now() - t0 < 0.05);
-        t[r] = (swt_now() - t0) / n;
-    }
-    double t_coll = median(t, reps);
+    double steps_mean = 0.0;
+    double t_coll = time_collisions(m, d, vc, ND, reps, &steps_mean);
 
-    /* accuracy of v_crit at this setting: against 16x finer steps, 3 diameters */
-    swr_params pf = p;
+    /* accuracy of v_crit at this setting: against a much finer step */
     char txt[32];
-    snprintf(txt, sizeof txt, "%.10g", 16.0 * p.accuracy);
-    double acc_err = -1.0;
-    if (swr_params_set(&pf, "accuracy", txt, err, sizeof err) == 0) {
-        swr_model *mf = swr_model_alloc(&pf, err, sizeof err);
-        swt_vcrit_opts of = o;
-        of.rtol = 1e-7;
-        const double dd[3] = { 10e-6, 30e-6, 100e-6 };
-        for (int k = 0; mf && k < 3; k++) {
-            swt_vcrit_result a, b;
-            swt_vcrit(m, dd[k], &of, &a);
-            swt_vcrit(mf, dd[k], &of, &b);
-            if (a.status == SWT_VCRIT_FOUND && b.status == SWT_VCRIT_FOUND)
-                acc_err = fmax(acc_err, fabs(a.vcrit / b.vcrit - 1.0));
+    swr_params pf = p;
+    snprintf(txt, sizeof txt, "%.10g", REF_ACCURACY);
+    swr_model *mref = NULL;
+    if (swr_params_set(&pf, "accuracy", txt, err, sizeof err) == 0)
+        mref = swr_model_alloc(&pf, err, sizeof err);
+    if (!mref) { fprintf(stderr, "swr_bench: reference model: %s\n", err); return 1; }
+    double vref[3];
+    const double dd[3] = { 10e-6, 30e-6, 100e-6 };
+    swt_vcrit_opts of = o;
+    of.rtol = 1e-7;
+    for (int k = 0; k < 3; k++) {
+        swt_vcrit_result b;
+        swt_vcrit(mref, dd[k], &of, &b);
+        vref[k] = b.status == SWT_VCRIT_FOUND ? b.vcrit : NAN;
+    }
+    swr_model_free(mref);
+    double acc_err = vcrit_error(m, dd, vref, &of);
+
+    /* the lowest accuracy setting (of a list) with v_crit within 0.1 %, and one
+     * collision there */
+    static const double accs[] = { 60, 90, 120, 180, 240, 360, 480, 720, 960, 1440, 1920 };
+    double acc01 = 0.0, err01 = 0.0, t_coll01 = 0.0, steps01 = 0.0;
+    for (size_t k = 0; k < sizeof accs / sizeof accs[0]; k++) {
+        swr_params pa = p;
+        snprintf(txt, sizeof txt, "%.10g", accs[k]);
+        if (swr_params_set(&pa, "accuracy", txt, err, sizeof err) != 0) break;
+        swr_model *ma = swr_model_alloc(&pa, err, sizeof err);
+        if (!ma) break;
+        double e = vcrit_error(ma, dd, vref, &of);
+        if (e <= 1e-3) {
+            double vca[ND];
+            vc_ctx ca = { ma, &o, d, vca };
+            swt_parallel_for(ND, threads, vc_one, &ca);
+            acc01 = accs[k];
+            err01 = e;
+            t_coll01 = time_collisions(ma, d, vca, ND, reps, &steps01);
+            swr_model_free(ma);
+            break;
         }
-        swr_model_free(mf);
+        swr_model_free(ma);
     }
 
     /* the 46 x 50 map, speed range as snowregime map chooses it */
@@ -149,8 +201,12 @@ int main(int argc, char **argv)
     printf("swr_bench: %d repetitions, %d threads, accuracy %g steps per contact time\n",
            reps, threads, p.accuracy);
     printf("collision_us %.4g\n", 1e6 * t_coll);
-    printf("collision_steps_mean %.1f\n", (double)steps / (double)ncoll);
+    printf("collision_steps_mean %.1f\n", steps_mean);
     printf("vcrit_rel_error_max %.3g\n", acc_err);
+    printf("accuracy_for_0.1pct %g\n", acc01);
+    printf("vcrit_rel_error_at_it %.3g\n", err01);
+    printf("collision_us_at_0.1pct %.4g\n", 1e6 * t_coll01);
+    printf("collision_steps_at_0.1pct %.1f\n", steps01);
     printf("vcrit46_ms %.4g\n", 1e3 * t_vcrit);
     printf("map_grid_ms %.4g\n", 1e3 * t_grid);
     printf("map_total_ms %.4g\n", 1e3 * t_map);

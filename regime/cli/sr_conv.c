@@ -42,8 +42,8 @@ int sr_cmd_convergence(int argc, char **argv)
         if (d) memcpy(d, dd, sizeof dd);
     }
     if (!acc) {
-        static const double aa[] = { 8, 12, 16, 24, 32, 48, 64, 96, 128 };
-        nacc = 9;
+        static const double aa[] = { 10, 15, 20, 30, 45, 60, 90, 120, 180, 240 };
+        nacc = 10;
         acc = malloc(sizeof aa);
         if (acc) memcpy(acc, aa, sizeof aa);
     }

@@ -176,7 +176,7 @@ static int write_map_plot(swt_outset *os, const char *sfx, const sr_mapres *r, c
     char gp[4200];
     snprintf(gp, sizeof gp, "%s.gp", png);
     FILE *f = fopen(gp, "w");
-    if (!f) { snprintf(err, errlen, "cannot write '%s'", gp); return -1; }
+    if (!f) { snprintf(err, errlen, "cannot write '%.300s'", gp); return -1; }
     swt_gnuplot_png_header(f, png, 800, 700);
     fprintf(f, "set datafile separator ','\nset key outside below horizontal\nset format x '%%g'\nset mxtics 10\n");
     if (r->mp->g.vlog) fprintf(f, "set logscale x\n");
