@@ -38,8 +38,8 @@ double swp_shear_moment(double tau_w, double R);
 double swp_tau_roll(double Gamma, double Estar, double R, double k);
 /* Critical wall shear stress for sliding detachment: tau with F_D = mu_s k F_c. */
 double swp_tau_slide(double Gamma, double R, double mu_s, double k);
-/* min(swp_tau_roll, swp_tau_slide); returns the rolling one when mu_s <= 0 is not given
- * (mu_s <= 0 or NaN: sliding ignored). */
+/* Critical wall shear stress, min(swp_tau_roll, swp_tau_slide); with mu_s <= 0 (or NaN)
+ * sliding is ignored and the rolling threshold is returned. */
 double swp_tau_detach(double Gamma, double Estar, double R, double mu_s, double k);
 
 #ifdef __cplusplus
