@@ -1,0 +1,227 @@
+/* test_swt.c - unit tests of regime/tools that need no kernel run: the interface
+ * fit (GSL) against known polynomials, the regime.coeffs writer read back by the
+ * wall model's reader, atomic output sets, strict option parsing. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <cmocka.h>
+
+#include "sww.h"
+#include "swt_fit.h"
+#include "swt_io.h"
+
+/* points of ln d = c0 + c1 x + c2 x^2 + c3 x^3, x = ln v */
+static void make_points(swt_interface *it, int n, const double *c, int deg, double noise)
+{
+    it->n = n;
+    it->vn = malloc((size_t)n * sizeof(double));
+    it->dcrit = malloc((size_t)n * sizeof(double));
+    for (int k = 0; k < n; k++) {
+        double v = 0.5 * pow(20.0, (double)k / (n - 1)), x = log(v), y = 0.0;
+        for (int i = deg; i >= 0; i--) y = y * x + c[i];
+        it->vn[k] = v;
+        it->dcrit[k] = exp(y) * (1.0 + noise * ((k % 2) ? 1.0 : -1.0));
+    }
+}
+
+static void fit_recovers_polynomial(void **s)
+{
+    (void)s;
+    const double c[4] = { -9.5, -0.9, -0.05, 0.004 };
+    swt_interface it = { 0 };
+    make_points(&it, 30, c, 3, 0.0);
+    swt_fit f;
+    char err[300];
+    assert_int_equal(swt_fit_interface(&it, 3, &f, err, sizeof err), 0);
+    assert_int_equal(f.degree, 3);
+    for (int i = 0; i <= 3; i++) assert_true(fabs(f.c[i] - c[i]) < 1e-9);
+    assert_true(f.rms < 1e-12 && f.maxres < 1e-12);
+    assert_true(f.decreasing);
+    assert_true(f.slope_lo < 0.0 && f.slope_hi < 0.0);
+    swt_interface_free(&it);
+}
+
+static void fit_reports_residuals(void **s)
+{
+    (void)s;
+    const double c[2] = { -10.0, -1.2 };
+    swt_interface it = { 0 };
+    make_points(&it, 20, c, 1, 0.01);   /* +-1 % alternating */
+    swt_fit f;
+    char err[300];
+    assert_int_equal(swt_fit_interface(&it, 1, &f, err, sizeof err), 0);
+    assert_true(fabs(f.maxres - 0.01) < 1.5e-3);
+    assert_true(fabs(f.rms - 0.01) < 1.5e-3);
+    assert_true(fabs(f.slope_lo + 1.2) < 0.05);
+    swt_interface_free(&it);
+}
+
+static void fit_refuses_bad_input(void **s)
+{
+    (void)s;
+    const double c[2] = { -10.0, -1.2 }, up[2] = { -10.0, 0.8 };
+    swt_interface it = { 0 };
+    swt_fit f;
+    char err[300];
+    make_points(&it, 3, c, 1, 0.0);
+    assert_int_equal(swt_fit_interface(&it, 3, &f, err, sizeof err), -1);  /* 3 points, degree 3 */
+    assert_non_null(strstr(err, "only 3 interface points"));
+    assert_int_equal(swt_fit_interface(&it, 0, &f, err, sizeof err), -1);
+    assert_non_null(strstr(err, "--degree"));
+    swt_interface_free(&it);
+    make_points(&it, 10, up, 1, 0.0);   /* increasing: no valid interface */
+    assert_int_equal(swt_fit_interface(&it, 2, &f, err, sizeof err), -1);
+    assert_non_null(strstr(err, "not decreasing"));
+    swt_interface_free(&it);
+}
+
+/* a cubic that turns up inside the span: the fit lowers the degree and says so */
+static void fit_lowers_degree_when_not_monotone(void **s)
+{
+    (void)s;
+    const double c[4] = { -10.0, -1.0, 0.0, 0.1 };
+    swt_interface it = { 0 };
+    make_points(&it, 25, c, 3, 0.0);
+    swt_fit f;
+    char err[300];
+    assert_int_equal(swt_fit_interface(&it, 3, &f, err, sizeof err), 0);
+    assert_true(f.degree < 3);
+    assert_true(f.decreasing);
+    assert_non_null(strstr(f.note, "lowered"));
+    swt_interface_free(&it);
+}
+
+static void coeffs_file_reads_back(void **s)
+{
+    (void)s;
+    const double c[4] = { -9.5, -0.9, -0.05, 0.004 };
+    swt_interface it = { 0 };
+    make_points(&it, 30, c, 3, 0.0);
+    swt_fit f;
+    char err[300];
+    assert_int_equal(swt_fit_interface(&it, 3, &f, err, sizeof err), 0);
+    swr_params p;
+    swr_params_default(&p);
+    char path[] = "/tmp/test_swt_coeffs_XXXXXX";
+    int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    FILE *fp = fdopen(fd, "w");
+    swt_coeffs_write(fp, &f, &p, 10e-6, 100e-6, "unit test");
+    fclose(fp);
+    sww_model *m = sww_alloc();
+    int rc = sww_regime_load(m, path);
+    if (rc != 0) fprintf(stderr, "%s\n", sww_errmsg(m));
+    assert_int_equal(rc, 0);
+    for (int k = 0; k < it.n; k++) assert_true(fabs(sww_dcrit(m, it.vn[k]) / it.dcrit[k] - 1.0) < 1e-9);
+    assert_true(fabs(sww_vn_min(m) - it.vn[0]) < 1e-9 * it.vn[0]);
+    assert_string_equal(sww_label(m), "unit test");
+    sww_free(m);
+    unlink(path);
+    swt_interface_free(&it);
+}
+
+static int exists(const char *p)
+{
+    struct stat st;
+    return stat(p, &st) == 0;
+}
+
+static void outset_is_atomic(void **s)
+{
+    (void)s;
+    char base[] = "/tmp/test_swt_out_XXXXXX", dir[300], p[400];
+    assert_non_null(mkdtemp(base));
+    snprintf(dir, sizeof dir, "%s/a/b", base);
+    char err[300];
+    /* abort: temporaries and the folders it created are removed */
+    swt_outset *o = swt_outset_alloc(dir, err, sizeof err);
+    assert_non_null(o);
+    FILE *f = swt_outset_open(o, "x.csv", err, sizeof err);
+    assert_non_null(f);
+    fputs("1,2\n", f);
+    snprintf(p, sizeof p, "%s/.tmp-x.csv", dir);
+    assert_true(exists(p));
+    swt_outset_abort(o);
+    swt_outset_free(o);
+    assert_false(exists(p));
+    snprintf(p, sizeof p, "%s/a", base);
+    assert_false(exists(p));
+    assert_true(exists(base));
+    /* commit: final names appear, no temporaries */
+    o = swt_outset_alloc(dir, err, sizeof err);
+    f = swt_outset_open(o, "x.csv", err, sizeof err);
+    fputs("1,2\n", f);
+    assert_int_equal(swt_outset_commit(o, err, sizeof err), 0);
+    swt_outset_free(o);
+    snprintf(p, sizeof p, "%s/x.csv", dir);
+    assert_true(exists(p));
+    snprintf(p, sizeof p, "%s/.tmp-x.csv", dir);
+    assert_false(exists(p));
+    /* a registered output that was never produced fails the commit, nothing renamed */
+    o = swt_outset_alloc(dir, err, sizeof err);
+    f = swt_outset_open(o, "y.csv", err, sizeof err);
+    assert_non_null(swt_outset_add(o, "never.png", err, sizeof err));
+    assert_int_equal(swt_outset_commit(o, err, sizeof err), -1);
+    assert_non_null(strstr(err, "never.png"));
+    swt_outset_free(o);
+    snprintf(p, sizeof p, "%s/y.csv", dir);
+    assert_false(exists(p));
+    snprintf(p, sizeof p, "%s/.tmp-y.csv", dir);
+    assert_false(exists(p));
+    /* clean up */
+    snprintf(p, sizeof p, "%s/x.csv", dir); unlink(p);
+    rmdir(dir);
+    snprintf(p, sizeof p, "%s/a", base); rmdir(p);
+    rmdir(base);
+}
+
+static void parse_is_strict(void **s)
+{
+    (void)s;
+    double v;
+    long n;
+    double *l;
+    int k;
+    char err[300];
+    assert_int_equal(swt_parse_double("--x", "1.5e-3", 0, 1, &v, err, sizeof err), 0);
+    assert_true(v == 1.5e-3);
+    assert_int_equal(swt_parse_double("--x", "1.5abc", 0, 1, &v, err, sizeof err), -1);
+    assert_non_null(strstr(err, "--x: '1.5abc'"));
+    assert_int_equal(swt_parse_double("--x", "nan", 0, 1, &v, err, sizeof err), -1);
+    assert_int_equal(swt_parse_double("--x", "inf", 0, 1e300, &v, err, sizeof err), -1);
+    assert_int_equal(swt_parse_double("--x", "-1", 1e-300, 1, &v, err, sizeof err), -1);
+    assert_non_null(strstr(err, "(0, 1]"));
+    assert_int_equal(swt_parse_double("--x", "", 0, 1, &v, err, sizeof err), -1);
+    assert_int_equal(swt_parse_int("--n", "12", 2, 20, &n, err, sizeof err), 0);
+    assert_int_equal(n, 12);
+    assert_int_equal(swt_parse_int("--n", "1.5", 2, 20, &n, err, sizeof err), -1);
+    assert_int_equal(swt_parse_int("--n", "99999999999999999999", 2, 20, &n, err, sizeof err), -1);
+    assert_int_equal(swt_parse_list("--d", "1e-5,2e-5,3e-5", 0, 1, &l, &k, err, sizeof err), 0);
+    assert_int_equal(k, 3);
+    assert_true(l[2] == 3e-5);
+    free(l);
+    assert_int_equal(swt_parse_list("--d", "1e-5,,3e-5", 0, 1, &l, &k, err, sizeof err), -1);
+    assert_int_equal(swt_parse_list("--d", "1e-5,", 0, 1, &l, &k, err, sizeof err), -1);
+    assert_int_equal(swt_parse_list("--d", "1e-5,-2", 0, 1, &l, &k, err, sizeof err), -1);
+    assert_non_null(strstr(err, "'-2'"));
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(fit_recovers_polynomial),
+        cmocka_unit_test(fit_reports_residuals),
+        cmocka_unit_test(fit_refuses_bad_input),
+        cmocka_unit_test(fit_lowers_degree_when_not_monotone),
+        cmocka_unit_test(coeffs_file_reads_back),
+        cmocka_unit_test(outset_is_atomic),
+        cmocka_unit_test(parse_is_strict),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
