@@ -58,6 +58,12 @@ typedef struct {
     long max_steps;      /* guaranteed upper bound on steps */
     double energy_err;   /* relative energy-balance error of the integration */
     char msg[160];       /* warning or error text ("" when none) */
+    /* Kept contacts: sliding and rolling stop under the adhesive resistances
+     * (mu 2F_c, 4F_c xi_crit) after this time and displacement of the centre
+     * along the wall, predicted from the state at the decision; INFINITY when
+     * they never stop (mu = 0 with slip). 0 for bounces and head-on impacts. */
+    double t_rest;       /* [s] */
+    double s_rest;       /* [m] */
 } swr_result;
 
 /* Optional trajectory sink: called every `stride` steps with time, overlap,
@@ -80,6 +86,19 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
 
 /* Tabor parameter of diameter d; sets *jkr_ok = lambda > SWP_TABOR_JKR_MIN. */
 double swr_model_tabor(const swr_model *m, double d, int *jkr_ok);
+
+/* Accepted impact inputs (swr_collide returns SWR_EINVAL outside them). */
+#define SWR_D_MIN 1.0e-7   /* diameter [m] */
+#define SWR_D_MAX 1.0e-1
+#define SWR_V_MAX 1.0e3    /* normal and tangential speed [m/s] */
+
+/* Critical normal sticking velocity of diameter d (head-on, vt = omega = 0):
+ * the largest vn at which the contact is kept, by bisection in ln vn to the
+ * relative tolerance rtol (e.g. 1e-4), searched in [vlo, vhi]. Returns 0 and
+ * *vcrit, or -1 when every vn in the range bounces (*vcrit = 0) or none does
+ * (*vcrit = vhi). Thread-safe like swr_collide. */
+int swr_vcrit_normal(const swr_model *m, double d, double vlo, double vhi, double rtol,
+                     double *vcrit);
 
 #ifdef __cplusplus
 }

@@ -1,0 +1,377 @@
+/* swr_collide.c - one ice sphere hitting a flat wall: the collision integrator
+ * (see swr_collide.h; the physics and numerics are in doc/kernel.md).
+ *
+ * Units: the integration runs in units where the particle mass, the normal
+ * impact speed and the Hertz contact time t_c are 1 (length unit vn t_c), so
+ * the step is 1/accuracy whatever the size or speed. t_c is the Hertz contact
+ * time at max(vn, v_adh), v_adh = sqrt(2 U_c/m) the elastic sticking velocity,
+ * so that slow impacts, whose dynamics are set by the adhesion, get steps on
+ * the adhesive time scale.
+ *
+ * Scheme: velocity Verlet (kick-drift-kick), symplectic for the conservative
+ * contact forces; the dashpot, linear in the velocity, is taken implicitly in
+ * the closing half kick, so it stays stable for any damping. The tangential
+ * spring and rolling resistance are updated with the slip and rolling
+ * increments of the drift.
+ *
+ * Signs: delta > 0 in compression, u = d delta/dt > 0 approaching, F_n > 0
+ * repulsive. Tangential axis along the impact's v_t; omega > 0 makes the
+ * contact point slide along +v_t (contact-point velocity v_t + R omega).
+ */
+#include "swr_collide.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "swp_contact.h"
+#include "swp_jkr.h"
+#include "swp_time.h"
+#include "swr_damping.h"
+#include "swr_internal.h"
+#include "swr_normal.h"
+#include "swr_rolling.h"
+#include "swr_tangential.h"
+#include "swr_wall.h"
+
+swr_model *swr_model_alloc(const swr_params *p, char *err, size_t errlen)
+{
+    if (!p) {
+        if (err && errlen)
+            snprintf(err, errlen, "no parameters");
+        return NULL;
+    }
+    if (swr_params_validate(p, err, errlen) != 0)
+        return NULL;
+    if (swr_damping_init() != 0) {
+        if (err && errlen)
+            snprintf(err, errlen, "damping calibration failed");
+        return NULL;
+    }
+    swr_model *m = calloc(1, sizeof *m);
+    if (!m) {
+        if (err && errlen)
+            snprintf(err, errlen, "out of memory");
+        return NULL;
+    }
+    m->p = *p;
+    m->wall.type = SWR_WALL_FLAT;
+    m->Estar = swp_effective_modulus(p->E, p->nu, p->E_wall, p->nu_wall);
+    m->Gstar = swp_effective_shear_modulus(p->E, p->nu, p->E_wall, p->nu_wall);
+    m->adhesive = p->adhesion == SWR_ADHESION_JKR && p->gamma > 0.0;
+    m->alpha_const = p->cor == SWR_COR_CONSTANT ? swr_damping_alpha_exact(p->cor_value) : 0.0;
+    m->e_min = swr_damping_e_min();
+    return m;
+}
+
+void swr_model_free(swr_model *m)
+{
+    free(m);
+}
+
+const swr_params *swr_model_params(const swr_model *m)
+{
+    return &m->p;
+}
+
+double swr_model_tabor(const swr_model *m, double d, int *jkr_ok)
+{
+    const double lam = swp_tabor(m->p.gamma, m->Estar, swr_wall_rstar(&m->wall, 0.5 * d), m->p.z0);
+    if (jkr_ok)
+        *jkr_ok = lam > SWP_TABOR_JKR_MIN;
+    return lam;
+}
+
+static void append_msg(swr_result *r, const char *text)
+{
+    const size_t len = strlen(r->msg);
+    if (len + 3 >= sizeof r->msg)
+        return;
+    snprintf(r->msg + len, sizeof r->msg - len, "%s%s", len ? "; " : "", text);
+}
+
+static swr_status bad_input(swr_result *r, const char *what, double v)
+{
+    r->status = SWR_EINVAL;
+    snprintf(r->msg, sizeof r->msg, "%s = %g is invalid", what, v);
+    return SWR_EINVAL;
+}
+
+/* Largest x = sqrt(a) with U(x) = E (the turning point of a conservative
+ * motion with energy E): Newton from above, bisection as a safeguard. U grows
+ * monotonically above the equilibrium sqrt(a0). */
+static double turning_x(const swr_normal *n, double E, double x_start)
+{
+    double lo = n->a0 > 0.0 ? sqrt(n->a0) : 0.0, hi = x_start > lo ? x_start : 2.0 * lo + 1.0;
+    while (swr_normal_energy(n, hi) < E)
+        hi *= 2.0;
+    double x = hi;
+    for (int i = 0; i < 100; i++) {
+        const double f = swr_normal_energy(n, x) - E;
+        if (f > 0.0)
+            hi = x;
+        else
+            lo = x;
+        const double x2 = x * x;
+        const double slope = swr_normal_force(n, x) * (4.0 * x2 * x / n->R - n->C);
+        double xn = slope > 0.0 ? x - f / slope : 0.5 * (lo + hi);
+        if (!(xn > lo && xn < hi))
+            xn = 0.5 * (lo + hi);
+        if (fabs(xn - x) <= 1e-14 * x)
+            return xn;
+        x = xn;
+    }
+    return x;
+}
+
+/* Duration of a conservative normal motion with energy E between the contact
+ * radii x_lo^2 < x_hi^2 (x_hi may be the turning point), the integral of
+ * d delta / |u| = delta'(x) dx / sqrt(2 (E - U(x))). The substitution
+ * x = x_lo + (x_hi - x_lo)(1 - s^2) removes the square-root singularity at a
+ * turning point, and at the separation point both delta'(x_f) and u vanish
+ * linearly; Gauss-Legendre on s in [0, 1]. */
+static double travel_time(const swr_normal *n, double E, double x_lo, double x_hi)
+{
+    static const double gx[8] = { 0.0950125098376374, 0.2816035507792589, 0.4580167776572274,
+                                  0.6178762444026438, 0.7554044083550030, 0.8656312023878318,
+                                  0.9445750230732326, 0.9894009349916499 };
+    static const double gw[8] = { 0.1894506104550685, 0.1826034150449236, 0.1691565193950025,
+                                  0.1495959888165767, 0.1246289712555339, 0.0951585116824928,
+                                  0.0622535239386479, 0.0271524594117541 };
+    const double w = x_hi - x_lo;
+    if (!(w > 0.0))
+        return 0.0;
+    double sum = 0.0;
+    for (int k = 0; k < 16; k++) { /* 16 nodes on [0, 1] from the 16-point rule on [-1, 1] */
+        const double s = 0.5 * (1.0 + (k < 8 ? -gx[7 - k] : gx[k - 8]));
+        const double x = x_lo + w * (1.0 - s * s);
+        const double ke = E - swr_normal_energy(n, x);
+        const double dd = 4.0 * x * x * x / n->R - n->C;
+        if (ke > 0.0)
+            sum += 0.5 * gw[k < 8 ? 7 - k : k - 8] * 2.0 * w * s * dd / sqrt(2.0 * ke);
+    }
+    return sum;
+}
+
+swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
+                       const swr_trace *trace)
+{
+    memset(r, 0, sizeof *r);
+    r->e_t = NAN;
+    if (!m || !in)
+        return bad_input(r, "model or impact", NAN);
+    if (!(in->d >= SWR_D_MIN && in->d <= SWR_D_MAX))
+        return bad_input(r, "d", in->d);
+    if (!(in->vn > 0.0 && in->vn <= SWR_V_MAX))
+        return bad_input(r, "vn", in->vn);
+    if (!(in->vt >= 0.0 && in->vt <= SWR_V_MAX))
+        return bad_input(r, "vt", in->vt);
+    if (!(fabs(in->omega) <= SWR_V_MAX / (0.5 * in->d)))
+        return bad_input(r, "omega", in->omega);
+
+    const swr_params *p = &m->p;
+    /* --- physical quantities of this impact (SI) --- */
+    const double R = swr_wall_rstar(&m->wall, 0.5 * in->d);
+    const double mass = p->rho * (4.0 / 3.0) * M_PI * R * R * R;
+    const double gam = m->adhesive ? p->gamma : 0.0;
+    const double Uc_si = m->adhesive ? swp_jkr_separation_energy(gam, m->Estar, R) : 0.0;
+    const double v_adh = sqrt(2.0 * Uc_si / mass);
+    const double v_ref = in->vn > v_adh ? in->vn : v_adh;
+    const double tc = swp_hertz_contact_time(mass, R, m->Estar, v_ref);
+
+    r->e_target = swr_damping_target(p, m->Estar, R, mass, in->vn);
+    const double alpha = p->cor == SWR_COR_CONSTANT ? m->alpha_const
+                                                    : swr_damping_alpha(r->e_target);
+    if (r->e_target < m->e_min)
+        append_msg(r, "plastic COR below the dashpot table: damping capped");
+    if (m->adhesive) {
+        int ok;
+        const double lam = swr_model_tabor(m, in->d, &ok);
+        if (!ok) {
+            char w[96];
+            snprintf(w, sizeof w, "Tabor parameter %.3g < %g: JKR outside its range (DMT/Maugis)",
+                     lam, SWP_TABOR_JKR_MIN);
+            append_msg(r, w);
+        }
+    }
+    if (tc < swp_rayleigh_time(R, p->rho, swp_shear_modulus(p->E, p->nu), p->nu))
+        append_msg(r, "contact shorter than the Rayleigh time: quasi-static contact law doubtful");
+
+    /* --- scaled units: mass m, speed vn, time tc --- */
+    const double T = tc, V = in->vn, L = V * T;
+    const double sE = L * T * T / mass;              /* modulus: F T^2/(m L) per L^2 */
+    swr_normal nrm;
+    swr_normal_init(&nrm, R / L, m->Estar * sE, gam * T * T / mass);
+    const double Rs = R / L, Is = 0.4 * Rs * Rs;
+    const double Gs = m->Gstar * sE;
+    const double kd = sqrt(2.0 * m->Estar * sE * sqrt(Rs)); /* c_d = alpha kd delta^(1/4) */
+    const double pk = 0.8 * alpha * kd;              /* Phi = pk delta^(5/4) */
+    const double xic = p->xi_crit / L;
+    const double mu = p->mu;
+    /* step: accuracy steps per contact time, the undamped t_c shortened by
+     * the damping's loading-time factor */
+    const double g = swr_damping_time_factor(alpha);
+    const double h = g / p->accuracy, h2 = 0.5 * h;
+    const double E0 = 0.5;                           /* kinetic energy at first contact */
+    const double dsep = nrm.delta_c;                 /* 0 for Hertz */
+
+    r->dt = h * T;
+    /* bound: SWR_CONTACT_TIMES_MAX undamped contact times t_c */
+    r->max_steps = (long)ceil(SWR_CONTACT_TIMES_MAX * p->accuracy / g) + 16;
+
+    /* --- state at first contact (jump-in for JKR) --- */
+    double t = 0.0, delta = 0.0, u = 1.0;
+    double x = nrm.xj;
+    double fne = swr_normal_force(&nrm, x), fd = 0.0, fn = fne;
+    double vt = in->vt / V, w = in->omega * T;
+    swr_tangential tan = { 0.0, 0, 0.0 };
+    swr_rolling rol = { 0.0, 0, 0.0 };
+    double ft = 0.0, mr = 0.0;
+    double wd = 0.0, err = 0.0, dmax = 0.0, em = E0, phi_old = 0.0;
+    enum { OPEN, BOUNCE, STICK } outcome = OPEN;
+    int separated = 0;
+    double t_end = 0.0, vt_out = vt;
+    const int stride = trace && trace->fn && trace->stride > 0 ? trace->stride : 0;
+    /* no tangential motion and no trace: once the remaining normal motion is
+     * conservative, finish it in closed form instead of stepping */
+    const int tangential = in->vt != 0.0 || in->omega != 0.0;
+    const int shortcut = !tangential && !stride;
+
+    if (stride)
+        trace->fn(trace->ctx, 0.0, 0.0, in->vn, fn * mass * L / (T * T), x * x * L, in->vt,
+                  in->omega);
+    if (alpha == 0.0) /* undamped: the energy is conserved, the outcome known now */
+        outcome = E0 <= nrm.Uc ? STICK : BOUNCE;
+
+    long n = 0;
+    while (outcome != STICK && !(outcome == BOUNCE && shortcut) && n < r->max_steps) {
+        /* kick */
+        const double uh = u - h2 * fn;
+        const double vth = vt + h2 * ft;
+        const double wh = w + h2 * (Rs * ft + mr) / Is;
+        const double d_old = delta, u_old = u, fd_old = fd;
+        /* drift */
+        delta += h * uh;
+        n++;
+        t += h;
+        if (delta < dsep || (dsep == 0.0 && delta <= 0.0)) {
+            /* the contact breaks during this drift (undamped since u < 0) */
+            t_end = t - h + h * (d_old - dsep) / (d_old - delta);
+            vt_out = vth;
+            separated = 1;
+            outcome = BOUNCE;
+            break;
+        }
+        x = swr_normal_x(&nrm, delta, x);
+        fne = swr_normal_force(&nrm, x);
+        /* closing kick. The dashpot acts while loading; its impulse over the
+         * step is exact: int c(delta) u dt = Phi(delta1) - Phi(delta0),
+         * Phi = (4/5) alpha kd delta^(5/4), which also removes the error of
+         * its delta^(1/4) singularity at first contact. The opening kick
+         * took h/2 F_d(old); the rest of the exact impulse is applied here. */
+        u = uh - h2 * fne;
+        const double phi = delta > 0.0 ? pk * delta * sqrt(sqrt(delta)) : 0.0;
+        fd = 0.0;
+        if (u_old > 0.0 && uh > 0.0 && alpha > 0.0) {
+            const double imp = phi - phi_old - h2 * fd_old;
+            const double ue = u;
+            u -= imp;
+            if (u < 0.0 && ue > 0.0)
+                u = 0.0; /* the dashpot stops the approach, it never reverses it */
+            wd += (phi - phi_old) * 0.5 * (u_old + (u > 0.0 ? u : 0.0));
+            if (u > 0.0 && delta > 0.0)
+                fd = alpha * kd * sqrt(sqrt(delta)) * u;
+        } else if (fd_old != 0.0) {
+            u += h2 * fd_old; /* loading ended: undo the opening kick's dashpot part */
+        }
+        phi_old = phi;
+        fn = fne + fd;
+        if (tangential) {
+            const double a = x * x;
+            ft = swr_tangential_update(&tan, h * (vth + Rs * wh), 8.0 * Gs * a,
+                                       mu * fabs(fne + 2.0 * nrm.Fc));
+            if (m->adhesive) {
+                const double ra = a / nrm.a0;
+                mr = swr_rolling_update(&rol, -h * Rs * wh, 4.0 * nrm.Fc * ra * sqrt(ra), xic);
+            }
+            vt = vth + h2 * ft;
+            w = wh + h2 * (Rs * ft + mr) / Is;
+        }
+        if (delta > dmax)
+            dmax = delta;
+
+        em = 0.5 * u * u + swr_normal_energy(&nrm, x);
+        const double e_err = fabs(em + wd - E0) / E0;
+        if (e_err > err)
+            err = e_err;
+        if (stride && n % stride == 0)
+            trace->fn(trace->ctx, t * T, delta * L, u * V, fn * mass * L / (T * T), x * x * L,
+                      vt * V, w / T);
+        if (outcome == OPEN) {
+            if (em <= nrm.Uc) {
+                /* it can never reach delta_c: damping only removes energy */
+                outcome = STICK;
+                t_end = t;
+            } else if (u <= 0.0) {
+                /* unloading: undamped from here on, so it escapes */
+                outcome = BOUNCE;
+            }
+        }
+    }
+
+    r->status = SWR_OK;
+    if (outcome == BOUNCE && !separated) {
+        if (shortcut) {
+            /* conservative remainder with energy em, closed form */
+            double xs = nrm.xf;               /* separation: a_f, or 0 for Hertz */
+            if (u > 0.0) {                    /* still loading (undamped run) */
+                const double xm = turning_x(&nrm, em, x);
+                t += travel_time(&nrm, em, x, xm) + travel_time(&nrm, em, xs, xm);
+                const double dm = xm * xm * xm * xm / nrm.R - nrm.C * xm;
+                if (dm > dmax)
+                    dmax = dm;
+            } else {
+                t += travel_time(&nrm, em, xs, x);
+            }
+            t_end = t;
+            separated = 1;
+        } else {
+            r->status = SWR_STEP_BOUND;
+        }
+    } else if (outcome == OPEN) {
+        r->status = SWR_STEP_BOUND;
+        outcome = STICK; /* still in contact: best estimate */
+        t_end = t;
+    }
+    if (r->status == SWR_STEP_BOUND) {
+        append_msg(r, "step bound reached: outcome is the best estimate");
+        vt_out = vt;
+    }
+    if (outcome == STICK && n == 0 && alpha == 0.0) {
+        /* decided at first contact: the overlap it will reach */
+        const double xm = turning_x(&nrm, E0, nrm.xj);
+        dmax = xm * xm * xm * xm / nrm.R - nrm.C * xm;
+    }
+    r->steps = n;
+    r->contact_kept = outcome == STICK;
+    /* rebound speed from the conserved energy past the decision */
+    r->e_n = outcome == BOUNCE ? sqrt(2.0 * fmax(em - nrm.Uc, 0.0)) : 0.0;
+    r->t_contact = t_end * T;
+    r->delta_max = dmax * L;
+    r->energy_err = err;
+    if (outcome == BOUNCE) {
+        if (in->vt > 0.0)
+            r->e_t = vt_out * V / in->vt;
+        r->stick = 0;
+    } else {
+        /* sliding and rolling of the adhered sphere stop under the adhesive
+         * resistances; predict when and where (doc/kernel.md) */
+        const double fs = mu * 2.0 * nrm.Fc, ml = 4.0 * nrm.Fc * xic;
+        double tr = 0.0, sr = 0.0;
+        r->stick = tangential ? swr_tangential_rest(1.0, Rs, Is, fs, ml, vt, w, &tr, &sr) : 1;
+        r->t_rest = tr * T;
+        r->s_rest = sr * L;
+    }
+    return r->status;
+}

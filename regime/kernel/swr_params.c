@@ -1,0 +1,274 @@
+/* swr_params.c - material and model settings: defaults, parsing, validation
+ * (see swr_params.h). Every numeric key has a physical range; a value outside
+ * it, NaN, inf, trailing text or an unknown key is rejected with a one-line
+ * message naming the key and the value. */
+#include "swr_params.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Numeric keys: name, place in the struct, accepted closed range [lo, hi].
+ * The ranges accept the extreme validation grid (E 0.1-100 GPa, gamma
+ * 0.01-10 J/m2, e 0.01-1) with room on both sides, and reject what is not a
+ * physical material or a usable setting. */
+typedef struct {
+    const char *key;
+    size_t off;
+    double lo, hi;
+    const char *what;
+} num_key;
+
+#define NK(k, lo, hi, what) { #k, offsetof(swr_params, k), lo, hi, what }
+static const num_key num_keys[] = {
+    NK(rho,      10.0,   3.0e4,  "particle density [kg/m3]"),
+    NK(E,        1.0e6,  1.2e12, "particle Young's modulus [Pa]"),
+    NK(nu,       0.0,    0.5,    "particle Poisson's ratio [-]"),
+    NK(sigma_y,  1.0e3,  1.0e10, "particle yield stress [Pa]"),
+    NK(E_wall,   1.0e6,  1.2e12, "wall Young's modulus [Pa]"),
+    NK(nu_wall,  0.0,    0.5,    "wall Poisson's ratio [-]"),
+    NK(rho_wall, 1.0,    3.0e4,  "wall density [kg/m3]"),
+    NK(gamma,    0.0,    100.0,  "work of adhesion [J/m2]"),
+    NK(z0,       1.0e-11, 1.0e-8, "equilibrium separation [m]"),
+    NK(mu,       0.0,    10.0,   "sliding friction coefficient [-]"),
+    NK(xi_crit,  1.0e-12, 1.0e-6, "critical rolling displacement [m]"),
+    NK(accuracy, 10.0,   1.0e5,  "steps per Hertz contact time [-]"),
+};
+#undef NK
+#define N_NUM (sizeof num_keys / sizeof num_keys[0])
+
+/* Accepted range of a constant coefficient of restitution. */
+#define COR_MIN 1.0e-3
+#define COR_MAX 1.0
+
+static int fail(char *err, size_t errlen, const char *fmt, ...)
+{
+    if (err && errlen) {
+        va_list ap;
+        va_start(ap, fmt);
+        vsnprintf(err, errlen, fmt, ap);
+        va_end(ap);
+    }
+    return -1;
+}
+
+void swr_params_default(swr_params *p)
+{
+    memset(p, 0, sizeof *p);
+    p->rho = 920.0;
+    p->E = 9.8e9;
+    p->nu = 0.31;
+    p->sigma_y = 1.0e6;
+    p->E_wall = 2.0e9;
+    p->nu_wall = 0.35;
+    p->rho_wall = 1100.0;
+    p->gamma = 0.2;
+    p->adhesion = SWR_ADHESION_JKR;
+    p->z0 = 0.3e-9;
+    p->cor = SWR_COR_THORNTON;
+    p->cor_value = 1.0;
+    p->cor_pair = SWR_PAIR_WALL;
+    p->mu = 0.05;
+    p->xi_crit = 1.0e-9;
+    p->accuracy = 60.0;
+}
+
+/* Strict number: the whole text (surrounding blanks allowed), finite. */
+static int parse_number(const char *s, double *out)
+{
+    char *end;
+    errno = 0;
+    const double v = strtod(s, &end);
+    if (end == s)
+        return -1;
+    while (isspace((unsigned char)*end))
+        end++;
+    if (*end != '\0' || errno == ERANGE || !isfinite(v))
+        return -1;
+    *out = v;
+    return 0;
+}
+
+static double *field(swr_params *p, const num_key *k)
+{
+    return (double *)((char *)p + k->off);
+}
+
+static const num_key *find_num(const char *key)
+{
+    for (size_t i = 0; i < N_NUM; i++)
+        if (strcmp(num_keys[i].key, key) == 0)
+            return &num_keys[i];
+    return NULL;
+}
+
+int swr_params_set(swr_params *p, const char *key, const char *value, char *err, size_t errlen)
+{
+    if (!key || !value)
+        return fail(err, errlen, "missing key or value");
+    const num_key *k = find_num(key);
+    if (k) {
+        double v;
+        if (parse_number(value, &v) != 0)
+            return fail(err, errlen, "%s: '%s' is not a finite number (%s)", key, value, k->what);
+        if (!(v >= k->lo && v <= k->hi))
+            return fail(err, errlen, "%s: %s is out of range [%g, %g] (%s)", key, value,
+                        k->lo, k->hi, k->what);
+        *field(p, k) = v;
+        return 0;
+    }
+    if (strcmp(key, "cor") == 0) {
+        if (strcmp(value, "elastic") == 0) {
+            p->cor = SWR_COR_ELASTIC;
+            p->cor_value = 1.0;
+        } else if (strcmp(value, "thornton") == 0) {
+            p->cor = SWR_COR_THORNTON;
+        } else if (strcmp(value, "thornton-asymptote") == 0) {
+            p->cor = SWR_COR_THORNTON_ASYMPTOTE;
+        } else {
+            double v;
+            if (parse_number(value, &v) != 0)
+                return fail(err, errlen,
+                            "cor: '%s' is neither elastic, thornton, thornton-asymptote "
+                            "nor a number", value);
+            if (!(v >= COR_MIN && v <= COR_MAX))
+                return fail(err, errlen, "cor: %s is out of range [%g, %g] (constant restitution)",
+                            value, COR_MIN, COR_MAX);
+            p->cor = SWR_COR_CONSTANT;
+            p->cor_value = v;
+        }
+        return 0;
+    }
+    if (strcmp(key, "cor_pair") == 0) {
+        if (strcmp(value, "wall") == 0)
+            p->cor_pair = SWR_PAIR_WALL;
+        else if (strcmp(value, "particle") == 0)
+            p->cor_pair = SWR_PAIR_PARTICLE;
+        else
+            return fail(err, errlen, "cor_pair: '%s' is neither wall nor particle", value);
+        return 0;
+    }
+    if (strcmp(key, "adhesion") == 0) {
+        if (strcmp(value, "jkr") == 0)
+            p->adhesion = SWR_ADHESION_JKR;
+        else if (strcmp(value, "none") == 0)
+            p->adhesion = SWR_ADHESION_NONE;
+        else
+            return fail(err, errlen, "adhesion: '%s' is neither jkr nor none", value);
+        return 0;
+    }
+    return fail(err, errlen, "unknown key '%s' (value '%s')", key, value);
+}
+
+/* Copy [b, e) into buf without surrounding blanks. */
+static void trimmed(char *buf, size_t n, const char *b, const char *e)
+{
+    while (b < e && isspace((unsigned char)*b))
+        b++;
+    while (e > b && isspace((unsigned char)e[-1]))
+        e--;
+    size_t len = (size_t)(e - b);
+    if (len >= n)
+        len = n - 1;
+    memcpy(buf, b, len);
+    buf[len] = '\0';
+}
+
+int swr_params_set_kv(swr_params *p, const char *kv, char *err, size_t errlen)
+{
+    const char *eq = kv ? strchr(kv, '=') : NULL;
+    if (!eq)
+        return fail(err, errlen, "'%s' is not of the form key=value", kv ? kv : "(null)");
+    char key[64], val[256];
+    trimmed(key, sizeof key, kv, eq);
+    trimmed(val, sizeof val, eq + 1, eq + strlen(eq));
+    if (key[0] == '\0' || val[0] == '\0')
+        return fail(err, errlen, "'%s' is not of the form key=value", kv);
+    return swr_params_set(p, key, val, err, errlen);
+}
+
+int swr_params_load(swr_params *p, const char *path, char *err, size_t errlen)
+{
+    FILE *f = fopen(path, "r");
+    if (!f)
+        return fail(err, errlen, "%s: cannot open: %s", path, strerror(errno));
+    char line[1024], key[64], val[256], msg[320];
+    int lineno = 0, rc = 0;
+    while (fgets(line, sizeof line, f)) {
+        lineno++;
+        if (!strchr(line, '\n') && !feof(f)) {
+            rc = fail(err, errlen, "%s:%d: line too long", path, lineno);
+            break;
+        }
+        char *hash = strchr(line, '#');
+        if (hash)
+            *hash = '\0';
+        const char *b = line;
+        while (isspace((unsigned char)*b))
+            b++;
+        if (*b == '\0')
+            continue;
+        const char *ke = b;
+        while (*ke && !isspace((unsigned char)*ke) && *ke != '=')
+            ke++;
+        trimmed(key, sizeof key, b, ke);
+        const char *v = ke;
+        while (isspace((unsigned char)*v))
+            v++;
+        if (*v == '=')
+            v++;
+        trimmed(val, sizeof val, v, v + strlen(v));
+        if (val[0] == '\0') {
+            rc = fail(err, errlen, "%s:%d: key '%s' has no value", path, lineno, key);
+            break;
+        }
+        if (swr_params_set(p, key, val, msg, sizeof msg) != 0) {
+            rc = fail(err, errlen, "%s:%d: %s", path, lineno, msg);
+            break;
+        }
+    }
+    if (rc == 0 && ferror(f))
+        rc = fail(err, errlen, "%s: read error", path);
+    fclose(f);
+    return rc;
+}
+
+int swr_params_validate(const swr_params *p, char *err, size_t errlen)
+{
+    for (size_t i = 0; i < N_NUM; i++) {
+        const double v = *(const double *)((const char *)p + num_keys[i].off);
+        if (!(v >= num_keys[i].lo && v <= num_keys[i].hi))
+            return fail(err, errlen, "%s: %g is out of range [%g, %g] (%s)", num_keys[i].key, v,
+                        num_keys[i].lo, num_keys[i].hi, num_keys[i].what);
+    }
+    if (p->cor < SWR_COR_ELASTIC || p->cor > SWR_COR_THORNTON_ASYMPTOTE)
+        return fail(err, errlen, "cor: invalid mode %d", (int)p->cor);
+    if (p->cor == SWR_COR_CONSTANT && !(p->cor_value >= COR_MIN && p->cor_value <= COR_MAX))
+        return fail(err, errlen, "cor: %g is out of range [%g, %g] (constant restitution)",
+                    p->cor_value, COR_MIN, COR_MAX);
+    if (p->cor_pair != SWR_PAIR_WALL && p->cor_pair != SWR_PAIR_PARTICLE)
+        return fail(err, errlen, "cor_pair: invalid value %d", (int)p->cor_pair);
+    if (p->adhesion != SWR_ADHESION_JKR && p->adhesion != SWR_ADHESION_NONE)
+        return fail(err, errlen, "adhesion: invalid value %d", (int)p->adhesion);
+    return 0;
+}
+
+void swr_params_print(const swr_params *p, const char *prefix, FILE *stream)
+{
+    const char *pre = prefix ? prefix : "";
+    for (size_t i = 0; i < N_NUM; i++) {
+        const double v = *(const double *)((const char *)p + num_keys[i].off);
+        fprintf(stream, "%s%s %.12g\n", pre, num_keys[i].key, v);
+    }
+    fprintf(stream, "%sadhesion %s\n", pre, p->adhesion == SWR_ADHESION_NONE ? "none" : "jkr");
+    switch (p->cor) {
+    case SWR_COR_ELASTIC: fprintf(stream, "%scor elastic\n", pre); break;
+    case SWR_COR_CONSTANT: fprintf(stream, "%scor %.12g\n", pre, p->cor_value); break;
+    case SWR_COR_THORNTON: fprintf(stream, "%scor thornton\n", pre); break;
+    case SWR_COR_THORNTON_ASYMPTOTE: fprintf(stream, "%scor thornton-asymptote\n", pre); break;
+    }
+    fprintf(stream, "%scor_pair %s\n", pre, p->cor_pair == SWR_PAIR_PARTICLE ? "particle" : "wall");
+}
