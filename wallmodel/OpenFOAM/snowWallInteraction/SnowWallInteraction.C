@@ -261,6 +261,12 @@ Foam::scalar Foam::SnowWallInteraction<CloudType>::wallShearStress
             << exit(FatalError);
     }
     const scalar t = mag(tauPtr->boundaryField()[pp.index()][facei]);
+    if (t == 0)
+    {
+        // not filled yet (the function object computes it from the second
+        // time step on, and only then sets its units): zero in any units
+        return 0;
+    }
     const dimensionSet& dims = tauPtr->dimensions();
     if (dims == dimPressure)
     {
