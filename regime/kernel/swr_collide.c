@@ -229,6 +229,7 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
     swr_rolling rol = { 0.0, 0, 0.0 };
     double ft = 0.0, mr = 0.0;
     double wd = 0.0, err = 0.0, dmax = 0.0, em = E0, phi_old = 0.0;
+    double e_dec = E0;   /* normal energy from the decision on (conserved) */
     enum { OPEN, BOUNCE, STICK } outcome = OPEN;
     int separated = 0;
     double t_end = 0.0, vt_out = vt;
@@ -260,6 +261,8 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
             t_end = t - h + h * (d_old - dsep) / (d_old - delta);
             vt_out = vth;
             separated = 1;
+            if (outcome == OPEN)
+                e_dec = em < E0 ? em : E0;
             outcome = BOUNCE;
             break;
         }
@@ -316,6 +319,7 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
             } else if (u <= 0.0) {
                 /* unloading: undamped from here on, so it escapes */
                 outcome = BOUNCE;
+                e_dec = em < E0 ? em : E0;
             }
         }
     }
@@ -323,16 +327,16 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
     r->status = SWR_OK;
     if (outcome == BOUNCE && !separated) {
         if (shortcut) {
-            /* conservative remainder with energy em, closed form */
+            /* conservative remainder with energy e_dec, closed form */
             double xs = nrm.xf;               /* separation: a_f, or 0 for Hertz */
             if (u > 0.0) {                    /* still loading (undamped run) */
-                const double xm = turning_x(&nrm, em, x);
-                t += travel_time(&nrm, em, x, xm) + travel_time(&nrm, em, xs, xm);
+                const double xm = turning_x(&nrm, e_dec, x);
+                t += travel_time(&nrm, e_dec, x, xm) + travel_time(&nrm, e_dec, xs, xm);
                 const double dm = xm * xm * xm * xm / nrm.R - nrm.C * xm;
                 if (dm > dmax)
                     dmax = dm;
             } else {
-                t += travel_time(&nrm, em, xs, x);
+                t += travel_time(&nrm, e_dec, xs, x);
             }
             t_end = t;
             separated = 1;
@@ -356,7 +360,7 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
     r->steps = n;
     r->contact_kept = outcome == STICK;
     /* rebound speed from the conserved energy past the decision */
-    r->e_n = outcome == BOUNCE ? sqrt(2.0 * fmax(em - nrm.Uc, 0.0)) : 0.0;
+    r->e_n = outcome == BOUNCE ? sqrt(2.0 * fmax(e_dec - nrm.Uc, 0.0)) : 0.0;
     r->t_contact = t_end * T;
     r->delta_max = dmax * L;
     r->energy_err = err;

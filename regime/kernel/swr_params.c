@@ -261,12 +261,12 @@ void swr_params_print(const swr_params *p, const char *prefix, FILE *stream)
     const char *pre = prefix ? prefix : "";
     for (size_t i = 0; i < N_NUM; i++) {
         const double v = *(const double *)((const char *)p + num_keys[i].off);
-        fprintf(stream, "%s%s %.12g\n", pre, num_keys[i].key, v);
+        fprintf(stream, "%s%s %.17g\n", pre, num_keys[i].key, v);
     }
     fprintf(stream, "%sadhesion %s\n", pre, p->adhesion == SWR_ADHESION_NONE ? "none" : "jkr");
     switch (p->cor) {
     case SWR_COR_ELASTIC: fprintf(stream, "%scor elastic\n", pre); break;
-    case SWR_COR_CONSTANT: fprintf(stream, "%scor %.12g\n", pre, p->cor_value); break;
+    case SWR_COR_CONSTANT: fprintf(stream, "%scor %.17g\n", pre, p->cor_value); break;
     case SWR_COR_THORNTON: fprintf(stream, "%scor thornton\n", pre); break;
     case SWR_COR_THORNTON_ASYMPTOTE: fprintf(stream, "%scor thornton-asymptote\n", pre); break;
     }

@@ -1,0 +1,396 @@
+/* test_kernel_validation.c - the regime kernel against the numbers of issue 3
+ * (Validation) and doc/kernel.md: Hertz contact time, recovered COR, JKR
+ * contact law, elastic sticking velocity, plastic COR, the extreme grid,
+ * oblique impacts, thread safety. */
+#include <math.h>
+#include <pthread.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "swp_contact.h"
+#include "swp_cor.h"
+#include "swp_jkr.h"
+#include "swp_time.h"
+#include "swr_collide.h"
+#include "swr_damping.h"
+#include "swr_normal.h"
+
+#define REL(x, ref) (fabs((x) - (ref)) / fabs(ref))
+
+static swr_model *model(const char *const *kv)
+{
+    swr_params p;
+    swr_params_default(&p);
+    char err[256];
+    for (; kv && *kv; kv++)
+        if (swr_params_set_kv(&p, *kv, err, sizeof err) != 0)
+            fail_msg("%s", err);
+    swr_model *m = swr_model_alloc(&p, err, sizeof err);
+    if (!m)
+        fail_msg("%s", err);
+    return m;
+}
+
+static double mass_of(const swr_params *p, double d)
+{
+    return p->rho * M_PI * d * d * d / 6.0;
+}
+
+static double estar_of(const swr_params *p)
+{
+    return swp_effective_modulus(p->E, p->nu, p->E_wall, p->nu_wall);
+}
+
+/* A trace sink that only forces the step-by-step integration (and counts). */
+static void count_cb(void *ctx, double t, double delta, double vn, double fn, double a,
+                     double vt, double omega)
+{
+    (void)t; (void)delta; (void)vn; (void)fn; (void)a; (void)vt; (void)omega;
+    (*(long *)ctx)++;
+}
+
+static void collide_ok(const swr_model *m, double d, double vn, double vt, double omega,
+                       int stepped, swr_result *r)
+{
+    long calls = 0;
+    const swr_trace tr = { 1 << 30, count_cb, &calls };
+    const swr_impact in = { d, vn, vt, omega };
+    const swr_status st = swr_collide(m, &in, r, stepped ? &tr : NULL);
+    if (st != SWR_OK)
+        fail_msg("d %g vn %g vt %g: status %d (%s)", d, vn, vt, (int)st, r->msg);
+    assert_true(r->steps <= r->max_steps);
+}
+
+/* Hertz, no adhesion, e = 1: contact time within 1 % of 2.87 (m^2/(R E*^2 v))^(1/5),
+ * both stepped and in the closed-form remainder, and e_n = 1. */
+static void hertz_contact_time(void **s)
+{
+    (void)s;
+    const char *kv[] = { "adhesion=none", "cor=elastic", NULL };
+    swr_model *m = model(kv);
+    const swr_params *p = swr_model_params(m);
+    for (double d = 1e-6; d <= 1.001e-3; d *= sqrt(10.0)) {
+        for (double v = 1e-3; v <= 50.0; v *= 10.0) {
+            const double th = swp_hertz_contact_time(mass_of(p, d), 0.5 * d, estar_of(p), v);
+            for (int stepped = 0; stepped < 2; stepped++) {
+                swr_result r;
+                collide_ok(m, d, v, 0.0, 0.0, stepped, &r);
+                if (REL(r.t_contact, th) > 0.01)
+                    fail_msg("d %g v %g stepped %d: t_c %g vs %g", d, v, stepped, r.t_contact, th);
+                assert_false(r.contact_kept);
+                assert_true(REL(r.e_n, 1.0) < 1e-3);
+                if (stepped)
+                    assert_true(r.energy_err < 1e-3);
+            }
+        }
+    }
+    swr_model_free(m);
+}
+
+/* A constant e in [0.1, 0.99] is recovered within 0.5 % (non-adhesive). */
+static void constant_cor(void **s)
+{
+    (void)s;
+    const double es[] = { 0.1, 0.2, 0.3, 0.5, 0.7, 0.9, 0.95, 0.99 };
+    for (size_t i = 0; i < sizeof es / sizeof es[0]; i++) {
+        char c[32];
+        snprintf(c, sizeof c, "cor=%g", es[i]);
+        const char *kv[] = { "adhesion=none", c, NULL };
+        swr_model *m = model(kv);
+        for (double d = 1e-6; d <= 1.001e-3; d *= 10.0)
+            for (double v = 1e-3; v <= 50.0; v *= 7.0) {
+                swr_result r;
+                collide_ok(m, d, v, 0.0, 0.0, 0, &r);
+                if (REL(r.e_n, es[i]) > 0.005)
+                    fail_msg("e %g d %g v %g: e_n %g", es[i], d, v, r.e_n);
+                assert_true(r.e_target == es[i]);
+            }
+        swr_model_free(m);
+    }
+    /* the table and the Brent refinement agree with the ODE */
+    for (double e = 0.005; e < 1.0; e *= 1.7)
+        assert_true(REL(swr_damping_cor(swr_damping_alpha(e)), e) < 1e-4);
+    assert_true(REL(swr_damping_cor(swr_damping_alpha_exact(0.4)), 0.4) < 1e-8);
+    assert_true(swr_damping_e_min() < 1e-3);
+}
+
+/* JKR from the kernel's own contact law (its per-step radius solver), swept
+ * quasi-statically under displacement control: the equilibrium radius a0 (F = 0)
+ * and the pull-off force (the most negative force) within 0.1 % of the closed
+ * forms, and the separation where the branch ends at delta_c. */
+static void jkr_contact_law(void **s)
+{
+    (void)s;
+    const double Es = 1.8829e9, gammas[] = { 0.05, 0.2, 2.0 }, Rs[] = { 0.5e-6, 25e-6, 0.5e-3 };
+    for (int ig = 0; ig < 3; ig++)
+        for (int ir = 0; ir < 3; ir++) {
+            const double G = gammas[ig], R = Rs[ir];
+            swr_normal n;
+            swr_normal_init(&n, R, Es, G);
+            /* unloading sweep from 3 delta(a0) down to the separation */
+            const double a0 = swp_jkr_a0(G, Es, R), d0 = swp_jkr_delta(a0, G, Es, R);
+            const double dtop = 3.0 * d0, dbot = n.delta_c;
+            const int N = 200000;
+            double x = swr_normal_x_closed(&n, dtop), fmin = INFINITY, fprev = NAN, dprev = NAN;
+            double a_eq = NAN;
+            for (int k = 0; k <= N; k++) {
+                const double delta = dtop - (dtop - dbot) * k / N;
+                x = swr_normal_x(&n, delta, x);
+                const double f = swr_normal_force(&n, x);
+                /* the per-step solver agrees with the closed form */
+                assert_true(REL(x, swr_normal_x_closed(&n, delta)) < 1e-9);
+                if (f < fmin)
+                    fmin = f;
+                if (k > 0 && fprev > 0.0 && f <= 0.0) {
+                    /* interpolate the zero crossing in delta, radius there */
+                    const double dz = dprev + (delta - dprev) * fprev / (fprev - f);
+                    const double xz = swr_normal_x_closed(&n, dz);
+                    a_eq = xz * xz;
+                }
+                fprev = f;
+                dprev = delta;
+            }
+            if (REL(a_eq, a0) > 1e-3)
+                fail_msg("G %g R %g: a0 %g vs %g", G, R, a_eq, a0);
+            if (REL(-fmin, swp_jkr_pulloff_force(G, R)) > 1e-3)
+                fail_msg("G %g R %g: pull-off %g vs %g", G, R, -fmin, swp_jkr_pulloff_force(G, R));
+            /* jump-in force -8/9 F_c, separation force -5/9 F_c */
+            assert_true(REL(swr_normal_force(&n, n.xj), -8.0 / 9.0 * n.Fc) < 1e-9);
+            assert_true(REL(swr_normal_force(&n, n.xf), -5.0 / 9.0 * n.Fc) < 1e-9);
+            /* energy: U(a_f) by quadrature of F d delta equals the closed form */
+            double U = 0.0;
+            const int M = 20000;
+            for (int k = 0; k < M; k++) {
+                const double d1 = dbot * k / M, d2 = dbot * (k + 1) / M;
+                const double xm = swr_normal_x_closed(&n, 0.5 * (d1 + d2));
+                U += swr_normal_force(&n, xm) * (d2 - d1);
+            }
+            assert_true(REL(U, n.Uc) < 1e-3);
+        }
+    /* Hertz limit */
+    assert_true(REL(swp_jkr_radius(1e-8, 0.0, 2e9, 1e-5), sqrt(1e-13)) < 1e-12);
+    assert_true(swp_jkr_radius(-1e-8, 0.0, 2e9, 1e-5) == 0.0);
+}
+
+/* Elastic JKR: v_crit within 0.5 % of Thornton & Ning's V_s for d 1 um - 1 mm
+ * and Gamma 0.05 - 2; undamped, the outcome is known from the energy at first
+ * contact. The stepped integrator must find the same: with cor = 0.999 the
+ * plastic loss shifts v_crit to V_s / e (Thornton & Ning's combination). */
+static void elastic_vcrit(void **s)
+{
+    (void)s;
+    const double gammas[] = { 0.05, 0.2, 1.0, 2.0 };
+    for (int ig = 0; ig < 4; ig++) {
+        char g[32];
+        snprintf(g, sizeof g, "gamma=%g", gammas[ig]);
+        const char *kv[] = { g, "cor=elastic", NULL };
+        const char *kv2[] = { g, "cor=0.999", NULL };
+        swr_model *m = model(kv), *m2 = model(kv2);
+        const swr_params *p = swr_model_params(m);
+        for (double d = 1e-6; d <= 1.001e-3; d *= sqrt(10.0)) {
+            const double vs = swp_sticking_velocity_tn(gammas[ig], p->rho, estar_of(p), 0.5 * d);
+            double vc;
+            assert_int_equal(swr_vcrit_normal(m, d, 1e-4 * vs, 1e3 * vs, 1e-5, &vc), 0);
+            if (REL(vc, vs) > 0.005)
+                fail_msg("gamma %g d %g: v_crit %g vs V_s %g", gammas[ig], d, vc, vs);
+            assert_int_equal(swr_vcrit_normal(m2, d, 1e-4 * vs, 1e3 * vs, 1e-5, &vc), 0);
+            if (REL(vc, vs / 0.999) > 0.005)
+                fail_msg("gamma %g d %g stepped: v_crit %g vs V_s/e %g", gammas[ig], d, vc, vs / 0.999);
+        }
+        swr_model_free(m);
+        swr_model_free(m2);
+    }
+}
+
+/* Plastic COR: the rebound COR of a non-adhesive impact matches e_p(V_i)
+ * within 1 %: full Thornton (wall and particle pair) and the asymptote. */
+static void plastic_cor(void **s)
+{
+    (void)s;
+    const char *modes[][3] = { { "adhesion=none", "cor=thornton", NULL },
+                               { "adhesion=none", "cor=thornton", "cor_pair=particle" },
+                               { "adhesion=none", "cor=thornton-asymptote", NULL } };
+    for (int im = 0; im < 3; im++) {
+        const char *kv[] = { modes[im][0], modes[im][1], modes[im][2], NULL };
+        swr_model *m = model(kv);
+        const swr_params *p = swr_model_params(m);
+        const double Es = estar_of(p), py = swp_limiting_pressure(p->sigma_y);
+        for (double d = 1e-6; d <= 1.001e-3; d *= 10.0)
+            for (double v = 1e-4; v <= 50.0; v *= 3.0) {
+                double ep;
+                const double mm = mass_of(p, d);
+                if (im == 0)
+                    ep = swp_cor_thornton(swp_yield_velocity_wall(py, Es, p->rho) / v);
+                else if (im == 1)
+                    ep = swp_cor_thornton(swp_yield_velocity_pp(py, Es, 0.25 * d, 0.5 * mm) / v);
+                else
+                    ep = swp_cor_thornton_wall_asymptote(py, Es, p->rho, v);
+                swr_result r;
+                collide_ok(m, d, v, 0.0, 0.0, 0, &r);
+                assert_true(REL(r.e_target, ep) < 1e-12);
+                if (REL(r.e_n, ep) > 0.01)
+                    fail_msg("mode %d d %g v %g: e_n %g vs e_p %g", im, d, v, r.e_n, ep);
+            }
+        swr_model_free(m);
+    }
+}
+
+/* The extreme grid: d 1 um - 1 mm, v_n 1 mm/s - 50 m/s, E 0.1 - 100 GPa,
+ * Gamma 0.01 - 10, e 0.01 - 1: no NaN, never past the step bound, and the
+ * outcome unchanged when the step is halved, except within 1 % of v_crit
+ * (where halving the step may legitimately move the interface). */
+static void extreme_grid(void **s)
+{
+    (void)s;
+    const char *Es[] = { "E=0.1e9", "E=9.8e9", "E=100e9" };
+    const char *Gs[] = { "gamma=0.01", "gamma=0.2", "gamma=10" };
+    const char *es[] = { "cor=0.01", "cor=0.3", "cor=elastic", "cor=thornton" };
+    const double ds[] = { 1e-6, 1e-5, 1e-4, 1e-3 };
+    const double vs[] = { 1e-3, 1e-2, 0.1, 1.0, 10.0, 50.0 };
+    long n = 0, flips = 0;
+    for (int ie = 0; ie < 3; ie++)
+        for (int ig = 0; ig < 3; ig++)
+            for (int ic = 0; ic < 4; ic++) {
+                const char *kv[] = { Es[ie], Gs[ig], es[ic], NULL };
+                const char *kv2[] = { Es[ie], Gs[ig], es[ic], "accuracy=120", NULL };
+                swr_model *m = model(kv), *m2 = model(kv2);
+                for (int id = 0; id < 4; id++)
+                    for (int iv = 0; iv < 6; iv++) {
+                        const double vt = (iv % 2) ? 0.5 * vs[iv] : 0.0;
+                        swr_result r, r2;
+                        const swr_impact in = { ds[id], vs[iv], vt, 0.0 };
+                        assert_true(swr_collide(m, &in, &r, NULL) != SWR_EINVAL);
+                        assert_true(swr_collide(m2, &in, &r2, NULL) != SWR_EINVAL);
+                        const swr_result *rs[2] = { &r, &r2 };
+                        for (int k = 0; k < 2; k++) {
+                            const swr_result *q = rs[k];
+                            if (q->status != SWR_OK || !isfinite(q->e_n) || !isfinite(q->t_contact)
+                                || !isfinite(q->delta_max) || !isfinite(q->energy_err)
+                                || !(q->dt > 0.0) || q->steps > q->max_steps
+                                || (vt > 0.0 && q->contact_kept == 0 && !isfinite(q->e_t))
+                                || q->e_n < 0.0 || q->e_n > 1.0 + 1e-9)
+                                fail_msg("%s %s %s d %g v %g vt %g acc %d: status %d e_n %g t %g "
+                                         "steps %ld/%ld e_t %g (%s)", Es[ie], Gs[ig], es[ic],
+                                         ds[id], vs[iv], vt, k ? 120 : 60, (int)q->status, q->e_n,
+                                         q->t_contact, q->steps, q->max_steps, q->e_t, q->msg);
+                        }
+                        n++;
+                        if (r.contact_kept != r2.contact_kept) {
+                            flips++;
+                            double vc;
+                            assert_int_equal(swr_vcrit_normal(m2, ds[id], 1e-5, 1e3, 1e-6, &vc), 0);
+                            if (REL(vs[iv], vc) > 0.01)
+                                fail_msg("%s %s %s d %g v %g: outcome changes with the step, "
+                                         "v_crit %g", Es[ie], Gs[ig], es[ic], ds[id], vs[iv], vc);
+                        }
+                    }
+                swr_model_free(m);
+                swr_model_free(m2);
+            }
+    print_message("extreme grid: %ld impacts x 2 steps, %ld within 1 %% of v_crit flipped\n", n,
+                  flips);
+}
+
+/* Oblique impacts: a kept contact with tangential motion comes to rest (finite
+ * t_rest, s_rest > 0); without friction sliding never stops; a bounce reports
+ * e_t in (0, 1]. */
+static void oblique(void **s)
+{
+    (void)s;
+    swr_model *m = model(NULL);
+    swr_result r;
+    collide_ok(m, 20e-6, 0.3, 0.5, 0.0, 0, &r);
+    assert_true(r.contact_kept && r.stick);
+    assert_true(isfinite(r.t_rest) && r.t_rest > 0.0 && r.s_rest > 0.0);
+    collide_ok(m, 20e-6, 0.3, 0.0, 0.0, 0, &r);
+    assert_true(r.contact_kept && r.stick && r.t_rest == 0.0 && r.s_rest == 0.0);
+    assert_true(isnan(r.e_t));
+    collide_ok(m, 100e-6, 5.0, 2.0, 0.0, 0, &r);
+    assert_false(r.contact_kept);
+    assert_true(r.e_t > 0.0 && r.e_t <= 1.0);
+    /* spin that exactly rolls: no slip at first contact */
+    collide_ok(m, 20e-6, 0.3, 0.5, -0.5 / 10e-6, 0, &r);
+    assert_true(r.contact_kept && r.stick && isfinite(r.t_rest));
+    swr_model_free(m);
+
+    const char *kv[] = { "mu=0", NULL };
+    m = model(kv);
+    collide_ok(m, 20e-6, 0.3, 0.5, 0.0, 0, &r);
+    assert_true(r.contact_kept);
+    assert_false(r.stick);
+    assert_true(isinf(r.t_rest));
+    swr_model_free(m);
+}
+
+/* Tabor warning outside the JKR range; none at the baseline. */
+static void tabor_warning(void **s)
+{
+    (void)s;
+    const char *kv[] = { "gamma=0.01", "E=100e9", NULL };
+    swr_model *m = model(kv);
+    swr_result r;
+    collide_ok(m, 1e-6, 1.0, 0.0, 0.0, 0, &r);
+    assert_non_null(strstr(r.msg, "Tabor"));
+    swr_model_free(m);
+    m = model(NULL);
+    collide_ok(m, 50e-6, 1.0, 0.0, 0.0, 0, &r);
+    assert_null(strstr(r.msg, "Tabor"));
+    swr_model_free(m);
+}
+
+/* Thread safety: two threads on one model give the serial results. */
+typedef struct {
+    const swr_model *m;
+    double e_n[64];
+    int kept[64];
+} job;
+
+static void *run_job(void *arg)
+{
+    job *j = arg;
+    for (int i = 0; i < 64; i++) {
+        const swr_impact in = { 10e-6 + 1.5e-6 * i, 0.2 + 0.15 * i, 0.1 * (i % 3), 0.0 };
+        swr_result r;
+        swr_collide(j->m, &in, &r, NULL);
+        j->e_n[i] = r.e_n;
+        j->kept[i] = r.contact_kept;
+    }
+    return NULL;
+}
+
+static void threads(void **s)
+{
+    (void)s;
+    swr_model *m = model(NULL);
+    job a = { m, { 0 }, { 0 } }, b = a, serial = a;
+    pthread_t ta, tb;
+    pthread_create(&ta, NULL, run_job, &a);
+    pthread_create(&tb, NULL, run_job, &b);
+    pthread_join(ta, NULL);
+    pthread_join(tb, NULL);
+    run_job(&serial);
+    assert_memory_equal(a.e_n, serial.e_n, sizeof a.e_n);
+    assert_memory_equal(b.e_n, serial.e_n, sizeof b.e_n);
+    assert_memory_equal(a.kept, serial.kept, sizeof a.kept);
+    swr_model_free(m);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(hertz_contact_time),
+        cmocka_unit_test(constant_cor),
+        cmocka_unit_test(jkr_contact_law),
+        cmocka_unit_test(elastic_vcrit),
+        cmocka_unit_test(plastic_cor),
+        cmocka_unit_test(extreme_grid),
+        cmocka_unit_test(oblique),
+        cmocka_unit_test(tabor_warning),
+        cmocka_unit_test(threads),
+    };
+    return cmocka_run_group_tests_name("kernel_validation", tests, NULL, NULL);
+}
