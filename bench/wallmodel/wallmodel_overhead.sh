@@ -14,12 +14,14 @@
 # Runs icoUncoupledKinematicParcelFoam N times per model (default 5), alternating,
 # and prints the median ExecutionTime (CPU s) of each, the impacts per run and the
 # overhead ratio. Needs ./Allwmake (platforms/lib/libsnowWallInteraction.so).
+# Then runs sww_bench (build/release/bench/wallmodel, from ./Allwmake): the cost of
+# one sww_decide call and its share of the run time in this case.
 # Exit 2 on bad arguments; 77 when OpenFOAM or the library is missing.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 top=$(cd "$here/../.." && pwd)
 runs=5 parcels=20000 steps=100
-usage() { sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'; }
 while [ $# -gt 0 ]; do
     case "$1" in
         -h|--help) usage; exit 0 ;;
@@ -126,3 +128,15 @@ ml=$(median < "$tmp/local"); ms=$(median < "$tmp/snow")
 echo "median ExecutionTime: localInteraction $ml s, snowWallInteraction $ms s"
 echo "impacts per run: $imp ($(awk -v i="$imp" -v t="$ms" 'BEGIN { printf "%.3g", i / t }') per CPU second)"
 awk -v a="$ml" -v b="$ms" 'BEGIN { printf "overhead: ratio %.4f (%+.2f %%), target <= 3 %%\n", b / a, 100 * (b / a - 1) }'
+
+# the cost of the decision itself (C core), and what it amounts to in this case
+sb="$top/build/release/bench/wallmodel/sww_bench"
+if [ -x "$sb" ]; then
+    out=$("$sb" "$here/regime.coeffs")
+    echo "$out"
+    ns=$(echo "$out" | awk '/^gates off/ { print $3 }')
+    awk -v n="$ns" -v i="$imp" -v t="$ml" 'BEGIN {
+        printf "decision cost in this case: %d impacts x %.1f ns = %.4f s = %.2f %% of the localInteraction run\n", i, n, i * n * 1e-9, 100 * i * n * 1e-9 / t }'
+else
+    echo "(build/release/bench/wallmodel/sww_bench not built: ./Allwmake)"
+fi

@@ -1,0 +1,118 @@
+/* sww_bench.c - cost of one sww_decide call (wall-model C core), gates off and on.
+ *
+ * Usage: sww_bench [--help] [--calls N] [--repeats R] REGIME_FILE
+ *
+ * Decides N impacts (default 1e6) with diameters 1-200 um and normal speeds
+ * 0.01-30 m/s (inside and outside the fit range) R times (default 7) for each
+ * configuration and prints the median time per call in ns. Exit 2 on bad input.
+ */
+#include "sww.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+static double now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+static int cmp(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static double run(const sww_model *m, const sww_impact *in, long n, int reps, long *fates)
+{
+    double t[64];
+    for (int r = 0; r < reps; r++) {
+        long f[3] = { 0, 0, 0 };
+        const double t0 = now();
+        for (long i = 0; i < n; i++) {
+            sww_outcome o;
+            if (sww_decide(m, &in[i], &o) == SWW_OK)
+                f[o.fate]++;
+        }
+        t[r] = (now() - t0) / n * 1e9;
+        memcpy(fates, f, sizeof f);
+    }
+    qsort(t, reps, sizeof *t, cmp);
+    return t[reps / 2];
+}
+
+int main(int argc, char **argv)
+{
+    long n = 1000000;
+    int reps = 7;
+    const char *path = NULL;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+            puts("Usage: sww_bench [--help] [--calls N] [--repeats R] REGIME_FILE\n\n"
+                 "Median time per sww_decide call [ns] for N impacts (default 1000000),\n"
+                 "R repeats (default 7, at most 63): gates off, tangential gate on,\n"
+                 "both gates on (adhesion shear gate). Exit status 2 on bad input.");
+            return 0;
+        }
+        if ((!strcmp(argv[i], "--calls") || !strcmp(argv[i], "--repeats")) && i + 1 < argc) {
+            char *e;
+            const long v = strtol(argv[i + 1], &e, 10);
+            if (*e || v < 1 || (argv[i][2] == 'r' && v > 63)) {
+                fprintf(stderr, "sww_bench: %s: bad value '%s'\n", argv[i], argv[i + 1]);
+                return 2;
+            }
+            if (argv[i][2] == 'c')
+                n = v;
+            else
+                reps = (int)v;
+            i++;
+            continue;
+        }
+        if (argv[i][0] == '-' || path) {
+            fprintf(stderr, "sww_bench: unexpected argument '%s' (see --help)\n", argv[i]);
+            return 2;
+        }
+        path = argv[i];
+    }
+    if (!path) {
+        fprintf(stderr, "sww_bench: missing REGIME_FILE (see --help)\n");
+        return 2;
+    }
+    sww_model *m = sww_alloc();
+    sww_impact *in = malloc(n * sizeof *in);
+    if (!m || !in) {
+        fprintf(stderr, "sww_bench: out of memory\n");
+        return 1;
+    }
+    if (sww_regime_load(m, path) != SWW_OK) {
+        fprintf(stderr, "sww_bench: %s\n", sww_errmsg(m));
+        return 2;
+    }
+    unsigned s = 12345;
+    for (long i = 0; i < n; i++) {
+        s = s * 1103515245u + 12345u;
+        const double a = (s >> 8) / 16777216.0;
+        s = s * 1103515245u + 12345u;
+        const double b = (s >> 8) / 16777216.0;
+        in[i] = (sww_impact){ .d = 1e-6 + 199e-6 * a, .vn = 0.01 * pow(3000.0, b),
+                              .vt = 3.0 * a * b, .tau_w = 5.0 * b, .u = a };
+    }
+    long f[3];
+    printf("sww_bench: %ld calls, median of %d repeats\n", n, reps);
+    double t = run(m, in, n, reps, f);
+    printf("gates off:          %6.1f ns/call  (stick %ld bounce %ld ripoff %ld)\n", t, f[0], f[1], f[2]);
+    sww_set_tangential_gate(m, 1.0, 5e-5, -0.5);
+    t = run(m, in, n, reps, f);
+    printf("tangential gate:    %6.1f ns/call  (stick %ld bounce %ld ripoff %ld)\n", t, f[0], f[1], f[2]);
+    if (sww_set_shear_gate_adhesion(m, 0.05) == SWW_OK) {
+        t = run(m, in, n, reps, f);
+        printf("tangential + shear: %6.1f ns/call  (stick %ld bounce %ld ripoff %ld)\n", t, f[0], f[1], f[2]);
+    }
+    free(in);
+    sww_free(m);
+    return 0;
+}
