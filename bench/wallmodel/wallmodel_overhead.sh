@@ -2,7 +2,7 @@
 # wallmodel_overhead.sh - tracking-time overhead of snowWallInteraction against the
 # built-in localInteraction on a case with many wall impacts.
 #
-# Usage: bench/wallmodel_overhead.sh [--help] [--runs N] [--parcels N] [--steps N]
+# Usage: bench/wallmodel/wallmodel_overhead.sh [--help] [--runs N] [--parcels N] [--steps N]
 #
 # The case (made in a temp folder): a 0.1 m cube, 4x4x4 cells, walls at y = 0 and
 # y = 0.1; N parcels (default 20000) of 100 um ice fly force-free at 10 m/s normal
@@ -21,7 +21,7 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 top=$(cd "$here/../.." && pwd)
 runs=5 parcels=20000 steps=100
-usage() { sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; }
 while [ $# -gt 0 ]; do
     case "$1" in
         -h|--help) usage; exit 0 ;;
