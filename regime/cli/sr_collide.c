@@ -174,6 +174,7 @@ int sr_cmd_collide(int argc, char **argv)
     if (isfinite(r.e_t)) printf("e_t: %.9g\n", r.e_t);
     else printf("e_t: none (vt = 0)\n");
     printf("t_contact: %.9g\ndelta_max: %.9g\ne_target: %.9g\n", r.t_contact, r.delta_max, r.e_target);
+    printf("t_rest: %.9g\ns_rest: %.9g\n", r.t_rest, r.s_rest);
     printf("dt: %.9g\nsteps: %ld\nmax_steps: %ld\n", r.dt, r.steps, r.max_steps);
     printf("status: %s\n", st == SWR_OK ? "ok (decided by a physical criterion)"
                                         : "step-bound (outcome is the best estimate)");
