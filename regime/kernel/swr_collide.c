@@ -104,7 +104,7 @@ static swr_status bad_input(swr_result *r, const char *what, double v)
 static double turning_x(const swr_normal *n, double E, double x_start)
 {
     double lo = n->a0 > 0.0 ? sqrt(n->a0) : 0.0, hi = x_start > lo ? x_start : 2.0 * lo + 1.0;
-    while (swr_normal_energy(n, hi) < E)
+    for (int i = 0; i < 200 && swr_normal_energy(n, hi) < E; i++)
         hi *= 2.0;
     double x = hi;
     for (int i = 0; i < 100; i++) {
@@ -212,7 +212,7 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
     /* step: accuracy steps per contact time, the undamped t_c shortened by
      * the damping's loading-time factor */
     const double g = swr_damping_time_factor(alpha);
-    const double h = g / p->accuracy, h2 = 0.5 * h;
+    double h = g / p->accuracy, h2 = 0.5 * h;
     const double E0 = 0.5;                           /* kinetic energy at first contact */
     const double dsep = nrm.delta_c;                 /* 0 for Hertz */
 
@@ -292,8 +292,10 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
         fn = fne + fd;
         if (tangential) {
             const double a = x * x;
+            /* Coulomb limit on the whole contact load: the dashpot stands for
+             * the plastic contact pressure while loading */
             ft = swr_tangential_update(&tan, h * (vth + Rs * wh), 8.0 * Gs * a,
-                                       mu * fabs(fne + 2.0 * nrm.Fc));
+                                       mu * fabs(fn + 2.0 * nrm.Fc));
             if (m->adhesive) {
                 const double ra = a / nrm.a0;
                 mr = swr_rolling_update(&rol, -h * Rs * wh, 4.0 * nrm.Fc * ra * sqrt(ra), xic);
@@ -320,6 +322,10 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
                 /* unloading: undamped from here on, so it escapes */
                 outcome = BOUNCE;
                 e_dec = em < E0 ? em : E0;
+                /* the elastic remainder is slower than the damped loading:
+                 * back to the undamped step */
+                h = 1.0 / p->accuracy;
+                h2 = 0.5 * h;
             }
         }
     }

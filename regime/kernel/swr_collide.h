@@ -67,7 +67,11 @@ typedef struct {
 } swr_result;
 
 /* Optional trajectory sink: called every `stride` steps with time, overlap,
- * normal velocity, normal force, contact radius, tangential velocity, spin. */
+ * normal velocity, normal force, contact radius, tangential velocity, spin.
+ * SI units; the normal velocity is the approach speed d delta/dt (> 0 towards
+ * the wall, like swr_impact.vn), the force is the total normal contact force
+ * (> 0 repulsive). A trace makes swr_collide step through the whole contact
+ * (otherwise a conservative remainder is done in closed form). */
 typedef struct {
     int stride;
     void (*fn)(void *ctx, double t, double delta, double vn, double fn,

@@ -21,16 +21,23 @@ static double decel(double x, double v, double alpha)
     return 1.25 * x * s + (v > 0.0 ? BETA * alpha * sqrt(s) * v : 0.0);
 }
 
-/* COR and loading time (turning point, in units of delta_H / v) */
+/* COR and loading time (turning point, in units of delta_H / v).
+ * Classical RK4 through the loading phase; the unloading is elastic, so the
+ * rebound energy is the Hertz energy at the turning point:
+ * e^2 = x_max^(5/2) (energy 1/2 at first contact, U = x^(5/2)/2).
+ * The x^(1/4) of the dashpot is singular at first contact: the run starts at
+ * t0 from the series x = t - (16/45) b t^(9/4), x' = 1 - (4/5) b t^(5/4)
+ * (b = sqrt(15/8) alpha; the Hertz term is O(t^(5/2))) and the step grows
+ * geometrically (h <= t/8) up to H_MAX / (1 + alpha/4), the loading getting
+ * short with strong damping. */
+#define H_MAX 1.0e-3
 static double cor_and_time(double alpha, double *t_load)
 {
-    /* Classical RK4 through the loading phase. The unloading is elastic, so
-     * the rebound energy is the Hertz energy at the turning point:
-     * e^2 = x_max^(5/2) (energy 1/2 at first contact, U = x^(5/2)/2). The
-     * step shrinks with alpha since the loading gets short. */
-    const double h = 2.0e-4 / (1.0 + 0.25 * alpha);
-    double x = 0.0, v = 1.0;
+    const double b = BETA * alpha, hmax = H_MAX / (1.0 + 0.25 * alpha);
+    double t = 1e-7 * hmax;
+    double x = t - (16.0 / 45.0) * b * pow(t, 2.25), v = 1.0 - 0.8 * b * pow(t, 1.25);
     for (long i = 0; i < 100000000L; i++) {
+        const double h = t / 8.0 < hmax ? t / 8.0 : hmax;
         const double k1x = v, k1v = -decel(x, v, alpha);
         const double k2x = v + 0.5 * h * k1v, k2v = -decel(x + 0.5 * h * k1x, k2x, alpha);
         const double k3x = v + 0.5 * h * k2v, k3v = -decel(x + 0.5 * h * k2x, k3x, alpha);
@@ -60,11 +67,12 @@ static double cor_and_time(double alpha, double *t_load)
             const double t2 = tau * tau, t3 = t2 * tau;
             const double xm = (2.0 * t3 - 3.0 * t2 + 1.0) * x + (t3 - 2.0 * t2 + tau) * h * v
                             + (-2.0 * t3 + 3.0 * t2) * xn + (t3 - t2) * h * vn;
-            *t_load = (i + tau) * h;
+            *t_load = t + tau * h;
             return pow(xm, 1.25);
         }
         x = xn;
         v = vn;
+        t += h;
     }
     *t_load = INFINITY;
     return 0.0;

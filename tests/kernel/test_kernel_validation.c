@@ -73,6 +73,7 @@ static void hertz_contact_time(void **s)
     const char *kv[] = { "adhesion=none", "cor=elastic", NULL };
     swr_model *m = model(kv);
     const swr_params *p = swr_model_params(m);
+    double worst[2] = { 0.0, 0.0 };
     for (double d = 1e-6; d <= 1.001e-3; d *= sqrt(10.0)) {
         for (double v = 1e-3; v <= 50.0; v *= 10.0) {
             const double th = swp_hertz_contact_time(mass_of(p, d), 0.5 * d, estar_of(p), v);
@@ -81,6 +82,7 @@ static void hertz_contact_time(void **s)
                 collide_ok(m, d, v, 0.0, 0.0, stepped, &r);
                 if (REL(r.t_contact, th) > 0.01)
                     fail_msg("d %g v %g stepped %d: t_c %g vs %g", d, v, stepped, r.t_contact, th);
+                worst[stepped] = fmax(worst[stepped], REL(r.t_contact, th));
                 assert_false(r.contact_kept);
                 assert_true(REL(r.e_n, 1.0) < 1e-3);
                 if (stepped)
@@ -88,6 +90,8 @@ static void hertz_contact_time(void **s)
             }
         }
     }
+    print_message("Hertz contact time: max rel. error %.2e (closed-form remainder), %.2e (stepped)\n",
+                  worst[0], worst[1]);
     swr_model_free(m);
 }
 
@@ -96,6 +100,7 @@ static void constant_cor(void **s)
 {
     (void)s;
     const double es[] = { 0.1, 0.2, 0.3, 0.5, 0.7, 0.9, 0.95, 0.99 };
+    double worst = 0.0;
     for (size_t i = 0; i < sizeof es / sizeof es[0]; i++) {
         char c[32];
         snprintf(c, sizeof c, "cor=%g", es[i]);
@@ -107,10 +112,12 @@ static void constant_cor(void **s)
                 collide_ok(m, d, v, 0.0, 0.0, 0, &r);
                 if (REL(r.e_n, es[i]) > 0.005)
                     fail_msg("e %g d %g v %g: e_n %g", es[i], d, v, r.e_n);
+                worst = fmax(worst, REL(r.e_n, es[i]));
                 assert_true(r.e_target == es[i]);
             }
         swr_model_free(m);
     }
+    print_message("constant COR: max rel. error of the rebound e_n %.2e\n", worst);
     /* the table and the Brent refinement agree with the ODE */
     for (double e = 0.005; e < 1.0; e *= 1.7)
         assert_true(REL(swr_damping_cor(swr_damping_alpha(e)), e) < 1e-4);
@@ -126,6 +133,7 @@ static void jkr_contact_law(void **s)
 {
     (void)s;
     const double Es = 1.8829e9, gammas[] = { 0.05, 0.2, 2.0 }, Rs[] = { 0.5e-6, 25e-6, 0.5e-3 };
+    double wa = 0.0, wf = 0.0;
     for (int ig = 0; ig < 3; ig++)
         for (int ir = 0; ir < 3; ir++) {
             const double G = gammas[ig], R = Rs[ir];
@@ -158,6 +166,8 @@ static void jkr_contact_law(void **s)
                 fail_msg("G %g R %g: a0 %g vs %g", G, R, a_eq, a0);
             if (REL(-fmin, swp_jkr_pulloff_force(G, R)) > 1e-3)
                 fail_msg("G %g R %g: pull-off %g vs %g", G, R, -fmin, swp_jkr_pulloff_force(G, R));
+            wa = fmax(wa, REL(a_eq, a0));
+            wf = fmax(wf, REL(-fmin, swp_jkr_pulloff_force(G, R)));
             /* jump-in force -8/9 F_c, separation force -5/9 F_c */
             assert_true(REL(swr_normal_force(&n, n.xj), -8.0 / 9.0 * n.Fc) < 1e-9);
             assert_true(REL(swr_normal_force(&n, n.xf), -5.0 / 9.0 * n.Fc) < 1e-9);
@@ -171,6 +181,7 @@ static void jkr_contact_law(void **s)
             }
             assert_true(REL(U, n.Uc) < 1e-3);
         }
+    print_message("JKR quasi-static sweep: max rel. error a0 %.2e, pull-off %.2e\n", wa, wf);
     /* Hertz limit */
     assert_true(REL(swp_jkr_radius(1e-8, 0.0, 2e9, 1e-5), sqrt(1e-13)) < 1e-12);
     assert_true(swp_jkr_radius(-1e-8, 0.0, 2e9, 1e-5) == 0.0);
@@ -184,6 +195,7 @@ static void elastic_vcrit(void **s)
 {
     (void)s;
     const double gammas[] = { 0.05, 0.2, 1.0, 2.0 };
+    double w1 = 0.0, w2 = 0.0;
     for (int ig = 0; ig < 4; ig++) {
         char g[32];
         snprintf(g, sizeof g, "gamma=%g", gammas[ig]);
@@ -197,13 +209,17 @@ static void elastic_vcrit(void **s)
             assert_int_equal(swr_vcrit_normal(m, d, 1e-4 * vs, 1e3 * vs, 1e-5, &vc), 0);
             if (REL(vc, vs) > 0.005)
                 fail_msg("gamma %g d %g: v_crit %g vs V_s %g", gammas[ig], d, vc, vs);
+            w1 = fmax(w1, REL(vc, vs));
             assert_int_equal(swr_vcrit_normal(m2, d, 1e-4 * vs, 1e3 * vs, 1e-5, &vc), 0);
             if (REL(vc, vs / 0.999) > 0.005)
                 fail_msg("gamma %g d %g stepped: v_crit %g vs V_s/e %g", gammas[ig], d, vc, vs / 0.999);
+            w2 = fmax(w2, REL(vc, vs / 0.999));
         }
         swr_model_free(m);
         swr_model_free(m2);
     }
+    print_message("elastic v_crit vs V_s: max rel. error %.2e; stepped (e = 0.999) vs V_s/e %.2e\n",
+                  w1, w2);
 }
 
 /* Plastic COR: the rebound COR of a non-adhesive impact matches e_p(V_i)
@@ -214,6 +230,7 @@ static void plastic_cor(void **s)
     const char *modes[][3] = { { "adhesion=none", "cor=thornton", NULL },
                                { "adhesion=none", "cor=thornton", "cor_pair=particle" },
                                { "adhesion=none", "cor=thornton-asymptote", NULL } };
+    double worst = 0.0;
     for (int im = 0; im < 3; im++) {
         const char *kv[] = { modes[im][0], modes[im][1], modes[im][2], NULL };
         swr_model *m = model(kv);
@@ -234,9 +251,11 @@ static void plastic_cor(void **s)
                 assert_true(REL(r.e_target, ep) < 1e-12);
                 if (REL(r.e_n, ep) > 0.01)
                     fail_msg("mode %d d %g v %g: e_n %g vs e_p %g", im, d, v, r.e_n, ep);
+                worst = fmax(worst, REL(r.e_n, ep));
             }
         swr_model_free(m);
     }
+    print_message("plastic COR: max rel. error of e_n vs e_p(V_i) %.2e\n", worst);
 }
 
 /* The extreme grid: d 1 um - 1 mm, v_n 1 mm/s - 50 m/s, E 0.1 - 100 GPa,
@@ -315,6 +334,18 @@ static void oblique(void **s)
     /* spin that exactly rolls: no slip at first contact */
     collide_ok(m, 20e-6, 0.3, 0.5, -0.5 / 10e-6, 0, &r);
     assert_true(r.contact_kept && r.stick && isfinite(r.t_rest));
+    swr_model_free(m);
+
+    /* gross sliding through the whole contact: e_t = 1 - mu (1 + e_n) vn / vt */
+    const char *kvs[] = { "adhesion=none", "cor=0.5", NULL };
+    m = model(kvs);
+    const double vts[] = { 2.0, 5.0, 20.0 };
+    for (int i = 0; i < 3; i++) {
+        collide_ok(m, 50e-6, 1.0, vts[i], 0.0, 0, &r);
+        const double et = 1.0 - 0.05 * (1.0 + r.e_n) / vts[i];
+        if (REL(r.e_t, et) > 0.005)
+            fail_msg("vt %g: e_t %g vs %g", vts[i], r.e_t, et);
+    }
     swr_model_free(m);
 
     const char *kv[] = { "mu=0", NULL };
