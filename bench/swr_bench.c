@@ -156,7 +156,7 @@ int main(int argc, char **argv)
 
     /* the lowest accuracy setting (of a list) with v_crit within 0.1 %, and one
      * collision there */
-    static const double accs[] = { 60, 90, 120, 180, 240, 360, 480, 720, 960, 1440, 1920 };
+    static const double accs[] = { 10, 15, 20, 30, 45, 60, 90, 120, 180, 240, 360, 480, 720, 960, 1440, 1920 };
     double acc01 = 0.0, err01 = 0.0, t_coll01 = 0.0, steps01 = 0.0;
     for (size_t k = 0; k < sizeof accs / sizeof accs[0]; k++) {
         swr_params pa = p;

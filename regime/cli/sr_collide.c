@@ -172,7 +172,7 @@ int sr_cmd_collide(int argc, char **argv)
     printf("contact_kept: %d\nstick: %d\n", r.contact_kept, r.stick);
     printf("e_n: %.9g\n", r.e_n);
     if (isfinite(r.e_t)) printf("e_t: %.9g\n", r.e_t);
-    else printf("e_t: none (vt = 0)\n");
+    else printf("e_t: none (no tangential rebound: vt = 0 or contact kept)\n");
     printf("t_contact: %.9g\ndelta_max: %.9g\ne_target: %.9g\n", r.t_contact, r.delta_max, r.e_target);
     printf("t_rest: %.9g\ns_rest: %.9g\n", r.t_rest, r.s_rest);
     printf("dt: %.9g\nsteps: %ld\nmax_steps: %ld\n", r.dt, r.steps, r.max_steps);
