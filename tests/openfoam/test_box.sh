@@ -3,8 +3,9 @@
 # seven force-free parcels whose fates follow from the fixture regime map, the
 # tangential gate and the adhesion shear gate (see box/constant/kinematicCloudProperties).
 # Checked: serial totals and deposit, decomposePar + mpirun -np 2 (same totals,
-# same deposit), restart from t = 0.05 (same final totals and deposit), and the
-# FatalErrors for a missing wallShearStress field, a missing rhoAir and a bad regime key.
+# same deposit), restart from t = 0.05 serial and np 2 (same final totals and
+# deposit), and the FatalErrors for a missing wallShearStress field, a missing
+# rhoAir and a bad regime key.
 set -euo pipefail
 # shellcheck source=common.sh
 . "$(dirname "$0")/common.sh"
@@ -93,6 +94,18 @@ diff <(deposit_values "$tmp/serial/0.1/kinematicCloud:snowDeposit" wall) \
      <(deposit_values "$tmp/restart/0.1/kinematicCloud:snowDeposit" wall) > /dev/null \
     || fail "restarted deposit field differs from the uninterrupted one"
 echo "restart: ok ($(series_last "$tmp/restart" 0.05))"
+
+# 3b. parallel restart: np 2 to 0.05, np 2 on to 0.1 (per-processor totals restored)
+prep "$tmp/parRestart"
+(cd "$tmp/parRestart" && foamDictionary -entry endTime -set 0.05 system/controlDict > /dev/null \
+    && run log.decomposePar decomposePar \
+    && run log.run1 mpirun -np 2 --oversubscribe icoUncoupledKinematicParcelFoam -parallel \
+    && foamDictionary -entry endTime -set 0.1 system/controlDict > /dev/null \
+    && run log.run2 mpirun -np 2 --oversubscribe icoUncoupledKinematicParcelFoam -parallel \
+    && run log.reconstructPar reconstructPar -latestTime)
+check_series "$tmp/parRestart" 0.05
+check_deposit "$tmp/parRestart"
+echo "parallel restart: ok ($(series_last "$tmp/parRestart" 0.05))"
 
 # 4. errors: each must stop the solver with a message naming what to fix
 expect_fatal() { # CASE PATTERN
