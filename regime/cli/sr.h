@@ -50,6 +50,9 @@ void sr_help(const char *cmd);
 int sr_auto_vrange(const swr_model *m, swt_grid *g, int set_min, int set_max,
                    const swt_vcrit_opts *o, char *err, size_t errlen);
 
+/* "normal contact kept" / "full stick" / "full stick, at rest within S m" */
+const char *sr_outcome_text(const swt_vcrit_opts *o, char *buf, size_t n);
+
 int sr_cmd_collide(int argc, char **argv);
 int sr_cmd_vcrit(int argc, char **argv);
 int sr_cmd_map(int argc, char **argv);

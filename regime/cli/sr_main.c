@@ -92,6 +92,7 @@ static const char *help_vcrit =
 "\n"
 "SYNOPSIS\n"
 "    snowregime vcrit --d D1,D2,... [--vt V | --angle DEG] [--omega W] [--full-stick]\n"
+"                     [--max-slide S]\n"
 "                     [--tol T] [--vmin V] [--vmax V] [--scan-ratio R] [--threads N]\n"
 "                     [--config FILE] [--set KEY=VALUE]...\n"
 "\n"
@@ -109,6 +110,8 @@ static const char *help_vcrit =
 "    --angle DEG       instead: impact angle from the wall normal, vt = vn tan(DEG)\n"
 "    --omega W         initial spin [rad/s] (default 0)\n"
 "    --full-stick      outcome = contact kept AND sliding and rolling arrested\n"
+"    --max-slide S     outcome = full stick AND at rest within S metres of the\n"
+"                      impact point (the kernel's predicted travel s_rest)\n"
 "    --tol T           relative bracket width (default 1e-3)\n"
 "    --vmin V, --vmax V  search range [m/s] (default 1e-3, 50)\n"
 "    --scan-ratio R    ratio of neighbouring scan speeds (default 2)\n"
@@ -136,7 +139,7 @@ static const char *help_map =
 "\n"
 "SYNOPSIS\n"
 "    snowregime map --out DIR [--nd N] [--nv N] [--dmin D] [--dmax D] [--vmin V]\n"
-"                   [--vmax V] [--vlog 0|1] [--degree K] [--full-stick]\n"
+"                   [--vmax V] [--vlog 0|1] [--degree K] [--full-stick] [--max-slide S]\n"
 "                   [--vt LIST | --angle LIST] [--omega W] [--refine 0|1] [--tol T]\n"
 "                   [--threads N] [--no-plot] [--config FILE] [--set KEY=VALUE]...\n"
 "\n"
@@ -163,6 +166,11 @@ static const char *help_map =
 "    --vlog 0|1        log-spaced speeds (default 1)\n"
 "    --degree K        polynomial degree of the fit, 1..8 (default 3)\n"
 "    --full-stick      outcome = full stick (default: normal contact kept)\n"
+"    --max-slide S     outcome = full stick AND at rest within S m of the impact\n"
+"                      point (the kernel's predicted travel s_rest); with the\n"
+"                      kernel's friction and rolling resistance an adhered\n"
+"                      particle always stops eventually, so this is what makes the\n"
+"                      tangential speed / angle a real axis\n"
 "    --vt LIST         tangential speeds [m/s]: one map each (full stick)\n"
 "    --angle LIST      impact angles from the normal [deg]: one map each (full stick)\n"
 "    --omega W         initial spin [rad/s] (default 0)\n"
@@ -188,7 +196,7 @@ static const char *help_map =
 "EXAMPLES\n"
 "    snowregime map --out results/map\n"
 "    snowregime map --out results/map-g05 --set gamma=0.5 --degree 4\n"
-"    snowregime map --out results/angles --angle 0,30,60 --nd 20 --nv 30\n";
+"    snowregime map --out results/angles --angle 0,30,60 --max-slide 100e-6 --nd 20 --nv 30\n";
 
 static const char *help_sensitivity =
 "NAME\n"
@@ -209,8 +217,9 @@ static const char *help_sensitivity =
 "    both maps have an interface point.\n"
 "\n"
 "OPTIONS\n"
-"    Grid options as for snowregime map (the automatic speed range comes from\n"
-"    the baseline); --threads N (default 2); --no-plot; settings.\n"
+"    Grid options as for snowregime map (--nd --nv --dmin --dmax --vmin --vmax\n"
+"    --vlog --refine --tol --max-slide; the automatic speed range comes from the\n"
+"    baseline); --threads N (default 2); --no-plot; settings.\n"
 "    --out DIR         output folder (created; required)\n"
 "\n"
 "OUTPUT\n"
@@ -339,6 +348,15 @@ int sr_settings_apply(const sr_settings *s, swr_params *p, char *err, size_t err
         return -1;
     }
     return 0;
+}
+
+const char *sr_outcome_text(const swt_vcrit_opts *o, char *buf, size_t n)
+{
+    if (o->max_slide > 0.0)
+        snprintf(buf, n, "full stick, at rest within %g m of the impact", o->max_slide);
+    else
+        snprintf(buf, n, "%s", o->full_stick ? "full stick" : "normal contact kept");
+    return buf;
 }
 
 int sr_usage_error(const char *cmd, const char *msg)

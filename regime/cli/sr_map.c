@@ -53,6 +53,7 @@ static int mapopt_parse(sr_args *a, sr_mapopt *m)
     DBL_OPT("--vmin", 1e-300, 1e4, m->g.vmin, m->set_vmin = 1)
     DBL_OPT("--vmax", 1e-300, 1e4, m->g.vmax, m->set_vmax = 1)
     DBL_OPT("--tol", 1e-12, 0.5, m->o.rtol, (void)0)
+    DBL_OPT("--max-slide", 1e-300, 1e3, m->o.max_slide, (void)0)
 #undef INT_OPT
 #undef DBL_OPT
     return 0;
@@ -303,7 +304,8 @@ int sr_cmd_map(int argc, char **argv)
     for (int k = 0; k < nmaps && rc == 0; k++) {
         swt_vcrit_opts o = mo.o;
         char sfx[64] = "", what[160];
-        const char *outc = o.full_stick ? "full stick" : "normal contact kept";
+        char ocb[160];
+        const char *outc = sr_outcome_text(&o, ocb, sizeof ocb);
         if (axis && axis_angle) {
             o.tan_angle = tan(axis[k] * M_PI / 180.0);
             snprintf(sfx, sizeof sfx, "-angle%g", axis[k]);
@@ -444,9 +446,10 @@ int sr_cmd_sensitivity(int argc, char **argv)
                 mo.g.nd, mo.g.nv, mo.g.dmin, mo.g.dmax, mo.g.vmin, mo.g.vmax, mo.g.vlog ? "log" : "linear");
         fprintf(fc, "# d_shift_rel: mean of d_crit/d_crit,baseline - 1 over the common speed columns\n");
         fprintf(fc, "param,value,n_stick,ratio,d_shift_rel,columns,n_interface\n");
+        char ocb[160];
         fprintf(fm, "Grid %d x %d: d %g..%g m, v_n %.4g..%.4g m/s (%s); outcome: %s.\n\n",
                 mo.g.nd, mo.g.nv, mo.g.dmin, mo.g.dmax, mo.g.vmin, mo.g.vmax, mo.g.vlog ? "log" : "linear",
-                mo.o.full_stick ? "full stick" : "normal contact kept");
+                sr_outcome_text(&mo.o, ocb, sizeof ocb));
         fprintf(fm, "| parameter | value | sticking points | ratio to baseline | interface shift (mean d_crit change) | common columns |\n");
         fprintf(fm, "|---|---|---|---|---|---|\n");
         fprintf(fi, "param,value,vn_m_s,dcrit_m\n");

@@ -55,6 +55,7 @@ int sr_cmd_vcrit(int argc, char **argv)
         else if (sr_opt(&a, "--vmin", &v)) { x = &o.vmin; name = "--vmin"; lo = 1e-300; hi = 1e4; }
         else if (sr_opt(&a, "--vmax", &v)) { x = &o.vmax; name = "--vmax"; lo = 1e-300; hi = 1e4; }
         else if (sr_opt(&a, "--scan-ratio", &v)) { x = &o.scan_ratio; name = "--scan-ratio"; lo = 1.01; hi = 100; }
+        else if (sr_opt(&a, "--max-slide", &v)) { x = &o.max_slide; name = "--max-slide"; lo = 1e-300; hi = 1e3; }
         else {
             snprintf(a.err, sizeof a.err, "unknown option '%s' (see snowregime vcrit --help)", argv[a.i]);
             rc = sr_usage_error(cmd, a.err); goto out;
@@ -90,9 +91,9 @@ int sr_cmd_vcrit(int argc, char **argv)
         }
     if (rc == 0) {
         const double Es = swp_effective_modulus(p.E, p.nu, p.E_wall, p.nu_wall);
+        char oc[160];
         printf("# snowregime vcrit: critical normal sticking velocity, outcome = %s\n",
-               o.full_stick ? "full stick (contact kept, sliding and rolling arrested)"
-                            : "normal contact kept");
+               sr_outcome_text(&o, oc, sizeof oc));
         printf("# search: v in [%g, %g] m/s, scan ratio %g, bisection to v_hi/v_lo <= 1 + %g\n",
                o.vmin, o.vmax, o.scan_ratio, o.rtol);
         if (have_angle) printf("# impact angle %g deg from the normal (vt = vn tan angle)\n", angle);
@@ -115,7 +116,7 @@ int sr_cmd_vcrit(int argc, char **argv)
                 printf(", Thornton-Ning V_s %.6g m/s",
                        swp_sticking_velocity_tn(p.gamma, p.rho, Es, 0.5 * d[k]));
             printf("\n");
-            if (r->changes > 1)
+            if (r->changes > 1 || (r->status != SWT_VCRIT_FOUND && r->changes > 0))
                 printf("# warning: d %.6g: non-monotone outcome: %d stick/bounce changes in the scan%s%.6g m/s\n",
                        d[k], r->changes, r->v_restick > 0 ? ", sticks again at " : "",
                        r->v_restick > 0 ? r->v_restick : 0.0);

@@ -118,7 +118,7 @@ static void map_row(void *p, int i)
         }
         if (r.msg[0] && !c->msg[i][0]) snprintf(c->msg[i], sizeof c->msg[i], "%s", r.msg);
         mp->kept[k] = r.contact_kept != 0;
-        mp->stick[k] = c->o->full_stick ? (r.stick != 0) : (r.contact_kept != 0);
+        mp->stick[k] = (unsigned char)swt_outcome(c->o, &r);
         mp->status[k] = (unsigned char)st;
         mp->e_n[k] = (float)(isfinite(r.e_n) ? r.e_n : 0.0);
         mp->e_t[k] = (float)(isfinite(r.e_t) ? r.e_t : 0.0);

@@ -15,6 +15,13 @@ void swt_vcrit_opts_default(swt_vcrit_opts *o)
     o->vt = 0.0;
     o->tan_angle = 0.0;
     o->omega = 0.0;
+    o->max_slide = 0.0;
+}
+
+int swt_outcome(const swt_vcrit_opts *o, const swr_result *res)
+{
+    if (o->max_slide > 0.0) return res->stick != 0 && res->s_rest <= o->max_slide;
+    return o->full_stick ? (res->stick != 0) : (res->contact_kept != 0);
 }
 
 int swt_sticks(const swr_model *m, double d, double vn, const swt_vcrit_opts *o,
@@ -37,7 +44,7 @@ int swt_sticks(const swr_model *m, double d, double vn, const swt_vcrit_opts *o,
         if (res.dt > r->dt_max) r->dt_max = res.dt;
     }
     if (msg && res.msg[0] && !msg[0]) snprintf(msg, msglen, "%s", res.msg);
-    return o->full_stick ? (res.stick != 0) : (res.contact_kept != 0);
+    return swt_outcome(o, &res);
 }
 
 swt_vcrit_status swt_vcrit(const swr_model *m, double d, const swt_vcrit_opts *o,

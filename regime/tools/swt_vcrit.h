@@ -25,6 +25,8 @@ typedef struct {
     double vt;            /* tangential speed [m/s] of every impact */
     double tan_angle;     /* if > 0: vt = vn * tan_angle instead (fixed impact angle) */
     double omega;         /* initial spin [rad/s] */
+    double max_slide;     /* > 0: "sticks" = full stick AND the predicted travel along the
+                             wall until rest (swr_result.s_rest) <= max_slide [m]; 0: off */
 } swt_vcrit_opts;
 
 typedef enum {
@@ -48,6 +50,8 @@ typedef struct {
 } swt_vcrit_result;
 
 void swt_vcrit_opts_default(swt_vcrit_opts *o);
+/* The outcome of one kernel result under the options: 1 sticks, 0 not. */
+int swt_outcome(const swt_vcrit_opts *o, const swr_result *res);
 /* Does diameter d stick at normal speed vn? Returns 1/0, or -1 on a kernel
  * error (message copied to msg). Accumulates counters into r when not NULL. */
 int swt_sticks(const swr_model *m, double d, double vn, const swt_vcrit_opts *o,

@@ -46,17 +46,22 @@ grep -q '^    degree          2;' "$WORK/m2/regime.coeffs" || fail "degree 2 not
 # explicit range and a rerun into an existing folder replaces files atomically
 "$SR" map --out "$out" --nd 10 --nv 20 --vmin 0.05 --vmax 5 --degree 2 --no-plot >/dev/null || fail "rerun into existing folder"
 grep -q '^grid_points: 200$' "$out/fit.txt" || fail "rerun did not replace fit.txt"
-# third axis: one map per tangential speed, full stick
-"$SR" map --out "$WORK/vt" --nd 10 --nv 12 --vt 0,0.5 --no-plot >"$WORK/vt.log" 2>&1 || { cat "$WORK/vt.log"; fail "map --vt"; }
+# third axis: one map per tangential speed, full stick, at rest within 100 um
+"$SR" map --out "$WORK/vt" --nd 10 --nv 12 --vt 0,0.5 --max-slide 1e-4 --no-plot >"$WORK/vt.log" 2>&1 || { cat "$WORK/vt.log"; fail "map --vt"; }
 for s in -vt0 -vt0.5; do
     for f in map$s.csv interface$s.csv fit$s.txt; do [ -s "$WORK/vt/$f" ] || fail "missing $f"; done
     # a map of the series is written with its coeffs, or says why it has none
     [ -s "$WORK/vt/regime$s.coeffs" ] || grep -q '^no fit: ' "$WORK/vt/fit$s.txt" || fail "regime$s.coeffs missing without reason"
 done
-grep -q 'full stick, vt 0.5' "$WORK/vt/map-vt0.5.csv" || fail "third axis should use full stick"
+grep -q 'full stick.*vt 0.5' "$WORK/vt/map-vt0.5.csv" || fail "third axis should use full stick"
 # a tangential speed can only reduce full sticking
 n0=$(awk -F, '!/^#/ && !/^d_m/ && $3 == 1' "$WORK/vt/map-vt0.csv" | wc -l)
 n5=$(awk -F, '!/^#/ && !/^d_m/ && $3 == 1' "$WORK/vt/map-vt0.5.csv" | wc -l)
-[ "$n5" -le "$n0" ] || fail "vt 0.5 sticks more ($n5) than vt 0 ($n0)"
+[ "$n5" -lt "$n0" ] || fail "vt 0.5 with a bounded slide should stick less ($n5) than vt 0 ($n0)"
+# without --max-slide the full stick of vt 0 is the normal outcome of the plain map
+"$SR" map --out "$WORK/plain" --nd 10 --nv 12 --vmin "$(awk -F, '!/^#/ && !/^d_m/ { print $2; exit }' "$WORK/vt/map-vt0.csv")" \
+    --vmax "$(awk -F, '!/^#/ && !/^d_m/ { v = $2 } END { print v }' "$WORK/vt/map-vt0.csv")" --no-plot >/dev/null || fail "plain map"
+np=$(awk -F, '!/^#/ && !/^d_m/ && $3 == 1' "$WORK/plain/map.csv" | wc -l)
+[ "$np" -ge "$n0" ] || fail "full stick at vt 0 ($n0) exceeds normal sticking ($np)"
 ok "map checks done"
 finish
