@@ -13,7 +13,6 @@ void swr_normal_init(swr_normal *n, double R, double Es, double gamma)
     n->B = sqrt(8.0 * M_PI * n->gamma * Es);
     n->C = sqrt(2.0 * M_PI * n->gamma / Es);
     n->c = R * n->C;
-    n->K = (4.0 / 3.0) * Es * sqrt(R);
     /* U(x) = e1 x^10 - e2 x^7 + e3 x^4 - Gj: the primitive of F d delta
      * (swp_jkr_energy) written in x = sqrt(a) */
     n->e1 = 2.0 * n->A / (5.0 * R);

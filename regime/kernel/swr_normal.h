@@ -24,7 +24,6 @@ typedef struct {
     double R, Es, gamma;     /* R*, E*, Gamma (0: Hertz) */
     double A, B, C;          /* F = A x^6 - B x^3, delta = x^4/R - C x */
     double c;                /* quartic x^4 - c x - R delta = 0: c = R C */
-    double K;                /* Hertz force K delta^(3/2): K = (4/3) E* sqrt(R) */
     double xj, xf;           /* sqrt(a_jump), sqrt(a_f) (0 for Hertz) */
     double a0;               /* equilibrium contact radius (0 for Hertz) */
     double Fc;               /* pull-off force 1.5 pi Gamma R */
@@ -77,12 +76,6 @@ static inline double swr_normal_energy(const swr_normal *n, double x)
 {
     const double x2 = x * x, x4 = x2 * x2, x7 = x4 * x2 * x;
     return n->e1 * x7 * x2 * x - n->e2 * x7 + n->e3 * x4 - n->Gj;
-}
-
-/* Hertz force at overlap delta (the part the dashpot may at most cancel). */
-static inline double swr_normal_hertz(const swr_normal *n, double delta)
-{
-    return delta > 0.0 ? n->K * delta * sqrt(delta) : 0.0;
 }
 
 #endif

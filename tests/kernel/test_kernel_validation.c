@@ -18,6 +18,7 @@
 #include "swr_collide.h"
 #include "swr_damping.h"
 #include "swr_normal.h"
+#include "swr_wall.h"
 
 #define REL(x, ref) (fabs((x) - (ref)) / fabs(ref))
 
@@ -410,6 +411,19 @@ static void threads(void **s)
     swr_model_free(m);
 }
 
+/* The flat wall: overlap R - z, normal +z, R* = R. */
+static void wall_geometry(void **s)
+{
+    (void)s;
+    const swr_wall w = { SWR_WALL_FLAT };
+    swr_wall_contact c;
+    const double pos[3] = { 1.0, -2.0, 24e-6 };
+    swr_wall_contact_at(&w, pos, 25e-6, &c);
+    assert_true(REL(c.delta, 1e-6) < 1e-9);
+    assert_true(c.n[0] == 0.0 && c.n[1] == 0.0 && c.n[2] == 1.0);
+    assert_true(c.Rstar == 25e-6 && swr_wall_rstar(&w, 25e-6) == 25e-6);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -422,6 +436,7 @@ int main(void)
         cmocka_unit_test(oblique),
         cmocka_unit_test(tabor_warning),
         cmocka_unit_test(threads),
+        cmocka_unit_test(wall_geometry),
     };
     return cmocka_run_group_tests_name("kernel_validation", tests, NULL, NULL);
 }
