@@ -35,5 +35,15 @@ grep -q "sticks over the whole range" "$WORK/all.txt" || fail "sticks-everywhere
 "$SR" vcrit --d 1e-04 --vmin 20 --vmax 40 >"$WORK/none.txt" 2>/dev/null; rc=$?
 [ $rc -eq 1 ] || fail "bounces-everywhere range: exit $rc, want 1"
 grep -q "bounces over the whole range" "$WORK/none.txt" || fail "bounces-everywhere not reported"
+# settings: a config file acts like --set, and --set given later overrides it
+printf '# test config\ngamma = 0.5\ncor thornton\n' >"$WORK/g.cfg"
+a=$("$SR" vcrit --d 3e-05 --config "$WORK/g.cfg" | grep -v '^#')
+b=$("$SR" vcrit --d 3e-05 --set gamma=0.5 | grep -v '^#')
+c=$("$SR" vcrit --d 3e-05 --config "$WORK/g.cfg" --set gamma=0.2 | grep -v '^#')
+d0=$("$SR" vcrit --d 3e-05 | grep -v '^#')
+[ "$a" = "$b" ] || fail "config gamma 0.5 ($a) != --set gamma=0.5 ($b)"
+[ "$c" = "$d0" ] || fail "--set after --config should win ($c vs $d0)"
+[ "$a" != "$d0" ] || fail "gamma 0.5 should change v_crit"
+"$SR" vcrit --d 3e-05 --config "$WORK/g.cfg" | grep -q '^# setting gamma 0.5' || fail "settings not echoed as comments"
 ok "vcrit checks done"
 finish
