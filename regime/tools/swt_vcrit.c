@@ -47,8 +47,27 @@ int swt_sticks(const swr_model *m, double d, double vn, const swt_vcrit_opts *o,
     return swt_outcome(o, &res);
 }
 
+typedef struct {
+    const swr_model *m;
+    double d;
+    const swt_vcrit_opts *o;
+} kernel_ctx;
+
+static int kernel_outcome(void *p, double v, swt_vcrit_result *r)
+{
+    kernel_ctx *c = p;
+    return swt_sticks(c->m, c->d, v, c->o, r, r->msg, sizeof r->msg);
+}
+
 swt_vcrit_status swt_vcrit(const swr_model *m, double d, const swt_vcrit_opts *o,
                            swt_vcrit_result *r)
+{
+    kernel_ctx c = { m, d, o };
+    return swt_vcrit_search(kernel_outcome, &c, o, r);
+}
+
+swt_vcrit_status swt_vcrit_search(int (*sticks)(void *ctx, double v, swt_vcrit_result *r),
+                                  void *ctx, const swt_vcrit_opts *o, swt_vcrit_result *r)
 {
     memset(r, 0, sizeof *r);
     const double ratio = o->scan_ratio > 1.0 ? o->scan_ratio : 2.0;
@@ -60,7 +79,7 @@ swt_vcrit_status swt_vcrit(const swr_model *m, double d, const swt_vcrit_opts *o
     double v_prev = 0.0;
     for (int k = 0; k < nscan; k++) {
         double v = (k == nscan - 1) ? o->vmax : o->vmin * exp(step * k);
-        int s = swt_sticks(m, d, v, o, r, r->msg, sizeof r->msg);
+        int s = sticks(ctx, v, r);
         if (s < 0) { r->status = SWT_VCRIT_ERROR; r->vcrit = o->vmin; return r->status; }
         if (k > 0 && s != prev) {
             r->changes++;
@@ -86,7 +105,7 @@ swt_vcrit_status swt_vcrit(const swr_model *m, double d, const swt_vcrit_opts *o
     /* bisection in log(v); the loop bound guards against a bad rtol */
     for (int it = 0; it < 200 && r->v_hi / r->v_lo > 1.0 + rtol; it++) {
         double v = sqrt(r->v_lo * r->v_hi);
-        int s = swt_sticks(m, d, v, o, r, r->msg, sizeof r->msg);
+        int s = sticks(ctx, v, r);
         if (s < 0) { r->status = SWT_VCRIT_ERROR; r->vcrit = o->vmin; return r->status; }
         if (s) r->v_lo = v; else r->v_hi = v;
     }

@@ -56,9 +56,14 @@ int swt_outcome(const swt_vcrit_opts *o, const swr_result *res);
  * error (message copied to msg). Accumulates counters into r when not NULL. */
 int swt_sticks(const swr_model *m, double d, double vn, const swt_vcrit_opts *o,
                swt_vcrit_result *r, char *msg, size_t msglen);
-/* The search. Returns r->status. */
+/* The search for diameter d with the kernel. Returns r->status. */
 swt_vcrit_status swt_vcrit(const swr_model *m, double d, const swt_vcrit_opts *o,
                            swt_vcrit_result *r);
+/* The same search on any outcome function: sticks(ctx, v, r) returns 1 (sticks),
+ * 0 (does not) or -1 (error, message in r->msg); it may update r's counters.
+ * Uses o->vmin, vmax, rtol, scan_ratio only. */
+swt_vcrit_status swt_vcrit_search(int (*sticks)(void *ctx, double v, swt_vcrit_result *r),
+                                  void *ctx, const swt_vcrit_opts *o, swt_vcrit_result *r);
 
 #ifdef __cplusplus
 }

@@ -15,6 +15,7 @@
 #include "sww.h"
 #include "swt_fit.h"
 #include "swt_io.h"
+#include "swt_vcrit.h"
 
 /* points of ln d = c0 + c1 x + c2 x^2 + c3 x^3, x = ln v */
 static void make_points(swt_interface *it, int n, const double *c, int deg, double noise)
@@ -212,9 +213,88 @@ static void parse_is_strict(void **s)
     assert_non_null(strstr(err, "'-2'"));
 }
 
+/* synthetic outcomes: sticks on the union of intervals [lo_k, hi_k) */
+typedef struct {
+    int n;
+    double lo[4], hi[4];
+    long calls;
+} bands;
+
+static int band_sticks(void *p, double v, swt_vcrit_result *r)
+{
+    bands *b = p;
+    b->calls++;
+    r->collisions++;
+    for (int k = 0; k < b->n; k++)
+        if (v >= b->lo[k] && v < b->hi[k]) return 1;
+    return 0;
+}
+
+static int fail_sticks(void *p, double v, swt_vcrit_result *r)
+{
+    (void)p; (void)v;
+    snprintf(r->msg, sizeof r->msg, "kernel says no");
+    return -1;
+}
+
+static void vcrit_search_bisects_to_tolerance(void **s)
+{
+    (void)s;
+    const double tols[3] = { 1e-2, 1e-3, 1e-6 }, vstar[4] = { 0.00123, 0.4567, 3.21, 49.0 };
+    for (int t = 0; t < 3; t++)
+        for (int k = 0; k < 4; k++) {
+            bands b = { 1, { 0.0 }, { vstar[k] }, 0 };
+            swt_vcrit_opts o;
+            swt_vcrit_opts_default(&o);
+            o.rtol = tols[t];
+            swt_vcrit_result r;
+            assert_int_equal(swt_vcrit_search(band_sticks, &b, &o, &r), SWT_VCRIT_FOUND);
+            assert_true(fabs(r.vcrit / vstar[k] - 1.0) <= 0.5 * tols[t] + 1e-12);
+            assert_true(r.v_lo < vstar[k] && r.v_hi >= vstar[k]);
+            assert_true(r.v_hi / r.v_lo <= 1.0 + tols[t]);
+            assert_int_equal(r.changes, 1);
+            assert_int_equal(r.collisions, b.calls);
+            /* scan (~16) + bisection (log2(ln 2 / tol)) */
+            assert_true(b.calls <= 17 + (long)ceil(log2(log(2.0) / tols[t])) + 1);
+        }
+}
+
+static void vcrit_search_reports_ranges_and_nonmonotone(void **s)
+{
+    (void)s;
+    swt_vcrit_opts o;
+    swt_vcrit_opts_default(&o);
+    swt_vcrit_result r;
+    bands all = { 1, { 0.0 }, { 1e9 }, 0 }, none = { 0, { 0 }, { 0 }, 0 };
+    assert_int_equal(swt_vcrit_search(band_sticks, &all, &o, &r), SWT_VCRIT_ALL_STICK);
+    assert_true(r.vcrit == o.vmax && r.changes == 0);
+    assert_int_equal(swt_vcrit_search(band_sticks, &none, &o, &r), SWT_VCRIT_NO_STICK);
+    assert_true(r.vcrit == o.vmin && r.changes == 0);
+    /* sticks below 0.2, bounces, sticks again in [2, 5): first change is v_crit */
+    bands two = { 2, { 0.0, 2.0 }, { 0.2, 5.0 }, 0 };
+    assert_int_equal(swt_vcrit_search(band_sticks, &two, &o, &r), SWT_VCRIT_FOUND);
+    assert_true(fabs(r.vcrit / 0.2 - 1.0) <= 0.5 * o.rtol + 1e-12);
+    assert_int_equal(r.changes, 3);
+    assert_true(r.v_restick >= 2.0 && r.v_restick < 5.0);
+    /* bounces at low speed, sticks in [0.5, 3): found, and the extra change is counted */
+    bands mid = { 1, { 0.5 }, { 3.0 }, 0 };
+    assert_int_equal(swt_vcrit_search(band_sticks, &mid, &o, &r), SWT_VCRIT_FOUND);
+    assert_true(fabs(r.vcrit / 3.0 - 1.0) <= 0.5 * o.rtol + 1e-12);
+    assert_int_equal(r.changes, 2);
+    /* only bounce -> stick in range: no critical velocity, change reported */
+    bands up = { 1, { 1.0 }, { 1e9 }, 0 };
+    assert_int_equal(swt_vcrit_search(band_sticks, &up, &o, &r), SWT_VCRIT_NO_STICK);
+    assert_int_equal(r.changes, 1);
+    /* errors propagate with the message */
+    assert_int_equal(swt_vcrit_search(fail_sticks, NULL, &o, &r), SWT_VCRIT_ERROR);
+    assert_string_equal(r.msg, "kernel says no");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(vcrit_search_bisects_to_tolerance),
+        cmocka_unit_test(vcrit_search_reports_ranges_and_nonmonotone),
         cmocka_unit_test(fit_recovers_polynomial),
         cmocka_unit_test(fit_reports_residuals),
         cmocka_unit_test(fit_refuses_bad_input),
