@@ -327,6 +327,13 @@ void swt_gnuplot_png_header(FILE *gp, const char *png, int width, int height)
     fprintf(gp, "set output '%s'\n", png);
 }
 
+double swt_thread_cpu(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
 double swt_now(void)
 {
     struct timespec ts;

@@ -59,6 +59,8 @@ void swt_gnuplot_png_header(FILE *gp, const char *png, int width, int height);
 
 /* Monotonic wall clock [s]. */
 double swt_now(void);
+/* CPU time of the calling thread [s]. */
+double swt_thread_cpu(void);
 
 #ifdef __cplusplus
 }
