@@ -71,14 +71,18 @@ cli_map_png=$(median_of "$sr" map --out "$tmp/map" --threads 2)
 
 coll=$(get collision_us); accerr=$(get vcrit_rel_error_max)
 acc01=$(get accuracy_for_0.1pct); coll01=$(get collision_us_at_0.1pct); err01=$(get vcrit_rel_error_at_it)
+ccoll=$(get collision_cpu_us); ccoll01=$(get collision_cpu_us_at_0.1pct)
 v46=$(get vcrit46_ms); grid=$(get map_grid_ms); map=$(get map_total_ms)
 awk -v coll="$coll" -v acc="$accerr" -v v46="$v46" -v grid="$grid" -v map="$map" \
+ -v ccoll="$ccoll" -v ccoll01="$ccoll01" \
     -v acc01="$acc01" -v coll01="$coll01" -v err01="$err01" -v cv="$cli_vcrit" -v cm="$cli_map" -v cmp="$cli_map_png" 'BEGIN {
     printf "%-52s %12s %12s %12s\n", "figure", "measured", "target", "DEM codes"
-    printf "%-52s %9.3g us %9s us %10s s\n", "one collision (median)", coll, "10", "0.35"
+    printf "%-52s %9.3g us %9s us %10s s\n", "one collision (median, wall)", coll, "10", "0.35"
+    printf "%-52s %9.3g us\n", "  the same, thread CPU time", ccoll
     printf "%-52s %12.2g %12s\n", "  v_crit rel. error at this accuracy (max of 3 d)", acc, "1e-3"
     if (acc01 > 0) {
         printf "%-52s %9.3g us %9s us %10s s\n", "one collision at accuracy " acc01 " (v_crit within 0.1 %)", coll01, "10", "0.35"
+        printf "%-52s %9.3g us\n", "  the same, thread CPU time", ccoll01
         printf "%-52s %12.2g\n", "  v_crit rel. error there (max of 3 d)", err01
     } else
         printf "%-52s\n", "no accuracy setting <= 1920 reaches 0.1 % on v_crit"

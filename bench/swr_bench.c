@@ -47,14 +47,14 @@ static void vc_one(void *p, int k)
 /* mean wall time of one collision over impacts at 0.5, 0.9, 1.1, 2 x v_crit of
  * every diameter (repeated for at least 50 ms); median over reps */
 static double time_collisions(const swr_model *m, const double *d, const double *vc, int nd,
-                              int reps, double *steps_mean)
+                              int reps, double *steps_mean, double *cpu_median)
 {
     static const double f[4] = { 0.5, 0.9, 1.1, 2.0 };
-    double t[1000];
+    double t[1000], tc[1000];
     long steps = 0, ncoll = 0;
     for (int r = 0; r < reps; r++) {
         int n = 0;
-        double t0 = swt_now();
+        double t0 = swt_now(), c0 = swt_thread_cpu();
         do {
             for (int i = 0; i < nd; i++)
                 for (int k = 0; k < 4; k++) {
@@ -66,8 +66,10 @@ static double time_collisions(const swr_model *m, const double *d, const double 
                 }
         } while (swt_now() - t0 < 0.05);
         t[r] = (swt_now() - t0) / n;
+        tc[r] = (swt_thread_cpu() - c0) / n;
     }
     *steps_mean = (double)steps / (double)ncoll;
+    *cpu_median = median(tc, reps);
     return median(t, reps);
 }
 
@@ -131,8 +133,8 @@ int main(int argc, char **argv)
     double t_vcrit = median(t, reps);
 
     /* one collision: impacts at 0.5, 0.9, 1.1, 2 v_crit for every diameter */
-    double steps_mean = 0.0;
-    double t_coll = time_collisions(m, d, vc, ND, reps, &steps_mean);
+    double steps_mean = 0.0, c_coll = 0.0;
+    double t_coll = time_collisions(m, d, vc, ND, reps, &steps_mean, &c_coll);
 
     /* accuracy of v_crit at this setting: against a much finer step */
     char txt[32];
@@ -157,7 +159,7 @@ int main(int argc, char **argv)
     /* the lowest accuracy setting (of a list) with v_crit within 0.1 %, and one
      * collision there */
     static const double accs[] = { 10, 15, 20, 30, 45, 60, 90, 120, 180, 240, 360, 480, 720, 960, 1440, 1920 };
-    double acc01 = 0.0, err01 = 0.0, t_coll01 = 0.0, steps01 = 0.0;
+    double acc01 = 0.0, err01 = 0.0, t_coll01 = 0.0, steps01 = 0.0, c_coll01 = 0.0;
     for (size_t k = 0; k < sizeof accs / sizeof accs[0]; k++) {
         swr_params pa = p;
         snprintf(txt, sizeof txt, "%.10g", accs[k]);
@@ -171,7 +173,7 @@ int main(int argc, char **argv)
             swt_parallel_for(ND, threads, vc_one, &ca);
             acc01 = accs[k];
             err01 = e;
-            t_coll01 = time_collisions(ma, d, vca, ND, reps, &steps01);
+            t_coll01 = time_collisions(ma, d, vca, ND, reps, &steps01, &c_coll01);
             swr_model_free(ma);
             break;
         }
@@ -201,11 +203,13 @@ int main(int argc, char **argv)
     printf("swr_bench: %d repetitions, %d threads, accuracy %g steps per contact time\n",
            reps, threads, p.accuracy);
     printf("collision_us %.4g\n", 1e6 * t_coll);
+    printf("collision_cpu_us %.4g\n", 1e6 * c_coll);
     printf("collision_steps_mean %.1f\n", steps_mean);
     printf("vcrit_rel_error_max %.3g\n", acc_err);
     printf("accuracy_for_0.1pct %g\n", acc01);
     printf("vcrit_rel_error_at_it %.3g\n", err01);
     printf("collision_us_at_0.1pct %.4g\n", 1e6 * t_coll01);
+    printf("collision_cpu_us_at_0.1pct %.4g\n", 1e6 * c_coll01);
     printf("collision_steps_at_0.1pct %.1f\n", steps01);
     printf("vcrit46_ms %.4g\n", 1e3 * t_vcrit);
     printf("map_grid_ms %.4g\n", 1e3 * t_grid);
