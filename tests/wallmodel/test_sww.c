@@ -149,6 +149,11 @@ static void range_handling(void **s)
     assert_true(isnan(sww_dcrit(m, NAN)));
     sww_outcome o = decide(m, 1e-3, 0.0, 0.0, 0.0, 0.1); /* v_n = 0: no bounce */
     assert_int_equal(o.fate, SWW_STICK);
+    assert_int_equal(o.range, -1);
+    assert_int_equal(decide(m, 1e-5, VNMIN, 0.0, 0.0, 0.1).range, 0);
+    assert_int_equal(decide(m, 1e-5, VNMAX, 0.0, 0.0, 0.1).range, 0);
+    assert_int_equal(decide(m, 1e-5, VNMAX * 1.0001, 0.0, 0.0, 0.1).range, 1);
+    assert_int_equal(decide(m, 1e-5, VNMIN * 0.9999, 0.0, 0.0, 0.1).range, -1);
     o = decide(m, 1e-6, 1e300, 0.0, 0.0, 0.1);
     assert_int_equal(o.fate, SWW_BOUNCE);
     assert_false(isnan(o.e_n));

@@ -468,6 +468,7 @@ int sww_decide(const sww_model *m, const sww_impact *in, sww_outcome *out)
         return SWW_EINVAL;
     const double dc = sww_dcrit(m, in->vn);
     out->d_crit = dc;
+    out->range = in->vn < m->num[K_VNMIN] ? -1 : (in->vn > m->num[K_VNMAX] ? 1 : 0);
     out->p_stick = stick_probability(m, in->d, dc);
     out->reason = SWW_BY_CRITERION;
     int stick = in->u < out->p_stick;

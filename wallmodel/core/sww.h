@@ -60,6 +60,8 @@ typedef struct {
     double p_stick;  /* stick probability used (0 or 1 for a sharp map)             */
     double e_n;      /* bounce / rip-off: v_n' = e_n v_n (1 for a stick)            */
     double e_t;      /* bounce / rip-off: v_t' = e_t v_t (1 for a stick)            */
+    int range;       /* where v_n lies: 0 inside [vnMin, vnMax] (the fit), -1 below,
+                        +1 above (the power-law extrapolation)                      */
 } sww_outcome;
 
 typedef struct sww_model sww_model;

@@ -215,15 +215,23 @@ void Foam::SnowWallInteraction<CloudType>::setup()
     nStick_.setSize(n, 0);
     nBounce_.setSize(n, 0);
     nRipoff_.setSize(n, 0);
+    nOutside_.setSize(n, 0);
     massDeposit_.setSize(n, 0.0);
+    nImpact0_.setSize(n, 0);
+    nStick0_.setSize(n, 0);
+    nBounce0_.setSize(n, 0);
+    nRipoff0_.setSize(n, 0);
+    nOutside0_.setSize(n, 0);
+    massDeposit0_.setSize(n, 0.0);
     forAll(snowPatches_, s)
     {
         const word& pn = bm[snowPatches_[s]].name();
-        this->getModelProperty(pn + ":impacts", nImpact_[s]);
-        this->getModelProperty(pn + ":sticks", nStick_[s]);
-        this->getModelProperty(pn + ":bounces", nBounce_[s]);
-        this->getModelProperty(pn + ":ripoffs", nRipoff_[s]);
-        this->getModelProperty(pn + ":depositedMass", massDeposit_[s]);
+        this->getModelProperty(pn + ":impacts", nImpact0_[s]);
+        this->getModelProperty(pn + ":sticks", nStick0_[s]);
+        this->getModelProperty(pn + ":bounces", nBounce0_[s]);
+        this->getModelProperty(pn + ":ripoffs", nRipoff0_[s]);
+        this->getModelProperty(pn + ":outsideFitRange", nOutside0_[s]);
+        this->getModelProperty(pn + ":depositedMass", massDeposit0_[s]);
     }
 
     char desc[1024];
@@ -393,7 +401,14 @@ Foam::SnowWallInteraction<CloudType>::SnowWallInteraction
     nStick_ = pim.nStick_;
     nBounce_ = pim.nBounce_;
     nRipoff_ = pim.nRipoff_;
+    nOutside_ = pim.nOutside_;
     massDeposit_ = pim.massDeposit_;
+    nImpact0_ = pim.nImpact0_;
+    nStick0_ = pim.nStick0_;
+    nBounce0_ = pim.nBounce0_;
+    nRipoff0_ = pim.nRipoff0_;
+    nOutside0_ = pim.nOutside0_;
+    massDeposit0_ = pim.massDeposit0_;
     if (pim.depositPtr_.valid())
     {
         // an unregistered copy: the original owns the registered field
@@ -536,6 +551,7 @@ bool Foam::SnowWallInteraction<CloudType>::correct
 
     const label s = slotOfPatch_[pp.index()];
     ++nImpact_[s];
+    if (out.range != 0) ++nOutside_[s];
 
     if (out.fate == SWW_STICK)
     {
@@ -562,17 +578,36 @@ bool Foam::SnowWallInteraction<CloudType>::correct
 
 
 template<class CloudType>
+template<class T>
+Foam::List<T> Foam::SnowWallInteraction<CloudType>::total
+(
+    const List<T>& local,
+    const List<T>& start
+)
+{
+    // sum over the processors, known on every processor, plus the start totals
+    List<T> t(local);
+    Pstream::listCombineGather(t, plusEqOp<T>());
+    Pstream::listCombineScatter(t);
+    forAll(t, i)
+    {
+        t[i] += start[i];
+    }
+    return t;
+}
+
+
+template<class CloudType>
 void Foam::SnowWallInteraction<CloudType>::info(Ostream& os)
 {
     PatchInteractionModel<CloudType>::info(os);
 
-    labelList ni(nImpact_), ns(nStick_), nb(nBounce_), nr(nRipoff_);
-    scalarList md(massDeposit_);
-    Pstream::listCombineGather(ni, plusEqOp<label>());
-    Pstream::listCombineGather(ns, plusEqOp<label>());
-    Pstream::listCombineGather(nb, plusEqOp<label>());
-    Pstream::listCombineGather(nr, plusEqOp<label>());
-    Pstream::listCombineGather(md, plusEqOp<scalar>());
+    const labelList ni(total(nImpact_, nImpact0_));
+    const labelList ns(total(nStick_, nStick0_));
+    const labelList nb(total(nBounce_, nBounce0_));
+    const labelList nr(total(nRipoff_, nRipoff0_));
+    const labelList no(total(nOutside_, nOutside0_));
+    const scalarList md(total(massDeposit_, massDeposit0_));
 
     const polyBoundaryMesh& bm = this->owner().mesh().boundaryMesh();
     forAll(snowPatches_, s)
@@ -580,21 +615,24 @@ void Foam::SnowWallInteraction<CloudType>::info(Ostream& os)
         os  << "    snowWall: patch " << bm[snowPatches_[s]].name()
             << ": impacts " << ni[s] << ", sticks " << ns[s]
             << ", bounces " << nb[s] << ", ripoffs " << nr[s]
-            << ", deposited mass " << md[s] << " kg" << nl;
+            << ", deposited mass " << md[s] << " kg"
+            << " (" << no[s] << " impacts outside the fitted v_n range)" << nl;
     }
     writeSeries(ni, ns, nb, nr, md);
 
     if (this->writeTime())
     {
-        // local cumulative totals: each processor restores its own on restart
+        // global totals, the same on every processor (the properties
+        // dictionary is read by the master and broadcast on restart)
         forAll(snowPatches_, s)
         {
             const word& pn = bm[snowPatches_[s]].name();
-            this->setModelProperty(pn + ":impacts", nImpact_[s]);
-            this->setModelProperty(pn + ":sticks", nStick_[s]);
-            this->setModelProperty(pn + ":bounces", nBounce_[s]);
-            this->setModelProperty(pn + ":ripoffs", nRipoff_[s]);
-            this->setModelProperty(pn + ":depositedMass", massDeposit_[s]);
+            this->setModelProperty(pn + ":impacts", ni[s]);
+            this->setModelProperty(pn + ":sticks", ns[s]);
+            this->setModelProperty(pn + ":bounces", nb[s]);
+            this->setModelProperty(pn + ":ripoffs", nr[s]);
+            this->setModelProperty(pn + ":outsideFitRange", no[s]);
+            this->setModelProperty(pn + ":depositedMass", md[s]);
         }
     }
 }
