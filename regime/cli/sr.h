@@ -43,6 +43,8 @@ int sr_settings_apply(const sr_settings *s, swr_params *p, char *err, size_t err
 /* Usage error: prints "snowregime CMD: MSG" and returns SR_EXIT_USAGE. */
 int sr_usage_error(const char *cmd, const char *msg);
 int sr_fail(const char *cmd, const char *msg);
+/* The output folder cannot be made: "--out: 'DIR': MSG", SR_EXIT_USAGE. */
+int sr_out_error(const char *cmd, const char *dir, const char *msg);
 /* Prints the help text of a subcommand (to stdout). */
 void sr_help(const char *cmd);
 

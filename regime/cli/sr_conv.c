@@ -125,7 +125,7 @@ int sr_cmd_convergence(int argc, char **argv)
     double sec = swt_now() - t_all;
     swt_outset *os = NULL;
     FILE *fc = NULL, *fm = NULL;
-    if (rc == 0 && !(os = swt_outset_alloc(out, err, sizeof err))) rc = sr_fail(cmd, err);
+    if (rc == 0 && !(os = swt_outset_alloc(out, err, sizeof err))) rc = sr_out_error(cmd, out, err);
     if (rc == 0 && (!(fc = swt_outset_open(os, "convergence.csv", err, sizeof err)) ||
                     !(fm = swt_outset_open(os, "convergence.md", err, sizeof err))))
         rc = sr_fail(cmd, err);

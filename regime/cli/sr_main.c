@@ -367,6 +367,12 @@ int sr_usage_error(const char *cmd, const char *msg)
     return SR_EXIT_USAGE;
 }
 
+int sr_out_error(const char *cmd, const char *dir, const char *msg)
+{
+    fprintf(stderr, "snowregime %s: --out: '%s': %s\n", cmd, dir, msg);
+    return SR_EXIT_USAGE;
+}
+
 int sr_fail(const char *cmd, const char *msg)
 {
     fprintf(stderr, "snowregime%s%s: %s\n", cmd ? " " : "", cmd ? cmd : "", msg);

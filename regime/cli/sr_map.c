@@ -300,7 +300,7 @@ int sr_cmd_map(int argc, char **argv)
         goto out;
     }
     swt_outset *os = swt_outset_alloc(mo.out, err, sizeof err);
-    if (!os) { swr_model_free(m); rc = sr_fail(cmd, err); goto out; }
+    if (!os) { swr_model_free(m); rc = sr_out_error(cmd, mo.out, err); goto out; }
     for (int k = 0; k < nmaps && rc == 0; k++) {
         swt_vcrit_opts o = mo.o;
         char sfx[64] = "", what[160];
@@ -434,7 +434,7 @@ int sr_cmd_sensitivity(int argc, char **argv)
     }
     double sec = swt_now() - t0;
     swt_outset *os = NULL;
-    if (rc == 0 && !(os = swt_outset_alloc(mo.out, err, sizeof err))) rc = sr_fail(cmd, err);
+    if (rc == 0 && !(os = swt_outset_alloc(mo.out, err, sizeof err))) rc = sr_out_error(cmd, mo.out, err);
     FILE *fc = NULL, *fm = NULL, *fi = NULL;
     if (rc == 0 && (!(fc = swt_outset_open(os, "sensitivity.csv", err, sizeof err)) ||
                     !(fm = swt_outset_open(os, "sensitivity.md", err, sizeof err)) ||

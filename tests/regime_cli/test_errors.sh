@@ -46,6 +46,11 @@ for a in "vcrit --d -2e-5|--d: '-2e-5'" "vcrit --d 1e-5,,2e-5|empty item" "vcrit
     [ $rc -eq 2 ] || fail "'$args': exit $rc, want 2"
     grep -qF -- "$want" "$WORK/err" || fail "'$args': message does not name '$want': $(cat "$WORK/err")"
 done
+# --out naming an existing file
+: >"$WORK/plainfile"
+"$SR" map --out "$WORK/plainfile" --nd 4 --nv 4 >/dev/null 2>"$WORK/err"; rc=$?
+[ $rc -eq 2 ] && grep -qF -- "--out: '$WORK/plainfile'" "$WORK/err" || fail "--out on a file: exit $rc, $(cat "$WORK/err")"
+[ ! -s "$WORK/plainfile" ] || fail "--out on a file changed the file"
 # a failure after the folder exists leaves the old files untouched and no temporaries
 mkdir -p "$WORK/keep" && echo old >"$WORK/keep/fit.txt"
 "$SR" map --out "$WORK/keep" --set gamma=abc >/dev/null 2>&1
