@@ -231,7 +231,7 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
     double wd = 0.0, err = 0.0, dmax = 0.0, em = E0, phi_old = 0.0;
     double e_dec = E0;   /* normal energy from the decision on (conserved) */
     enum { OPEN, BOUNCE, STICK } outcome = OPEN;
-    int separated = 0;
+    int separated = 0, moving_out = 0;
     double t_end = 0.0, vt_out = vt;
     const int stride = trace && trace->fn && trace->stride > 0 ? trace->stride : 0;
     /* no tangential motion and no trace: once the remaining normal motion is
@@ -276,7 +276,7 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
         u = uh - h2 * fne;
         const double phi = delta > 0.0 ? pk * delta * sqrt(sqrt(delta)) : 0.0;
         fd = 0.0;
-        if (u_old > 0.0 && uh > 0.0 && alpha > 0.0) {
+        if (uh > 0.0 && alpha > 0.0) {
             const double imp = phi - phi_old - h2 * fd_old;
             const double ue = u;
             u -= imp;
@@ -313,13 +313,28 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
         if (stride && n % stride == 0)
             trace->fn(trace->ctx, t * T, delta * L, u * V, fn * mass * L / (T * T), x * x * L,
                       vt * V, w / T);
+        if (u < 0.0)
+            moving_out = 1;
+        if (outcome == BOUNCE && moving_out && u > 0.0) {
+            /* Turned back after a bounce decision: only possible within the
+             * integration error of E - U_c, right at the threshold. The
+             * decision stands (it used the energy); finish in closed form. */
+            t_end = t + travel_time(&nrm, e_dec, nrm.xf, x);
+            vt_out = vt;
+            separated = 1;
+            break;
+        }
         if (outcome == OPEN) {
             if (em <= nrm.Uc) {
                 /* it can never reach delta_c: damping only removes energy */
                 outcome = STICK;
                 t_end = t;
-            } else if (u <= 0.0) {
-                /* unloading: undamped from here on, so it escapes */
+            } else if (u < 0.0) {
+                /* moving out: undamped from here on, and with E > U_c the
+                 * energy exceeds U everywhere between here and delta_c (U
+                 * falls to its minimum at delta(a0), then rises to U_c), so
+                 * it escapes. (At u = 0 an attractive force may still pull
+                 * it back in: no decision there.) */
                 outcome = BOUNCE;
                 e_dec = em < E0 ? em : E0;
                 /* the elastic remainder is slower than the damped loading:

@@ -4,6 +4,7 @@
  * oblique impacts, thread safety. */
 #include <math.h>
 #include <pthread.h>
+#include <stdlib.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -411,6 +412,88 @@ static void threads(void **s)
     swr_model_free(m);
 }
 
+/* Right at the threshold a stepped run (tangential motion) may turn back
+ * after the energy said bounce, within its integration error: it must end
+ * with the decided bounce, not run to the step bound (found by the random
+ * test below). */
+static void near_threshold(void **s)
+{
+    (void)s;
+    const char *kv[] = { "rho=1744.4487590605822", "E=41709800359.209145",
+                         "nu=0.15722936249284025", "sigma_y=430355.98364757904",
+                         "E_wall=21464520.318462402", "nu_wall=0.1778112175877169",
+                         "gamma=72.435753602079473", "mu=0.68995255051289139",
+                         "xi_crit=1.6558846920739652e-10", "accuracy=58.181892277305501", NULL };
+    swr_model *m = model(kv);
+    swr_result r;
+    collide_ok(m, 0.002807830999238124, 4.8880730501204521, 0.0011998416161442395, 0.0, 0, &r);
+    assert_false(r.contact_kept);
+    assert_true(r.e_n > 0.0 && r.e_n < 0.01 && isfinite(r.e_t));
+    swr_model_free(m);
+}
+
+static double uni(double a, double b)
+{
+    return a + (b - a) * drand48();
+}
+
+static double logu(double a, double b)
+{
+    return exp(uni(log(a), log(b)));
+}
+
+/* Random settings over every key's whole range and random impacts over the
+ * accepted inputs (fixed seed): never an error, NaN, a run past its bound or
+ * an e_n outside [0, 1]. */
+static void random_inputs(void **s)
+{
+    (void)s;
+    srand48(12345);
+    long n = 0, bound = 0;
+    for (int k = 0; k < 400; k++) {
+        swr_params p;
+        swr_params_default(&p);
+        p.rho = logu(100, 2e4);
+        p.E = logu(1e6, 1e12);
+        p.nu = uni(0, 0.5);
+        p.sigma_y = logu(1e3, 1e10);
+        p.E_wall = logu(1e6, 1e12);
+        p.nu_wall = uni(0, 0.5);
+        p.gamma = drand48() < 0.1 ? 0.0 : logu(1e-3, 100);
+        p.mu = drand48() < 0.1 ? 0.0 : logu(1e-3, 10);
+        p.xi_crit = logu(1e-12, 1e-6);
+        p.accuracy = logu(10, 300);
+        p.cor = (swr_cor_mode)(lrand48() % 4);
+        p.cor_value = logu(1e-3, 1);
+        p.cor_pair = (swr_pair)(lrand48() % 2);
+        p.adhesion = (swr_adhesion)(lrand48() % 4 == 0);
+        char err[256];
+        swr_model *m = swr_model_alloc(&p, err, sizeof err);
+        if (!m)
+            fail_msg("%s", err);
+        for (int j = 0; j < 20; j++) {
+            swr_impact in = { logu(1e-7, 0.1), logu(1e-4, 1e3), drand48() < 0.5 ? 0.0 : logu(1e-4, 1e3),
+                              drand48() < 0.7 ? 0.0 : uni(-1, 1) * logu(1, 1e6) };
+            if (fabs(in.omega) > SWR_V_MAX / (0.5 * in.d))
+                in.omega = 0.0;
+            swr_result r;
+            const swr_status st = swr_collide(m, &in, &r, NULL);
+            n++;
+            bound += st == SWR_STEP_BOUND;
+            if (st == SWR_EINVAL || !isfinite(r.e_n) || !isfinite(r.t_contact)
+                || !isfinite(r.delta_max) || !isfinite(r.energy_err) || r.steps > r.max_steps
+                || (in.vt > 0.0 && !r.contact_kept && !isfinite(r.e_t)) || r.e_n < 0.0
+                || r.e_n > 1.0 + 1e-9 || isnan(r.t_rest) || isnan(r.s_rest))
+                fail_msg("model %d impact %d: d %g vn %g vt %g omega %g: status %d e_n %g t %g "
+                         "steps %ld/%ld (%s)", k, j, in.d, in.vn, in.vt, in.omega, (int)st, r.e_n,
+                         r.t_contact, r.steps, r.max_steps, r.msg);
+        }
+        swr_model_free(m);
+    }
+    assert_int_equal(bound, 0);
+    print_message("random inputs: %ld impacts, none at the step bound\n", n);
+}
+
 /* The flat wall: overlap R - z, normal +z, R* = R. */
 static void wall_geometry(void **s)
 {
@@ -437,6 +520,8 @@ int main(void)
         cmocka_unit_test(tabor_warning),
         cmocka_unit_test(threads),
         cmocka_unit_test(wall_geometry),
+        cmocka_unit_test(near_threshold),
+        cmocka_unit_test(random_inputs),
     };
     return cmocka_run_group_tests_name("kernel_validation", tests, NULL, NULL);
 }
