@@ -38,6 +38,11 @@ awk -F, -v cf="$out/regime.coeffs" '
       checked++ }
     END { print "checked " checked " grid points against the fit"; exit (bad > 0 || checked < 50) }' "$out/map.csv" \
     || fail "grid outcomes disagree with the fitted interface"
+# threads split the rows only: 1 and 3 threads give the same map and interface
+"$SR" map --out "$WORK/t1" --nd 9 --nv 11 --threads 1 --no-plot >/dev/null || fail "map --threads 1"
+"$SR" map --out "$WORK/t3" --nd 9 --nv 11 --threads 3 --no-plot >/dev/null || fail "map --threads 3"
+cmp -s "$WORK/t1/map.csv" "$WORK/t3/map.csv" || fail "map.csv differs between 1 and 3 threads"
+cmp -s "$WORK/t1/interface.csv" "$WORK/t3/interface.csv" || fail "interface.csv differs between 1 and 3 threads"
 # the fit degree is honoured and printed
 grep -q '^degree: 3 ' "$out/fit.txt" || fail "degree 3 expected in fit.txt"
 "$SR" map --out "$WORK/m2" --nd 12 --nv 14 --degree 2 --vlog 0 --no-plot >/dev/null || fail "map --degree 2 --vlog 0"
