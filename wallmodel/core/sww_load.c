@@ -216,7 +216,6 @@ static int parse_entry(lexer *L, const char *key, int keyline, int use, int dept
         }
         return next(L);
     }
-    (void)keyline;
     return expect_fail(L, key, "a value, '(' or '{'");
 }
 

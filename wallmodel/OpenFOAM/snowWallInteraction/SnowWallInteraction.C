@@ -205,6 +205,13 @@ void Foam::SnowWallInteraction<CloudType>::setup()
         const label groupi = patchData_.applyToPatch(patchi);
         if (groupi >= 0 && groupType_[groupi] == 4)
         {
+            if (!isA<wallPolyPatch>(bm[patchi]))
+            {
+                WarningInFunction
+                    << "snowWallInteraction: snow patch " << bm[patchi].name()
+                    << " is not of type wall: the cloud also counts every hit "
+                    << "on it as escaped" << endl;
+            }
             slotOfPatch_[patchi] = snow.size();
             snow.append(patchi);
         }
