@@ -242,8 +242,12 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
     if (stride)
         trace->fn(trace->ctx, 0.0, 0.0, in->vn, fn * mass * L / (T * T), x * x * L, in->vt,
                   in->omega);
-    if (alpha == 0.0) /* undamped: the energy is conserved, the outcome known now */
-        outcome = E0 <= nrm.Uc ? STICK : BOUNCE;
+    /* Known at first contact: with E0 <= U_c it can never escape (damping
+     * only removes energy); undamped, the energy is conserved. */
+    if (E0 <= nrm.Uc)
+        outcome = STICK;
+    else if (alpha == 0.0)
+        outcome = BOUNCE;
 
     long n = 0;
     while (outcome != STICK && !(outcome == BOUNCE && shortcut) && n < r->max_steps) {
@@ -373,8 +377,9 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
         append_msg(r, "step bound reached: outcome is the best estimate");
         vt_out = vt;
     }
-    if (outcome == STICK && n == 0 && alpha == 0.0) {
-        /* decided at first contact: the overlap it will reach */
+    if (outcome == STICK && n == 0) {
+        /* decided at first contact: the overlap an undamped approach reaches
+         * (an upper bound when damped) */
         const double xm = turning_x(&nrm, E0, nrm.xj);
         dmax = xm * xm * xm * xm / nrm.R - nrm.C * xm;
     }
