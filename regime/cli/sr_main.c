@@ -384,7 +384,7 @@ int sr_auto_vrange(const swr_model *m, swt_grid *g, int set_min, int set_max,
 {
     swt_vcrit_opts vo = *o;
     vo.vmin = 1e-4;
-    vo.vmax = 100.0;
+    vo.vmax = 1000.0;   /* SWR_V_MAX of the kernel */
     vo.rtol = 1e-2;
     swt_vcrit_result rlo, rhi;
     if (!set_min) {
