@@ -13,8 +13,16 @@
 #  * the rear-face PNG, the per-patch table and the 3-panel gate PNG are written;
 #  * the shear gate computed the wall shear stress, the other settings did not;
 #  * Allclean restores the case (no file left that the repository does not hold).
+# With WEDGE_MODE=parallel (test_wedge_parallel.sh): Allrun -test -parallel 2, the
+# gates-off run only, and the same checks for it plus the decomposition.
 # Skipped (77) without OpenFOAM, bin/snowregime or libsnowWallInteraction.so.
 set -u
+mode=${WEDGE_MODE:-serial}
+if [ "$mode" = parallel ]; then
+    args=(-test -parallel 2); gates=off
+else
+    args=(-test -compare); gates="off tangential shear"
+fi
 top=${SW_TOP:?SW_TOP not set}
 . "$top/etc/openfoam-env.sh" 2>/dev/null
 command -v simpleFoam >/dev/null && command -v icoUncoupledKinematicParcelFoam >/dev/null ||
@@ -39,15 +47,15 @@ absle() { awk -v a="$1" -v t="$2" 'BEGIN{if (a<0) a=-a; exit !(a<=t)}'; }
 val() { awk -v k="$1" '$1==k {print $3}' "$2"; }
 
 start=$(date +%s)
-SNOWWALL_TOP="$top" "$tmp/wedge/Allrun" -test -compare > "$tmp/allrun.log" 2>&1
+SNOWWALL_TOP="$top" "$tmp/wedge/Allrun" "${args[@]}" > "$tmp/allrun.log" 2>&1
 rc=$?
-echo "Allrun -test -compare: exit $rc in $(( $(date +%s) - start )) s"
+echo "Allrun ${args[*]}: exit $rc in $(( $(date +%s) - start )) s"
 [ $rc = 0 ] || { tail -40 "$tmp/allrun.log"; exit 1; }
 r="$tmp/wedge/results"
 
 rate=$(. "$top/etc/openfoam-env.sh"; foamDictionary -entry sprayRate -value "$tmp/wedge/constant/sprayProperties")
 tb=$(. "$top/etc/openfoam-env.sh"; foamDictionary -entry buildUpTime -value "$tmp/wedge/constant/sprayProperties")
-for g in off tangential shear; do
+for g in $gates; do
     mb="$r/$g/mass_balance.txt"
     check "$g: mass balance written" "[ -s '$mb' ]" || continue
     sed 's/^/     /' "$mb"
@@ -65,12 +73,16 @@ for g in off tangential shear; do
     check "$g: per-patch table lists the 6 wedge patches" "[ \$(grep -c -E '^\| (rear|nose|top|bottom|sideYneg|sideYpos) \|' '$r/$g/deposit_per_patch.md') = 6 ]"
 done
 check "main rear-face PNG and table" "[ -s '$r/rear_deposit.png' ] && [ -s '$r/deposit_per_patch.md' ]"
-check "gate comparison PNG" "[ \"\$(head -c 4 '$r/gates_compare.png' | tail -c 3)\" = PNG ]"
-check "regions table has 3 gate rows" "[ \$(grep -c -E '^\| (off|tangential|shear) \|' '$r/regions.md') = 3 ]"
 check "ParaView files" "[ -f '$tmp/wedge/case.foam' ] && ls '$tmp/wedge/VTK' >/dev/null 2>&1"
-check "shear gate computed wallShearStress" "ls '$tmp/wedge/gates/shear/'*/wallShearStress >/dev/null 2>&1"
 check "gates off computed no wallShearStress" "! ls '$tmp/wedge/'[0-9]*/wallShearStress >/dev/null 2>&1 && ! grep -q wallShearStress '$tmp/wedge/log.icoUncoupledKinematicParcelFoam'"
-
+if [ "$mode" = parallel ]; then
+    check "decomposed into 2 (simpleFoam and particles)" "grep -q 'Processor 1' '$tmp/wedge/log.decomposePar' && grep -q 'nProcs : 2' '$tmp/wedge/log.icoUncoupledKinematicParcelFoam'"
+    check "reconstructed deposit field" "ls '$tmp/wedge/'0.*/kinematicCloud:snowDeposit >/dev/null 2>&1"
+else
+    check "gate comparison PNG" "[ \"\$(head -c 4 '$r/gates_compare.png' | tail -c 3)\" = PNG ]"
+    check "regions table has 3 gate rows" "[ \$(grep -c -E '^\| (off|tangential|shear) \|' '$r/regions.md') = 3 ]"
+    check "shear gate computed wallShearStress" "ls '$tmp/wedge/gates/shear/'*/wallShearStress >/dev/null 2>&1"
+fi
 "$tmp/wedge/Allclean"
 (cd "$tmp/wedge" && find . -type f | sed 's|^\./||' | sort > "$tmp/after")
 check "Allclean restores the case" "diff '$tmp/tracked' '$tmp/after'"
