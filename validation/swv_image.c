@@ -9,6 +9,7 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 static int fail(char *err, size_t errlen, int code, const char *fmt, ...)
@@ -155,6 +156,9 @@ static FILE *open_temp(const char *path, char *tmp, size_t tmplen, char *err, si
         fail(err, errlen, 1, "%s: cannot create a temporary file (%s)", path, strerror(errno));
         return NULL;
     }
+    mode_t mask = umask(0);   /* mkstemp makes 0600: give the usual 0666 & ~umask */
+    umask(mask);
+    (void)fchmod(fd, 0666 & ~mask);
     FILE *f = fdopen(fd, "wb");
     if (!f) {
         close(fd);
