@@ -1,24 +1,14 @@
 /* swv_compare.c - simulated map input, rectification, segmentation, metrics, regions. */
 #include "swv_compare.h"
+#include "swv_error.h"
 #include "swv_homography.h"
 
 #include <errno.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-static int fail(char *err, size_t errlen, int code, const char *fmt, ...)
-{
-    if (err && errlen) {
-        va_list ap;
-        va_start(ap, fmt);
-        vsnprintf(err, errlen, fmt, ap);
-        va_end(ap);
-    }
-    return code;
-}
 
 void swv_simmap_free(swv_simmap *m)
 {
@@ -60,14 +50,14 @@ int swv_simmap_read(const char *path, swv_simmap **out, char *err, size_t errlen
     *out = NULL;
     FILE *f = fopen(path, "r");
     if (!f)
-        return fail(err, errlen, 2, "%s: cannot open (%s)", path, strerror(errno));
+        return swv_fail(err, errlen, 2, "%s: cannot open (%s)", path, strerror(errno));
     size_t cap = 256, n = 0;
     double *y = malloc(cap * sizeof *y), *z = malloc(cap * sizeof *z), *v = malloc(cap * sizeof *v);
     char line[1024];
     int lineno = 0, rc = 0;
     swv_simmap *m = NULL;
     double *uy = NULL, *uz = NULL, *sy = NULL, *sz = NULL;
-    if (!y || !z || !v) { rc = fail(err, errlen, 1, "%s: out of memory", path); goto done; }
+    if (!y || !z || !v) { rc = swv_fail(err, errlen, 1, "%s: out of memory", path); goto done; }
     while (fgets(line, sizeof line, f)) {
         lineno++;
         if (lineno == 1 || line[0] == '#' || line[strspn(line, " \t\r\n")] == '\0')
@@ -76,11 +66,11 @@ int swv_simmap_read(const char *path, swv_simmap **out, char *err, size_t errlen
         char extra;
         if (sscanf(line, " %lf , %lf , %lf %c", &a, &b, &c, &extra) != 3) {
             line[strcspn(line, "\r\n")] = '\0';
-            rc = fail(err, errlen, 2, "%s:%d: expected 'y,z,value', got '%s'", path, lineno, line);
+            rc = swv_fail(err, errlen, 2, "%s:%d: expected 'y,z,value', got '%s'", path, lineno, line);
             goto done;
         }
         if (!isfinite(a) || !isfinite(b) || !isfinite(c) || c < 0) {
-            rc = fail(err, errlen, 2, "%s:%d: non-finite or negative value (y %g, z %g, value %g)",
+            rc = swv_fail(err, errlen, 2, "%s:%d: non-finite or negative value (y %g, z %g, value %g)",
                       path, lineno, a, b, c);
             goto done;
         }
@@ -89,48 +79,48 @@ int swv_simmap_read(const char *path, swv_simmap **out, char *err, size_t errlen
             double *ny = realloc(y, cap * sizeof *y); if (ny) y = ny;
             double *nz = realloc(z, cap * sizeof *z); if (nz) z = nz;
             double *nv = realloc(v, cap * sizeof *v); if (nv) v = nv;
-            if (!ny || !nz || !nv) { rc = fail(err, errlen, 1, "%s: out of memory", path); goto done; }
+            if (!ny || !nz || !nv) { rc = swv_fail(err, errlen, 1, "%s: out of memory", path); goto done; }
         }
         y[n] = a; z[n] = b; v[n] = c; n++;
     }
-    if (n < 4) { rc = fail(err, errlen, 2, "%s: %zu face values, need a grid of at least 2x2", path, n); goto done; }
+    if (n < 4) { rc = swv_fail(err, errlen, 2, "%s: %zu face values, need a grid of at least 2x2", path, n); goto done; }
     sy = malloc(n * sizeof *sy); sz = malloc(n * sizeof *sz);
     uy = malloc(n * sizeof *uy); uz = malloc(n * sizeof *uz);
-    if (!sy || !sz || !uy || !uz) { rc = fail(err, errlen, 1, "%s: out of memory", path); goto done; }
+    if (!sy || !sz || !uy || !uz) { rc = swv_fail(err, errlen, 1, "%s: out of memory", path); goto done; }
     memcpy(sy, y, n * sizeof *sy); memcpy(sz, z, n * sizeof *sz);
     qsort(sy, n, sizeof *sy, cmp_double); qsort(sz, n, sizeof *sz, cmp_double);
     double span = fmax(sy[n - 1] - sy[0], sz[n - 1] - sz[0]);
     double tol = 1e-6 * (span > 0 ? span : 1);
     int ny = distinct(sy, (int)n, tol, uy), nz = distinct(sz, (int)n, tol, uz);
     if (ny < 2 || nz < 2 || (size_t)ny * (size_t)nz != n) {
-        rc = fail(err, errlen, 2, "%s: %zu faces do not form a full regular grid (%d distinct y x %d distinct z)",
+        rc = swv_fail(err, errlen, 2, "%s: %zu faces do not form a full regular grid (%d distinct y x %d distinct z)",
                   path, n, ny, nz);
         goto done;
     }
     double dy = (uy[ny - 1] - uy[0]) / (ny - 1), dz = (uz[nz - 1] - uz[0]) / (nz - 1);
     for (int i = 1; i < ny; i++)
         if (fabs(uy[i] - uy[i - 1] - dy) > 1e-3 * dy) {
-            rc = fail(err, errlen, 2, "%s: face centres are not evenly spaced in y (%g .. %g)", path, uy[i - 1], uy[i]);
+            rc = swv_fail(err, errlen, 2, "%s: face centres are not evenly spaced in y (%g .. %g)", path, uy[i - 1], uy[i]);
             goto done;
         }
     for (int i = 1; i < nz; i++)
         if (fabs(uz[i] - uz[i - 1] - dz) > 1e-3 * dz) {
-            rc = fail(err, errlen, 2, "%s: face centres are not evenly spaced in z (%g .. %g)", path, uz[i - 1], uz[i]);
+            rc = swv_fail(err, errlen, 2, "%s: face centres are not evenly spaced in z (%g .. %g)", path, uz[i - 1], uz[i]);
             goto done;
         }
     m = calloc(1, sizeof *m);
-    if (!m || !(m->val = calloc(n, sizeof *m->val))) { rc = fail(err, errlen, 1, "%s: out of memory", path); goto done; }
+    if (!m || !(m->val = calloc(n, sizeof *m->val))) { rc = swv_fail(err, errlen, 1, "%s: out of memory", path); goto done; }
     m->ny = ny; m->nz = nz;
     m->y0 = uy[0] - dy / 2; m->y1 = uy[ny - 1] + dy / 2;
     m->z0 = uz[0] - dz / 2; m->z1 = uz[nz - 1] + dz / 2;
     char *seen = calloc(n, 1);
-    if (!seen) { rc = fail(err, errlen, 1, "%s: out of memory", path); goto done; }
+    if (!seen) { rc = swv_fail(err, errlen, 1, "%s: out of memory", path); goto done; }
     for (size_t i = 0; i < n; i++) {
         int iy = find_index(uy, ny, y[i], tol), iz = find_index(uz, nz, z[i], tol);
         size_t k = (size_t)iy + (size_t)ny * (size_t)iz;
         if (iy < 0 || iz < 0 || seen[k]) {
             free(seen);
-            rc = fail(err, errlen, 2, "%s: face (%g, %g) appears twice", path, y[i], z[i]);
+            rc = swv_fail(err, errlen, 2, "%s: face (%g, %g) appears twice", path, y[i], z[i]);
             goto done;
         }
         seen[k] = 1;
@@ -201,17 +191,17 @@ int swv_compare_run(const swv_config *c, const swv_image *photo, const swv_simma
     if (side) *side = NULL;
     memset(m, 0, sizeof *m);
     if (!(c->photoThreshold >= 0 && c->photoThreshold <= 1))
-        return fail(err, errlen, 2, "photo threshold %g outside [0, 1]", c->photoThreshold);
+        return swv_fail(err, errlen, 2, "photo threshold %g outside [0, 1]", c->photoThreshold);
     if (c->simThreshold < 0 && !(c->simRelThreshold > 0 && c->simRelThreshold <= 1))
-        return fail(err, errlen, 2, "relative simulation threshold %g outside (0, 1]", c->simRelThreshold);
+        return swv_fail(err, errlen, 2, "relative simulation threshold %g outside (0, 1]", c->simRelThreshold);
     if (!isfinite(c->simThreshold))
-        return fail(err, errlen, 2, "simulation threshold %g is not finite", c->simThreshold);
+        return swv_fail(err, errlen, 2, "simulation threshold %g is not finite", c->simThreshold);
     if (c->res < 2 || c->res > 4000)
-        return fail(err, errlen, 2, "comparison resolution %d outside 2..4000", c->res);
+        return swv_fail(err, errlen, 2, "comparison resolution %d outside 2..4000", c->res);
     for (int i = 0; i < 4; i++) {
         double x = c->corners[i][0], y = c->corners[i][1];
         if (!isfinite(x) || !isfinite(y) || x < 0 || y < 0 || x > photo->width || y > photo->height)
-            return fail(err, errlen, 2, "corner %d (%g, %g) lies outside the %dx%d photo", i + 1, x, y,
+            return swv_fail(err, errlen, 2, "corner %d (%g, %g) lies outside the %dx%d photo", i + 1, x, y,
                         photo->width, photo->height);
     }
     const double unit[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
@@ -226,7 +216,7 @@ int swv_compare_run(const swv_config *c, const swv_image *photo, const swv_simma
     if (side) {
         img = swv_image_alloc(3 * R + 2 * 8, R);
         if (!img)
-            return fail(err, errlen, 1, "out of memory for the %dx%d side-by-side image", 3 * R + 16, R);
+            return swv_fail(err, errlen, 1, "out of memory for the %dx%d side-by-side image", 3 * R + 16, R);
         memset(img->rgb, 255, (size_t)img->width * (size_t)img->height * 3u);
     }
     for (int j = 0; j < R; j++) {
@@ -234,7 +224,7 @@ int swv_compare_run(const swv_config *c, const swv_image *photo, const swv_simma
             double u = (i + 0.5) / R, v = (j + 0.5) / R, px, py;
             if (swv_homography_apply(H, u, v, &px, &py)) {
                 swv_image_free(img);
-                return fail(err, errlen, 2, "corners give a map that sends face point (%g, %g) to infinity", u, v);
+                return swv_fail(err, errlen, 2, "corners give a map that sends face point (%g, %g) to infinity", u, v);
             }
             double L = swv_image_luma(photo, px, py);
             int ps = L >= c->photoThreshold;
@@ -273,11 +263,11 @@ int swv_regions(const swv_simmap *sim, double threshold, double band, double hol
 {
     memset(s, 0, sizeof *s);
     if (!(threshold >= 0) || !isfinite(threshold))
-        return fail(err, errlen, 2, "region threshold %g must be >= 0", threshold);
+        return swv_fail(err, errlen, 2, "region threshold %g must be >= 0", threshold);
     if (!(band > 0 && band < 0.3))
-        return fail(err, errlen, 2, "edge band %g outside (0, 0.3)", band);
+        return swv_fail(err, errlen, 2, "edge band %g outside (0, 0.3)", band);
     if (!(holdFraction > 0 && holdFraction <= 1))
-        return fail(err, errlen, 2, "hold fraction %g outside (0, 1]", holdFraction);
+        return swv_fail(err, errlen, 2, "hold fraction %g outside (0, 1]", holdFraction);
     int hit[SWV_NREGIONS] = {0};
     for (int iz = 0; iz < sim->nz; iz++) {
         for (int iy = 0; iy < sim->ny; iy++) {
@@ -296,7 +286,7 @@ int swv_regions(const swv_simmap *sim, double threshold, double band, double hol
     }
     for (int r = 0; r < SWV_NREGIONS; r++) {
         if (s->nfaces[r] == 0)
-            return fail(err, errlen, 2, "the %dx%d map has no face in region '%s' (too coarse)",
+            return swv_fail(err, errlen, 2, "the %dx%d map has no face in region '%s' (too coarse)",
                         sim->ny, sim->nz, swv_region_name(r));
         s->mean[r] /= s->nfaces[r];
         s->covered[r] = (double)hit[r] / s->nfaces[r];

@@ -1,27 +1,17 @@
 /* swv_image.c - PNG (libpng simplified API) and JPEG (libjpeg) reading/writing. */
 #include "swv_image.h"
+#include "swv_error.h"
 
 #include <errno.h>
 #include <stdio.h>      /* before jpeglib.h, which uses FILE */
 #include <jpeglib.h>
 #include <png.h>
 #include <setjmp.h>
-#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
-static int fail(char *err, size_t errlen, int code, const char *fmt, ...)
-{
-    if (err && errlen) {
-        va_list ap;
-        va_start(ap, fmt);
-        vsnprintf(err, errlen, fmt, ap);
-        va_end(ap);
-    }
-    return code;
-}
 
 swv_image *swv_image_alloc(int width, int height)
 {
@@ -54,16 +44,16 @@ static int read_png(const char *path, swv_image **out, char *err, size_t errlen)
     memset(&pi, 0, sizeof pi);
     pi.version = PNG_IMAGE_VERSION;
     if (!png_image_begin_read_from_file(&pi, path))
-        return fail(err, errlen, 2, "%s: not a readable PNG (%s)", path, pi.message);
+        return swv_fail(err, errlen, 2, "%s: not a readable PNG (%s)", path, pi.message);
     pi.format = PNG_FORMAT_RGB;
     swv_image *img = swv_image_alloc((int)pi.width, (int)pi.height);
     if (!img) {
         png_image_free(&pi);
-        return fail(err, errlen, 2, "%s: bad PNG size %ux%u", path, pi.width, pi.height);
+        return swv_fail(err, errlen, 2, "%s: bad PNG size %ux%u", path, pi.width, pi.height);
     }
     if (!png_image_finish_read(&pi, NULL, img->rgb, 0, NULL)) {
         swv_image_free(img);
-        return fail(err, errlen, 2, "%s: PNG decoding failed (%s)", path, pi.message);
+        return swv_fail(err, errlen, 2, "%s: PNG decoding failed (%s)", path, pi.message);
     }
     *out = img;
     return 0;
@@ -86,7 +76,7 @@ static int read_jpeg(const char *path, swv_image **out, char *err, size_t errlen
 {
     FILE *f = fopen(path, "rb");
     if (!f)
-        return fail(err, errlen, 2, "%s: cannot open (%s)", path, strerror(errno));
+        return swv_fail(err, errlen, 2, "%s: cannot open (%s)", path, strerror(errno));
     struct jpeg_decompress_struct ci;
     struct jerr je;
     swv_image *volatile img = NULL;
@@ -96,7 +86,7 @@ static int read_jpeg(const char *path, swv_image **out, char *err, size_t errlen
         jpeg_destroy_decompress(&ci);
         fclose(f);
         swv_image_free(img);
-        return fail(err, errlen, 2, "%s: JPEG decoding failed (%s)", path, je.msg);
+        return swv_fail(err, errlen, 2, "%s: JPEG decoding failed (%s)", path, je.msg);
     }
     jpeg_create_decompress(&ci);
     jpeg_stdio_src(&ci, f);
@@ -106,14 +96,14 @@ static int read_jpeg(const char *path, swv_image **out, char *err, size_t errlen
     if (ci.output_components != 3) {
         jpeg_destroy_decompress(&ci);
         fclose(f);
-        return fail(err, errlen, 2, "%s: JPEG with %d components, expected RGB", path,
+        return swv_fail(err, errlen, 2, "%s: JPEG with %d components, expected RGB", path,
                     ci.output_components);
     }
     img = swv_image_alloc((int)ci.output_width, (int)ci.output_height);
     if (!img) {
         jpeg_destroy_decompress(&ci);
         fclose(f);
-        return fail(err, errlen, 2, "%s: bad JPEG size %ux%u", path, ci.output_width,
+        return swv_fail(err, errlen, 2, "%s: bad JPEG size %ux%u", path, ci.output_width,
                     ci.output_height);
     }
     while (ci.output_scanline < ci.output_height) {
@@ -132,7 +122,7 @@ int swv_image_read(const char *path, swv_image **out, char *err, size_t errlen)
     *out = NULL;
     FILE *f = fopen(path, "rb");
     if (!f)
-        return fail(err, errlen, 2, "%s: cannot open (%s)", path, strerror(errno));
+        return swv_fail(err, errlen, 2, "%s: cannot open (%s)", path, strerror(errno));
     unsigned char magic[8] = {0};
     size_t n = fread(magic, 1, sizeof magic, f);
     fclose(f);
@@ -141,19 +131,19 @@ int swv_image_read(const char *path, swv_image **out, char *err, size_t errlen)
         return read_png(path, out, err, errlen);
     if (n >= 3 && magic[0] == 0xff && magic[1] == 0xd8 && magic[2] == 0xff)
         return read_jpeg(path, out, err, errlen);
-    return fail(err, errlen, 2, "%s: neither PNG nor JPEG (unknown file signature)", path);
+    return swv_fail(err, errlen, 2, "%s: neither PNG nor JPEG (unknown file signature)", path);
 }
 
 /* temp file next to path; returns an open FILE and fills tmp */
 static FILE *open_temp(const char *path, char *tmp, size_t tmplen, char *err, size_t errlen)
 {
     if ((size_t)snprintf(tmp, tmplen, "%s.tmpXXXXXX", path) >= tmplen) {
-        fail(err, errlen, 2, "%s: path too long", path);
+        swv_fail(err, errlen, 2, "%s: path too long", path);
         return NULL;
     }
     int fd = mkstemp(tmp);
     if (fd < 0) {
-        fail(err, errlen, 1, "%s: cannot create a temporary file (%s)", path, strerror(errno));
+        swv_fail(err, errlen, 1, "%s: cannot create a temporary file (%s)", path, strerror(errno));
         return NULL;
     }
     mode_t mask = umask(0);   /* mkstemp makes 0600: give the usual 0666 & ~umask */
@@ -163,7 +153,7 @@ static FILE *open_temp(const char *path, char *tmp, size_t tmplen, char *err, si
     if (!f) {
         close(fd);
         unlink(tmp);
-        fail(err, errlen, 1, "%s: fdopen failed (%s)", path, strerror(errno));
+        swv_fail(err, errlen, 1, "%s: fdopen failed (%s)", path, strerror(errno));
     }
     return f;
 }
@@ -173,12 +163,12 @@ static int finish_temp(FILE *f, const char *tmp, const char *path, char *err, si
     int bad = ferror(f);
     if (fclose(f) != 0 || bad) {
         unlink(tmp);
-        return fail(err, errlen, 1, "%s: write failed", path);
+        return swv_fail(err, errlen, 1, "%s: write failed", path);
     }
     if (rename(tmp, path) != 0) {
         int e = errno;
         unlink(tmp);
-        return fail(err, errlen, 1, "%s: rename failed (%s)", path, strerror(e));
+        return swv_fail(err, errlen, 1, "%s: rename failed (%s)", path, strerror(e));
     }
     return 0;
 }
@@ -198,7 +188,7 @@ int swv_image_write_png(const char *path, const swv_image *img, char *err, size_
     if (!png_image_write_to_stdio(&pi, f, 0, img->rgb, 0, NULL)) {
         fclose(f);
         unlink(tmp);
-        return fail(err, errlen, 1, "%s: PNG encoding failed (%s)", path, pi.message);
+        return swv_fail(err, errlen, 1, "%s: PNG encoding failed (%s)", path, pi.message);
     }
     return finish_temp(f, tmp, path, err, errlen);
 }
@@ -207,7 +197,7 @@ int swv_image_write_jpeg(const char *path, const swv_image *img, int quality, ch
                          size_t errlen)
 {
     if (quality < 1 || quality > 100)
-        return fail(err, errlen, 2, "JPEG quality %d outside 1..100", quality);
+        return swv_fail(err, errlen, 2, "JPEG quality %d outside 1..100", quality);
     char tmp[4096];
     FILE *f = open_temp(path, tmp, sizeof tmp, err, errlen);
     if (!f)
@@ -220,7 +210,7 @@ int swv_image_write_jpeg(const char *path, const swv_image *img, int quality, ch
         jpeg_destroy_compress(&ci);
         fclose(f);
         unlink(tmp);
-        return fail(err, errlen, 1, "%s: JPEG encoding failed (%s)", path, je.msg);
+        return swv_fail(err, errlen, 1, "%s: JPEG encoding failed (%s)", path, je.msg);
     }
     jpeg_create_compress(&ci);
     jpeg_stdio_dest(&ci, f);
