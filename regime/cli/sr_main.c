@@ -379,35 +379,40 @@ int sr_fail(const char *cmd, const char *msg)
     return SR_EXIT_FAIL;
 }
 
+/* v_crit of diameter d for the automatic speed range, or -1 with a message. */
+static int auto_vcrit(const swr_model *m, double d, const swt_vcrit_opts *vo, double *vcrit,
+                      char *err, size_t errlen)
+{
+    swt_vcrit_result r;
+    swt_vcrit(m, d, vo, &r);
+    if (r.status != SWT_VCRIT_FOUND) {
+        snprintf(err, errlen, "automatic speed range: no v_crit for d = %g m in [%g, %g] m/s "
+                 "(%s); give --vmin and --vmax", d, vo->vmin, vo->vmax,
+                 r.status == SWT_VCRIT_ALL_STICK ? "sticks everywhere" :
+                 r.status == SWT_VCRIT_NO_STICK ? "bounces everywhere" : r.msg);
+        return -1;
+    }
+    *vcrit = r.vcrit;
+    return 0;
+}
+
 int sr_auto_vrange(const swr_model *m, swt_grid *g, int set_min, int set_max,
                    const swt_vcrit_opts *o, char *err, size_t errlen)
 {
     swt_vcrit_opts vo = *o;
     vo.vmin = 1e-4;
-    vo.vmax = 1000.0;   /* SWR_V_MAX of the kernel */
+    vo.vmax = SWR_V_MAX;
     vo.rtol = 1e-2;
-    swt_vcrit_result rlo, rhi;
+    double v;
     if (!set_min) {
-        swt_vcrit(m, g->dmax, &vo, &rhi);
-        if (rhi.status != SWT_VCRIT_FOUND) {
-            snprintf(err, errlen, "automatic speed range: no v_crit for d = %g m in [%g, %g] m/s "
-                     "(%s); give --vmin and --vmax", g->dmax, vo.vmin, vo.vmax,
-                     rhi.status == SWT_VCRIT_ALL_STICK ? "sticks everywhere" :
-                     rhi.status == SWT_VCRIT_NO_STICK ? "bounces everywhere" : rhi.msg);
+        if (auto_vcrit(m, g->dmax, &vo, &v, err, errlen) != 0)
             return -1;
-        }
-        g->vmin = rhi.vcrit / 1.5;
+        g->vmin = v / 1.5;
     }
     if (!set_max) {
-        swt_vcrit(m, g->dmin, &vo, &rlo);
-        if (rlo.status != SWT_VCRIT_FOUND) {
-            snprintf(err, errlen, "automatic speed range: no v_crit for d = %g m in [%g, %g] m/s "
-                     "(%s); give --vmin and --vmax", g->dmin, vo.vmin, vo.vmax,
-                     rlo.status == SWT_VCRIT_ALL_STICK ? "sticks everywhere" :
-                     rlo.status == SWT_VCRIT_NO_STICK ? "bounces everywhere" : rlo.msg);
+        if (auto_vcrit(m, g->dmin, &vo, &v, err, errlen) != 0)
             return -1;
-        }
-        g->vmax = 1.5 * rlo.vcrit;
+        g->vmax = 1.5 * v;
     }
     if (!(g->vmax > g->vmin)) {
         snprintf(err, errlen, "speed range [%g, %g] m/s is empty: give --vmin and --vmax",
