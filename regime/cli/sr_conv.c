@@ -161,12 +161,10 @@ int sr_cmd_convergence(int argc, char **argv)
         fflush(NULL);
         const char *png = swt_outset_add(os, "convergence.png", err, sizeof err);
         const char *tc = swt_outset_add(os, "convergence.csv", err, sizeof err);
-        char gp[4200];
-        snprintf(gp, sizeof gp, "%s.gp", png);
-        FILE *f = fopen(gp, "w");
-        if (!f) rc = sr_fail(cmd, "cannot write the gnuplot script");
+        swt_gnuplot g;
+        if (swt_gnuplot_open(&g, png, 850, 600, err, sizeof err) != 0) rc = sr_fail(cmd, err);
         else {
-            swt_gnuplot_png_header(f, png, 850, 600);
+            FILE *f = g.f;
             fprintf(f, "set datafile separator ','\nset logscale xy\nset key top right\nset format y '10^{%%L}'\nset format x '%%g'\n");
             fprintf(f, "set xlabel 'time per collision [us] (solid: wall, dashed: thread CPU)'\nset ylabel 'relative error of v_{crit}'\n");
             fprintf(f, "set title 'snowregime convergence: error against run time (labels: accuracy)'\n");
@@ -177,9 +175,7 @@ int sr_cmd_convergence(int argc, char **argv)
                            "'' index %d using 9:($5 > 1e-9 ? $5 : 1e-9) with linespoints lw 1 dt 2 pt 6 lc %d title 'd = %g um, CPU time'",
                         i ? ", \\\n     " : "", tc, i, i + 1, d[i] * 1e6, i, i, i + 1, d[i] * 1e6);
             fprintf(f, "\n");
-            fclose(f);
-            if (swt_run_gnuplot(gp, err, sizeof err) != 0) rc = sr_fail(cmd, err);
-            remove(gp);
+            if (swt_gnuplot_finish(&g, err, sizeof err) != 0) rc = sr_fail(cmd, err);
         }
     }
     if (rc == 0 && swt_outset_commit(os, err, sizeof err) != 0) rc = sr_fail(cmd, err);

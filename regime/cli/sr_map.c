@@ -173,12 +173,9 @@ static int write_map_plot(swt_outset *os, const char *sfx, const sr_mapres *r, c
     const char *tcsv = swt_outset_add(os, csv, err, errlen);
     const char *titf = swt_outset_add(os, itf, err, errlen);
     if (!png || !tcsv || !titf) return -1;
-    /* the script is a temporary of its own, never renamed */
-    char gp[4200];
-    snprintf(gp, sizeof gp, "%s.gp", png);
-    FILE *f = fopen(gp, "w");
-    if (!f) { snprintf(err, errlen, "cannot write '%.300s'", gp); return -1; }
-    swt_gnuplot_png_header(f, png, 800, 700);
+    swt_gnuplot g;
+    if (swt_gnuplot_open(&g, png, 800, 700, err, errlen) != 0) return -1;
+    FILE *f = g.f;
     fprintf(f, "set datafile separator ','\nset key outside below horizontal\nset format x '%%g'\nset mxtics 10\n");
     if (r->mp->g.vlog) fprintf(f, "set logscale x\n");
     fprintf(f, "set xrange [%.10g:%.10g]\nset yrange [%.10g:%.10g]\n",
@@ -193,11 +190,8 @@ static int write_map_plot(swt_outset *os, const char *sfx, const sr_mapres *r, c
             tcsv, tcsv, titf);
     if (r->fit_ok) fprintf(f, ", \\\n     dfit(x) with lines lw 2 lc rgb '#000000' title 'fit d_{crit}(v_n), degree %d'", r->fit.degree);
     fprintf(f, "\n");
-    fclose(f);
     (void)gpname;
-    int rc = swt_run_gnuplot(gp, err, errlen);
-    remove(gp);
-    return rc;
+    return swt_gnuplot_finish(&g, err, errlen);
 }
 
 /* Writes one map's files into the set. */
@@ -488,12 +482,10 @@ int sr_cmd_sensitivity(int argc, char **argv)
         fflush(NULL);
         const char *png = swt_outset_add(os, "sensitivity.png", err, sizeof err);
         const char *ti = swt_outset_add(os, "sensitivity-interfaces.csv", err, sizeof err);
-        char gp[4200];
-        snprintf(gp, sizeof gp, "%s.gp", png);
-        FILE *f = fopen(gp, "w");
-        if (!f) rc = sr_fail(cmd, "cannot write the gnuplot script");
+        swt_gnuplot g;
+        if (swt_gnuplot_open(&g, png, 950, 650, err, sizeof err) != 0) rc = sr_fail(cmd, err);
         else {
-            swt_gnuplot_png_header(f, png, 950, 650);
+            FILE *f = g.f;
             fprintf(f, "set datafile separator ','\nset key outside right top\nset format x '%%g'\nset mxtics 10\n");
             if (mo.g.vlog) fprintf(f, "set logscale x\n");
             fprintf(f, "set xrange [%.10g:%.10g]\nset yrange [%.10g:%.10g]\n", mo.g.vmin, mo.g.vmax,
@@ -509,9 +501,7 @@ int sr_cmd_sensitivity(int argc, char **argv)
                         k ? ", \\\n     " : "", ti, k, k == 0 ? 1 : 0, k == 0 ? 3 : 1, k, lab);
             }
             fprintf(f, "\n");
-            fclose(f);
-            if (swt_run_gnuplot(gp, err, sizeof err) != 0) rc = sr_fail(cmd, err);
-            remove(gp);
+            if (swt_gnuplot_finish(&g, err, sizeof err) != 0) rc = sr_fail(cmd, err);
         }
     }
     if (rc == 0 && swt_outset_commit(os, err, sizeof err) != 0) rc = sr_fail(cmd, err);

@@ -317,14 +317,36 @@ int swt_run_gnuplot(const char *script, char *err, size_t errlen)
     return 0;
 }
 
-void swt_gnuplot_png_header(FILE *gp, const char *png, int width, int height)
+int swt_gnuplot_open(swt_gnuplot *g, const char *png, int width, int height,
+                     char *err, size_t errlen)
 {
-    fprintf(gp, "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {\n"
-                "  set terminal pngcairo size %d,%d font 'Sans,10'\n"
-                "} else {\n"
-                "  set terminal png size %d,%d\n"
-                "}\n", width, height, width, height);
-    fprintf(gp, "set output '%s'\n", png);
+    snprintf(g->path, sizeof g->path, "%s.gp", png);
+    g->f = fopen(g->path, "w");
+    if (!g->f) {
+        snprintf(err, errlen, "cannot write '%.300s'", g->path);
+        return -1;
+    }
+    fprintf(g->f, "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {\n"
+                  "  set terminal pngcairo size %d,%d font 'Sans,10'\n"
+                  "} else {\n"
+                  "  set terminal png size %d,%d\n"
+                  "}\n", width, height, width, height);
+    fprintf(g->f, "set output '%s'\n", png);
+    return 0;
+}
+
+int swt_gnuplot_finish(swt_gnuplot *g, char *err, size_t errlen)
+{
+    int rc = 0;
+    if (fclose(g->f) != 0) {
+        snprintf(err, errlen, "cannot write '%.300s'", g->path);
+        rc = -1;
+    }
+    g->f = NULL;
+    if (rc == 0)
+        rc = swt_run_gnuplot(g->path, err, errlen);
+    remove(g->path);
+    return rc;
 }
 
 double swt_thread_cpu(void)

@@ -53,9 +53,19 @@ int swt_parse_list(const char *opt, const char *text, double lo, double hi,
 /* Run "gnuplot SCRIPT" and wait. 0, or -1 with a message (gnuplot missing,
  * failed, killed). Its stderr is passed through. */
 int swt_run_gnuplot(const char *script, char *err, size_t errlen);
-/* Write the gnuplot lines that select pngcairo (or png when cairo is missing)
- * with the given size, and set output to `png` (a temporary path). */
-void swt_gnuplot_png_header(FILE *gp, const char *png, int width, int height);
+/* A gnuplot script PNG.gp beside the PNG it draws (a temporary of its own,
+ * never renamed): swt_gnuplot_open() creates it and writes the lines that
+ * select pngcairo (or png when cairo is missing) with the given size and set
+ * the output to `png` (a temporary path); the caller writes the plot commands
+ * to g->f; swt_gnuplot_finish() closes it, runs gnuplot and removes it.
+ * Both return 0, or -1 with a message. */
+typedef struct {
+    FILE *f;
+    char path[4200];
+} swt_gnuplot;
+int swt_gnuplot_open(swt_gnuplot *g, const char *png, int width, int height,
+                     char *err, size_t errlen);
+int swt_gnuplot_finish(swt_gnuplot *g, char *err, size_t errlen);
 
 /* Monotonic wall clock [s]. */
 double swt_now(void);
