@@ -14,11 +14,12 @@ export WM_PROJECT=OpenFOAM WM_PROJECT_VERSION=v1912 WM_ARCH=linux64 \
 export WM_PROJECT_DIR="$_sw_top/.cache/openfoam/openfoam-OpenFOAM-v1912.200626"
 export FOAM_SRC="$WM_PROJECT_DIR/src" WM_DIR="$WM_PROJECT_DIR/wmake"
 export FOAM_LIBBIN=/usr/lib
-export FOAM_USER_LIBBIN="$_sw_top/platforms/lib"
+export FOAM_USER_LIBBIN="$_sw_top/platforms/lib" FOAM_USER_APPBIN="$_sw_top/platforms/bin"
 export FOAM_APPBIN=/usr/bin FOAM_ETC=/usr/share/openfoam/etc
 export MPI_ARCH_PATH=/usr/lib/x86_64-linux-gnu/openmpi
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 case ":$PATH:" in *":$WM_DIR:"*) ;; *) export PATH="$WM_DIR:$PATH" ;; esac
+case ":$PATH:" in *":$FOAM_USER_APPBIN:"*) ;; *) export PATH="$FOAM_USER_APPBIN:$PATH" ;; esac
 case ":${LD_LIBRARY_PATH:-}:" in *":$FOAM_USER_LIBBIN:"*) ;;
     *) export LD_LIBRARY_PATH="$FOAM_USER_LIBBIN${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" ;; esac
 unset _sw_top

@@ -5,7 +5,8 @@
 #
 # Installs (as root, with apt-get) the Debian packages SnowWall needs, then
 # fetches the Debian *source* package of OpenFOAM v1912 and unpacks only
-# src/, wmake/ and META-INFO into the git-ignored cache .cache/openfoam,
+# src/, wmake/, META-INFO and the pimpleFoam solver folder (whose flow equations
+# the project's solver includes) into the git-ignored cache .cache/openfoam,
 # builds wmake's helpers and the lnInclude folders a Lagrangian model needs.
 # Every step is skipped when its result is already there, so a second run
 # does no downloads and returns in well under 5 s.
@@ -57,8 +58,9 @@ fi
 cache="$top/.cache/openfoam"
 ofdir="$cache/openfoam-OpenFOAM-v1912.200626"
 stamp="$cache/.ready"
+pimple=applications/solvers/incompressible/pimpleFoam
 if [ -f "$stamp" ] && [ -d "$ofdir/src/lagrangian/intermediate/lnInclude" ] \
-   && [ -x "$ofdir/platforms/tools/linux64Gcc/wmkdepend" ]; then
+   && [ -x "$ofdir/platforms/tools/linux64Gcc/wmkdepend" ] && [ -f "$ofdir/$pimple/pEqn.H" ]; then
     say "OpenFOAM v1912 sources ready in ${ofdir#$top/}"
     exit 0
 fi
@@ -84,11 +86,12 @@ SRC
     orig=$(ls "$cache"/openfoam_1912.200626.orig.tar.* 2>/dev/null | head -n1 || true)
     [ -n "$orig" ] || die "no openfoam_1912.200626.orig.tar.* in $cache after download"
 fi
-if [ ! -d "$ofdir/src" ]; then
-    say "unpacking src/ wmake/ META-INFO from ${orig##*/}"
+if [ ! -d "$ofdir/src" ] || [ ! -f "$ofdir/$pimple/pEqn.H" ]; then
+    say "unpacking src/ wmake/ META-INFO $pimple/ from ${orig##*/}"
     tar -xf "$orig" -C "$cache" \
         openfoam-OpenFOAM-v1912.200626/src openfoam-OpenFOAM-v1912.200626/wmake \
-        openfoam-OpenFOAM-v1912.200626/META-INFO || die "unpacking $orig failed"
+        openfoam-OpenFOAM-v1912.200626/META-INFO \
+        "openfoam-OpenFOAM-v1912.200626/$pimple" || die "unpacking $orig failed"
 fi
 [ -e "$ofdir/etc" ] || ln -s /usr/share/openfoam/etc "$ofdir/etc"
 # shellcheck source=openfoam-env.sh

@@ -1,0 +1,140 @@
+/*---------------------------------------------------------------------------*\
+  SnowWall: applications/solvers/pimpleUncoupledKinematicParcelFoam
+-------------------------------------------------------------------------------
+Application
+    pimpleUncoupledKinematicParcelFoam
+
+Description
+    Transient incompressible turbulent flow (PIMPLE, any RAS/LES/DES model of
+    the incompressible turbulence library, fvOptions) with a kinematic
+    particle cloud that moves through the flow of every time step, one-way
+    coupled: the particles feel the flow, the flow does not feel them.
+
+    It is OpenFOAM's pimpleFoam time loop on a static mesh with one added
+    step: after the flow of a time step has converged, the cloud is evolved
+    over that same step in the new velocity field, exactly as
+    icoUncoupledKinematicParcelFoam evolves it in a frozen one. The flow
+    equations are pimpleFoam's own (createFields.H, UEqn.H, pEqn.H of the
+    OpenFOAM v1912 source, included at build time, not copied); the cloud is
+    the library's basicKinematicCloud, so every stock sub-model and any
+    patch interaction model registered for it (snowWallInteraction) is
+    selectable at run time in <cloud>Properties.
+
+    Several independent clouds can ride the same flow (-clouds): each reads
+    its own constant/<name>Properties, e.g. the same spray with different
+    wall-interaction settings, so a comparison costs one flow solution.
+
+    Required: the pimpleFoam fields (U, p, turbulence fields),
+    transportProperties with nu and rhoInf (the carrier density seen by the
+    cloud), constant/g and <cloud>Properties.
+
+Usage
+    pimpleUncoupledKinematicParcelFoam [-cloud NAME | -clouds '(NAME ...)']
+                                       [-parallel] [-help]
+
+    -cloud NAME         the cloud (default kinematicCloud)
+    -clouds '(A B ..)'  several clouds, evolved one after the other in every
+                        time step, each from constant/<name>Properties
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "singlePhaseTransportModel.H"
+#include "turbulentTransportModel.H"
+#include "pimpleControl.H"
+#include "fvOptions.H"
+#include "basicKinematicCloud.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Transient incompressible turbulent flow (PIMPLE) with a one-way"
+        " coupled kinematic particle cloud evolved in the flow of every"
+        " time step"
+    );
+    argList::addOption
+    (
+        "cloud",
+        "name",
+        "specify alternative cloud name. default is 'kinematicCloud'"
+    );
+    argList::addOption
+    (
+        "clouds",
+        "(name ...)",
+        "several clouds in the same flow, each from constant/<name>Properties"
+    );
+
+    #include "postProcess.H"
+
+    #include "addCheckCaseOptions.H"
+    #include "setRootCaseLists.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+    #include "createPimpleControl.H"
+    #include "createTimeControls.H"
+    #include "initContinuityErrs.H"
+    #include "createFields.H"          // pimpleFoam's: p, U, phi, turbulence
+    #include "createUfIfPresent.H"     // null on a static mesh
+    #include "createCloudFields.H"     // rho, mu, g and the cloud
+    #include "CourantNo.H"
+    #include "setInitialDeltaT.H"
+
+    turbulence->validate();
+
+    // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+    Info<< "\nStarting time loop\n" << endl;
+
+    while (runTime.run())
+    {
+        #include "readTimeControls.H"
+        #include "CourantNo.H"
+        #include "setDeltaT.H"
+
+        ++runTime;
+
+        Info<< "Time = " << runTime.timeName() << nl << endl;
+
+        // --- The flow: pimpleFoam's pressure-velocity PIMPLE loop
+        while (pimple.loop())
+        {
+            #include "UEqn.H"
+
+            while (pimple.correct())
+            {
+                #include "pEqn.H"
+            }
+
+            if (pimple.turbCorr())
+            {
+                laminarTransport.correct();
+                turbulence->correct();
+            }
+        }
+
+        // --- The particles: the same time step, in the flow just computed
+        mu = laminarTransport.nu()*rhoInfValue;
+
+        for (basicKinematicCloud& kinematicCloud : kinematicClouds)
+        {
+            Info<< "Evolving " << kinematicCloud.name() << endl;
+
+            kinematicCloud.evolve();
+        }
+
+        runTime.write();
+
+        runTime.printExecutionTime(Info);
+    }
+
+    Info<< "End\n" << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //
