@@ -269,6 +269,7 @@ int swv_regions(const swv_simmap *sim, double threshold, double band, double hol
     if (!(holdFraction > 0 && holdFraction <= 1))
         return swv_fail(err, errlen, 2, "hold fraction %g outside (0, 1]", holdFraction);
     int hit[SWV_NREGIONS] = {0};
+    const double faceArea = (sim->y1 - sim->y0) / sim->ny * ((sim->z1 - sim->z0) / sim->nz);
     for (int iz = 0; iz < sim->nz; iz++) {
         for (int iy = 0; iy < sim->ny; iy++) {
             double u = (iy + 0.5) / sim->ny, v = 1 - (iz + 0.5) / sim->nz;
@@ -281,6 +282,7 @@ int swv_regions(const swv_simmap *sim, double threshold, double band, double hol
             else continue;      /* above / below the centre: in no region */
             s->nfaces[r]++;
             s->mean[r] += val;
+            s->mass[r] += val * faceArea;
             if (val >= threshold && val > 0) hit[r]++;
         }
     }

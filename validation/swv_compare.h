@@ -61,12 +61,14 @@ void swv_metrics_from_counts(swv_metrics *m);
 /* Regions of the rear face (face coordinates, edge band width `band` = 0.1):
  * edges: the border band; left side: u in [band, 0.35), right side: u in (0.65, 1-band];
  * centre: u in [0.35, 0.65] x v in [0.3, 0.7]; the sides span v in [band, 1-band].
- * For each region: mean deposit and the fraction of its faces at or above the
- * threshold; it "holds snow" when that fraction >= holdFraction. */
+ * For each region: mean deposit, deposited mass (sum of value x face area, the
+ * faces of the regular grid spanning the outline) and the fraction of its faces
+ * at or above the threshold; it "holds snow" when that fraction >= holdFraction. */
 enum { SWV_REGION_LEFT, SWV_REGION_RIGHT, SWV_REGION_CENTRE, SWV_REGION_EDGES, SWV_NREGIONS };
 typedef struct swv_region_stats {
     int nfaces[SWV_NREGIONS];
     double mean[SWV_NREGIONS];      /* kg/m2 */
+    double mass[SWV_NREGIONS];      /* kg: sum of value x face area */
     double covered[SWV_NREGIONS];   /* fraction of faces >= threshold */
     int holds[SWV_NREGIONS];
 } swv_region_stats;

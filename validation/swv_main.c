@@ -18,7 +18,7 @@ static const char *usage =
 "                      [--photo-threshold L] [--sim-threshold KG_M2 | --sim-rel-threshold F]\n"
 "                      [--res N] [--out PNG]\n"
 "    snowphoto regions --sim CSV [--sim-threshold KG_M2 | --sim-rel-threshold F]\n"
-"                      [--band B] [--hold F] [--label TEXT]\n"
+"                      [--band B] [--hold F] [--label TEXT] [--parcel-mass KG]\n"
 "    snowphoto --help\n"
 "\n"
 "DESCRIPTION\n"
@@ -41,7 +41,11 @@ static const char *usage =
 "    and whether the region holds snow (fraction >= F of --hold). Regions (face\n"
 "    coordinates): edges = the border band of width B; left side u in [B, 0.35);\n"
 "    right side u in (0.65, 1-B]; centre u in [0.35, 0.65] x v in [0.3, 0.7]; the\n"
-"    sides span v in [B, 1-B]. One markdown table row per region.\n"
+"    sides span v in [B, 1-B]. One markdown table row: per region whether it\n"
+"    holds snow (bold), the covered fraction and the mean deposit; with\n"
+"    --parcel-mass also the number of parcels deposited in the region (its mass\n"
+"    = sum of deposit x face area, divided by the mass of one parcel) and the\n"
+"    Poisson relative error 1/sqrt(N) of that count ('inf' for none).\n"
 "\n"
 "    CSV is the rear-face map written by tutorials/wedge/post/wedge-post\n"
 "    (results/<gate>/rear_deposit.csv): a header line, then 'y,z,deposit_kg_m2' per\n"
@@ -63,6 +67,9 @@ static const char *usage =
 "    --band B                edge band width for regions, in (0, 0.3) (default 0.1)\n"
 "    --hold F                covered fraction for 'holds snow', in (0, 1] (default 0.3)\n"
 "    --label TEXT            first column of the regions rows (default: the CSV path)\n"
+"    --parcel-mass KG        mass of one parcel [kg], > 0 (a parcelBasisType mass\n"
+"                            spray: every parcel carries the same mass); adds\n"
+"                            parcel counts and Poisson errors per region\n"
 "    -h, --help              this text\n"
 "\n"
 "EXIT STATUS\n"
@@ -124,7 +131,7 @@ int main(int argc, char **argv)
     swv_config_defaults(&cfg);
     const char *photo_path = NULL, *sim_path = NULL, *out_path = NULL, *label = NULL;
     int have_corners = 0;
-    double band = 0.1, hold = 0.3;
+    double band = 0.1, hold = 0.3, parcel_mass = 0;
     for (int i = 2; i < argc; i++) {
         const char *o = argv[i];
         if (!strcmp(o, "-h") || !strcmp(o, "--help")) {
@@ -186,6 +193,13 @@ int main(int argc, char **argv)
                 return 2;
             }
             hold = d;
+        } else if (!strcmp(o, "--parcel-mass") && is_regions) {
+            if (parse_double(o, a, &d)) return 2;
+            if (!(d > 0)) {
+                fprintf(stderr, "snowphoto: --parcel-mass %s is not > 0\n", a);
+                return 2;
+            }
+            parcel_mass = d;
         } else {
             fprintf(stderr, "snowphoto %s: unknown option '%s'; see snowphoto --help\n", cmd, o);
             return 2;
@@ -216,8 +230,17 @@ int main(int argc, char **argv)
             return rc;
         }
         printf("| %s |", label ? label : sim_path);
-        for (int r = 0; r < SWV_NREGIONS; r++)
-            printf(" %s (%.0f %%, %.3g kg/m2) |", st.holds[r] ? "**snow**" : "no", 100 * st.covered[r], st.mean[r]);
+        for (int r = 0; r < SWV_NREGIONS; r++) {
+            printf(" %s (%.0f %%, %.3g kg/m2", st.holds[r] ? "**snow**" : "no", 100 * st.covered[r], st.mean[r]);
+            if (parcel_mass > 0) {
+                double n = st.mass[r] / parcel_mass;
+                if (n >= 0.5)
+                    printf(", %.0f parcels +- %.1f %%", n, 100 / sqrt(n));
+                else
+                    printf(", 0 parcels +- inf");
+            }
+            printf(") |");
+        }
         printf(" %.3g |\n", thr);
         swv_simmap_free(sim);
         return 0;

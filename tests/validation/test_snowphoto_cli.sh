@@ -42,6 +42,14 @@ check "sim threshold 5 kg/m2: no simulated snow" "near $(val sim_snow_fraction "
 "$exe" regions --sim "$tmp/sim.csv" --label test > "$tmp/regions"
 cat "$tmp/regions"
 check "regions: one row" "[ \$(wc -l < '$tmp/regions') = 1 ] && grep -q '^| test |' '$tmp/regions'"
+# parcel counts: a 20 x 20 map of 0.01 m faces with 1 kg/m2 on the left side only
+# (5 x 16 faces = 8e-3 kg) and parcels of 1e-4 kg: 80 parcels +- 1/sqrt(80) = 11.2 %
+awk 'BEGIN{print "y,z,d"; for (iz=0; iz<20; iz++) for (iy=0; iy<20; iy++)
+    printf "%.3f,%.3f,%d\n", iy*0.01, iz*0.01, (iy>=2 && iy<=6 && iz>=2 && iz<=17)}' > "$tmp/left.csv"
+"$exe" regions --sim "$tmp/left.csv" --label left --parcel-mass 1e-4 > "$tmp/regions_n"
+cat "$tmp/regions_n"
+check "regions --parcel-mass: left side 80 parcels +- 11.2 %" "grep -q '80 parcels +- 11.2 %' '$tmp/regions_n'"
+check "regions --parcel-mass: empty regions have no count" "[ \$(grep -o '0 parcels +- inf' '$tmp/regions_n' | wc -l) = 3 ]"
 
 # bad input: exit 2, a message naming the value, no side-by-side written
 bad() {  # bad NAME EXPECTED_TEXT args...
@@ -63,6 +71,7 @@ echo "y,z,d" > "$tmp/empty.csv"
 bad "empty map" "empty.csv" compare --photo "$tmp/photo.png" --corners $corners --sim "$tmp/empty.csv" --out "$tmp/bad.png"
 printf 'y,z,d\n0,0,1\n1,0,1\n0,1,oops\n1,1,1\n' > "$tmp/malformed.csv"
 bad "malformed map" "malformed.csv:4" regions --sim "$tmp/malformed.csv"
+bad "zero parcel mass" "--parcel-mass 0" regions --sim "$tmp/left.csv" --parcel-mass 0
 echo "not an image" > "$tmp/text.png"
 bad "not an image" "neither PNG nor JPEG" compare --photo "$tmp/text.png" --corners $corners --sim "$tmp/sim.csv" --out "$tmp/bad.png"
 bad "missing photo" "nothere.jpg" compare --photo "$tmp/nothere.jpg" --corners $corners --sim "$tmp/sim.csv" --out "$tmp/bad.png"

@@ -228,6 +228,9 @@ static void test_regions(void **state)
     assert_int_equal(s.holds[SWV_REGION_RIGHT], 0);
     assert_int_equal(s.holds[SWV_REGION_CENTRE], 0);
     assert_int_equal(s.nfaces[SWV_REGION_EDGES], 400 - 16 * 16);
+    /* unit face spacing: region mass = number of faces x value */
+    assert_true(fabs(s.mass[SWV_REGION_EDGES] - 144) < 1e-9);
+    assert_true(fabs(s.mass[SWV_REGION_LEFT]) < 1e-12);
     /* left side only: faces iy 2..6 (u 0.125 .. 0.325) */
     for (int i = 0; i < 400; i++) {
         int iy = i % 20;
@@ -237,6 +240,8 @@ static void test_regions(void **state)
     assert_int_equal(s.holds[SWV_REGION_LEFT], 1);
     assert_int_equal(s.holds[SWV_REGION_RIGHT], 0);
     assert_int_equal(s.holds[SWV_REGION_CENTRE], 0);
+    assert_true(fabs(s.mass[SWV_REGION_LEFT] - 5 * 16) < 1e-9);     /* iy 2..6, iz 2..17 */
+    assert_true(fabs(s.mass[SWV_REGION_EDGES] - 5 * 4) < 1e-9);     /* iy 2..6 in the band rows */
     assert_int_equal(swv_regions(m, 0.1, 0.5, 0.3, &s, err, sizeof err), 2);
     swv_simmap_free(m);
     unlink(p);
