@@ -1,0 +1,108 @@
+#!/usr/bin/env bash
+# test_splitting.sh - the parcelSplitting cloud function object on the box case
+# (tests/openfoam/box): seven force-free parcels (no drag, no dispersion) whose
+# paths are deterministic, so every copy of a split parcel meets the fate of its
+# original. Splitting must therefore leave the deposit unchanged to rounding
+# (it is unbiased, and here exactly so) while multiplying the impacts.
+#
+# Region: the second cell layer (centres at y = 0.0375), factor 20. Parcels p1-p3
+# (10, 40, 20 um, from y = 0.07 at -1 m/s) cross it 0.05 s before they reach the
+# wall; p4-p7 start below it and are never split (splitting acts at the end of a
+# step, on the parcels then in the region). The reference mass is the mean
+# injected parcel mass, m_ref = 920 pi/6 <d^3>, <d^3> = (1+64+8+1+3.375+1+1)/7 um^3
+# (10, 40, 20, 10, 15, 10, 10 um); a parcel of mass m becomes n = round(20 m / m_ref)
+# copies: p1 -> 2, p2 -> 113, p3 -> 14 (126 copies made). With the reference
+# fates (p1 sticks, p2 bounces, p3 is ripped off; p4-p7: 2 sticks, 2 bounces) the
+# split run has 2+113+14+4 = 133 impacts, 4 sticks, 115 bounces, 14 rip-offs and
+# exactly the reference deposit. Checked serial, with mpirun -np 2 and across a
+# restart, plus the input errors.
+set -euo pipefail
+# shellcheck source=common.sh
+. "$(dirname "$0")/common.sh"
+[ -f "$top/platforms/lib/libparcelSplitting.so" ] || { echo "SKIP: libparcelSplitting.so not built (run ./Allwmake)"; exit 77; }
+
+prep() {  # prep CASE [FACTOR [REGION]]: the box, with splitting when FACTOR is given
+    cp -r "$top/tests/openfoam/box" "$1"
+    cp "$fixture" "$1/constant/regime.coeffs"
+    if [ -n "${2:-}" ]; then
+        foamDictionary -entry libs -set '("libsnowWallInteraction.so" "libparcelSplitting.so")' \
+            "$1/system/controlDict" > /dev/null
+        foamDictionary -entry cloudFunctions -set \
+            "{ split { type parcelSplitting; regions ( lower { ${3:-box (-1 0.025 -1) (1 0.06 1);} factor $2; } ); } }" \
+            "$1/constant/kinematicCloudProperties" > /dev/null
+    fi
+    (cd "$1" && run log.blockMesh blockMesh)
+}
+deposit_sum() { deposit_values "$1" wall | awk '{ s += $1 * 6.25e-04 } END { printf "%.12g", s }'; }
+same_field() {  # same_field FILE_A FILE_B: per-face values equal within 1e-9 relative
+    paste <(deposit_values "$1" wall) <(deposit_values "$2" wall) |
+        awk '{ d = $1 - $2; if (d < 0) d = -d; m = ($1 > 0) ? $1 : -$1; if (d > 1e-9 * m + 1e-300) bad++; n++ }
+             END { exit !(n == 16 && !bad) }'
+}
+
+# reference: no splitting
+prep "$tmp/ref"
+(cd "$tmp/ref" && run log.run icoUncoupledKinematicParcelFoam)
+ref="$tmp/ref/0.1/kinematicCloud:snowDeposit"
+[ "$(series_last "$tmp/ref" 0 | cut -d' ' -f2-5)" = "7 3 3 1" ] || fail "reference totals: $(series_last "$tmp/ref" 0)"
+
+# expected copies of p1-p3 from the rule n = round(20 m / m_ref)
+want_copies=$(awk 'BEGIN { split("10 40 20 10 15 10 10", d, " "); s = 0
+    for (i = 1; i <= 7; i++) s += d[i]^3; r = s / 7
+    for (i = 1; i <= 3; i++) n += int(20 * d[i]^3 / r + 0.5); print n }')
+[ "$want_copies" = 129 ] || fail "expected p1-p3 to make 129 parcels by the rule, computed $want_copies"
+
+# 1. serial with splitting
+prep "$tmp/split" 20
+(cd "$tmp/split" && run log.run icoUncoupledKinematicParcelFoam)
+line=$(series_last "$tmp/split" 0)
+[ "$(echo "$line" | cut -d' ' -f2-5)" = "133 4 115 14" ] \
+    || fail "split: totals '$(echo "$line" | cut -d' ' -f2-5)', expected '133 4 115 14' ($line)"
+grep -q "parcelSplitting split: .* (totals 3, +126)" "$tmp/split/log.run" \
+    || fail "split: log does not report 3 parcels split into 129 (+126)"
+same_field "$ref" "$tmp/split/0.1/kinematicCloud:snowDeposit" \
+    || fail "split: deposit field differs from the reference ($(deposit_sum "$ref") vs $(deposit_sum "$tmp/split/0.1/kinematicCloud:snowDeposit") kg)"
+grep -q "nCopies *126;" "$tmp/split/0.1/uniform/lagrangian/kinematicCloud/kinematicCloudOutputProperties" \
+    || fail "split: nCopies 126 not in the cloud's output properties"
+echo "serial: ok ($line; deposit $(deposit_sum "$tmp/split/0.1/kinematicCloud:snowDeposit") kg as without splitting)"
+
+# 2. mpirun -np 2: the same
+prep "$tmp/par" 20
+(cd "$tmp/par" && run log.decomposePar decomposePar \
+    && run log.run mpirun -np 2 --oversubscribe icoUncoupledKinematicParcelFoam -parallel \
+    && run log.reconstructPar reconstructPar -latestTime)
+[ "$(series_last "$tmp/par" 0 | cut -d' ' -f2-5)" = "133 4 115 14" ] || fail "parallel totals: $(series_last "$tmp/par" 0)"
+same_field "$ref" "$tmp/par/0.1/kinematicCloud:snowDeposit" || fail "parallel: deposit field differs from the reference"
+echo "parallel: ok ($(series_last "$tmp/par" 0))"
+
+# 3. restart at 0.05 (after the splits): the restored copies are light enough not
+# to be split again, the totals and the deposit are those of the uninterrupted run
+prep "$tmp/restart" 20
+(cd "$tmp/restart" && foamDictionary -entry endTime -set 0.05 system/controlDict > /dev/null \
+    && run log.run1 icoUncoupledKinematicParcelFoam \
+    && foamDictionary -entry endTime -set 0.1 system/controlDict > /dev/null \
+    && run log.run2 icoUncoupledKinematicParcelFoam)
+[ "$(series_last "$tmp/restart" 0.05 | cut -d' ' -f2-5)" = "133 4 115 14" ] || fail "restart totals: $(series_last "$tmp/restart" 0.05)"
+! grep -q "parcelSplitting split:" "$tmp/restart/log.run2" || fail "restart: restored parcels were split again"
+grep -q "nCopies *126;" "$tmp/restart/0.1/uniform/lagrangian/kinematicCloud/kinematicCloudOutputProperties" \
+    || fail "restart: nCopies 126 not restored"
+same_field "$ref" "$tmp/restart/0.1/kinematicCloud:snowDeposit" || fail "restart: deposit field differs from the reference"
+echo "restart: ok"
+
+# 4. input errors name the region and the value
+expect_fatal() {  # CASE PATTERN
+    if (cd "$1" && icoUncoupledKinematicParcelFoam > log.run 2>&1); then
+        fail "$1: solver succeeded, expected a FatalError"
+    fi
+    grep -q -- "$2" "$1/log.run" || { tail -20 "$1/log.run" >&2; fail "$1: no '$2' in the error"; }
+}
+prep "$tmp/badFactor" 0.5
+expect_fatal "$tmp/badFactor" "region lower: factor 0.5 must be in \[1, 1e6\]"
+prep "$tmp/badBox" 20 "box (1 0.025 -1) (-1 0.06 1);"
+expect_fatal "$tmp/badBox" "region lower: box (1 0.025 -1) (-1 0.06 1) needs min < max"
+prep "$tmp/oddBoxes" 20 "boxes ((0 0 0) (1 1 1) (2 2 2));"
+expect_fatal "$tmp/oddBoxes" "region lower: 'boxes' holds 3 points"
+prep "$tmp/noBox" 20 " "
+expect_fatal "$tmp/noBox" "needs 'box (min) (max);'"
+echo "errors: ok"
+echo "PASS"
