@@ -15,7 +15,7 @@
 # fates (p1 sticks, p2 bounces, p3 is ripped off; p4-p7: 2 sticks, 2 bounces) the
 # split run has 2+113+14+4 = 133 impacts, 4 sticks, 115 bounces, 14 rip-offs and
 # exactly the reference deposit. Checked serial, with mpirun -np 2 and across a
-# restart, plus the input errors.
+# restart, the maxParcels cap, plus the input errors.
 set -euo pipefail
 # shellcheck source=common.sh
 . "$(dirname "$0")/common.sh"
@@ -88,6 +88,16 @@ grep -q "nCopies *126;" "$tmp/restart/0.1/uniform/lagrangian/kinematicCloud/kine
     || fail "restart: nCopies 126 not restored"
 same_field "$ref" "$tmp/restart/0.1/kinematicCloud:snowDeposit" || fail "restart: deposit field differs from the reference"
 echo "restart: ok"
+
+# 3b. maxParcels 1: more parcels than that are in the cloud while p1-p3 cross the
+# splitting layer, so nothing is split; the log says so
+prep "$tmp/capped" 20
+foamDictionary -entry cloudFunctions/split/maxParcels -add 1 \
+    "$tmp/capped/constant/kinematicCloudProperties" > /dev/null
+(cd "$tmp/capped" && run log.run icoUncoupledKinematicParcelFoam)
+[ "$(series_last "$tmp/capped" 0 | cut -d' ' -f2-5)" = "7 3 3 1" ] || fail "maxParcels: totals $(series_last "$tmp/capped" 0)"
+grep -q "parcels > maxParcels 1: no splitting" "$tmp/capped/log.run" || fail "maxParcels: no notice in the log"
+echo "maxParcels: ok"
 
 # 4. input errors name the region and the value
 expect_fatal() {  # CASE PATTERN

@@ -150,7 +150,8 @@ Foam::ParcelSplitting<CloudType>::ParcelSplitting
         )
     ),
     nSplit_(0),
-    nCopies_(0)
+    nCopies_(0),
+    capped_(false)
 {
     if (maxParcels_ < 1)
     {
@@ -176,7 +177,8 @@ Foam::ParcelSplitting<CloudType>::ParcelSplitting
     factor_(ps.factor_),
     maxParcels_(ps.maxParcels_),
     nSplit_(ps.nSplit_),
-    nCopies_(ps.nCopies_)
+    nCopies_(ps.nCopies_),
+    capped_(ps.capped_)
 {}
 
 
@@ -187,14 +189,27 @@ void Foam::ParcelSplitting<CloudType>::postEvolve()
 {
     const scalar mRef = referenceMass();
     CloudType& cloud = this->owner();
+    const label nParcels = returnReduce(cloud.size(), sumOp<label>());
 
-    if (mRef > 0 && returnReduce(cloud.size(), sumOp<label>()) <= maxParcels_)
+    if (nParcels > maxParcels_ && !capped_)
+    {
+        Info<< "    parcelSplitting " << this->modelName() << ": "
+            << nParcels << " parcels > maxParcels " << maxParcels_
+            << ": no splitting while the cloud is that large" << endl;
+    }
+    capped_ = nParcels > maxParcels_;
+
+    if (mRef > 0 && !capped_)
     {
         // find the parcels to split first: copies are added afterwards
         DynamicList<parcelType*> parcels;
         DynamicList<label> nCopies;
         for (parcelType& p : cloud)
         {
+            if (!p.active())
+            {
+                continue;       // stuck and kept (stuckParcels keep): deposited
+            }
             scalar F = 1;
             forAll(regionCells_, r)
             {
