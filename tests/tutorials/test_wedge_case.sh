@@ -116,6 +116,20 @@ run_case() {  # run_case N ARGS: Allrun ARGS in a fresh copy $tmp/wedgeN, then t
             check "decomposed into 2" "grep -q 'Processor 1' '$w/log.decomposePar' && grep -q 'nProcs : 2' '$w/$log'"
             check "reconstructed deposit field" "ls '$w/'0.*/kinematicCloud:snowDeposit >/dev/null 2>&1" ;;
     esac
+    case "$args" in
+        *-compare*)
+            # the solver's cloud options: bad lists stop it at start-up with a message
+            bad_clouds() {  # bad_clouds MESSAGE ARGS...
+                local msg=$1; shift
+                (cd "$w" && pimpleUncoupledKinematicParcelFoam "$@" > log.bad 2>&1)
+                local brc=$?
+                check "solver $*: fails naming it ('$msg')" "[ $brc != 0 ] && grep -q -- '$msg' '$w/log.bad'"
+            }
+            bad_clouds "appears twice" -clouds "(kinematicCloud kinematicCloud)"
+            bad_clouds "list of cloud names is empty" -clouds "()"
+            bad_clouds "give either -cloud or -clouds" -cloud kinematicCloud -clouds "(kinematicCloud)"
+            rm -f "$w/log.bad" ;;
+    esac
     awk -F, '$1=="nose"{print $5}' "$r/off/deposit_per_patch.csv" 2>/dev/null > "$tmp/nose$n" || true
     "$w/Allclean"
     (cd "$w" && find . -type f | sed 's|^\./||' | sort > "$tmp/after$n")
