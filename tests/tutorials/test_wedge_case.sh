@@ -90,14 +90,18 @@ run_case() {  # run_case N ARGS: Allrun ARGS in a fresh copy $tmp/wedgeN, then t
         check "$g: rear map x face area = rear integral ($map_int vs $rear_int)" "absle \$(awk -v a=$map_int -v b=$rear_int 'BEGIN{print a-b}') \$(awk -v b=$rear_int 'BEGIN{print 1e-4*b+1e-9}')"
         check "$g: rear-face PNG" "[ \"\$(head -c 4 '$r/$g/rear_deposit.png' | tail -c 3)\" = PNG ]"
         check "$g: per-patch table lists the 6 wedge patches" "[ \$(grep -c -E '^\| (rear|nose|top|bottom|sideYneg|sideYpos) \|' '$r/$g/deposit_per_patch.md') = 6 ]"
-        case "$args" in *-steady*) continue ;; esac
+        case "$args" in *-steady*)
+            check "$g: rear_statistics.md: the whole run" "grep -q '^| whole run |' '$r/$g/rear_statistics.md'"
+            continue ;;
+        esac
         local halves
         halves=$(paste -d, "$r/$g/rear_deposit.csv" "$r/$g/rear_deposit_half1.csv" "$r/$g/rear_deposit_half2.csv" |
             awk -F, 'NR>1{d=$6+$9-2*$3; if (d<0) d=-d; if (d>m) m=d; s+=$3} END{printf "%.3g", (s>0)? m/(s/(NR-1)) : m}')
         check "$g: half1 + half2 = 2 x window, per face (max error $halves of the mean)" "absle $halves 1e-6"
         check "$g: halves PNG" "[ \"\$(head -c 4 '$r/$g/rear_deposit_halves.png' | tail -c 3)\" = PNG ]"
-        check "$g: convergence.md: 6 patch rows, window and half rows with parcel counts" \
-            "[ \$(grep -c -E '^\| (rear|nose|top|bottom|sideYneg|sideYpos) \|' '$r/$g/convergence.md') = 6 ] && [ \$(grep -c -E '^\| (window|first half|second half) \|.*parcels' '$r/$g/convergence.md') = 3 ]"
+        check "$g: convergence.md: 6 patch rows; statistics and region rows for the window and its halves; the flow" \
+            "[ \$(grep -c -E '^\| (rear|nose|top|bottom|sideYneg|sideYpos) \|' '$r/$g/convergence.md') = 6 ] && [ \$(grep -c -E '^\| (window|first half|second half)' '$r/$g/convergence.md') = 6 ] && grep -q 'Strouhal number' '$r/$g/convergence.md' && grep -q '^y+ of the first cells' '$r/$g/convergence.md'"
+        check "$g: rear_statistics.md: the window and its halves" "[ \$(grep -c -E '^\| (window|first half|second half)' '$r/$g/rear_statistics.md') = 3 ]"
     done
     check "main rear-face PNG and table" "[ -s '$r/rear_deposit.png' ] && [ -s '$r/deposit_per_patch.md' ]"
     check "ParaView files" "[ -f '$w/case.foam' ] && ls '$w/VTK' >/dev/null 2>&1"
