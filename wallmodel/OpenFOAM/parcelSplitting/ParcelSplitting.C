@@ -189,7 +189,13 @@ void Foam::ParcelSplitting<CloudType>::postEvolve()
 {
     const scalar mRef = referenceMass();
     CloudType& cloud = this->owner();
-    const label nParcels = returnReduce(cloud.size(), sumOp<label>());
+    // the global count only when a cap is set (a reduction every step otherwise)
+    const label nParcels =
+    (
+        maxParcels_ < labelMax
+      ? returnReduce(cloud.size(), sumOp<label>())
+      : label(0)
+    );
 
     if (nParcels > maxParcels_ && !capped_)
     {
