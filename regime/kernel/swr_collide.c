@@ -27,10 +27,12 @@
 
 #include "swp_contact.h"
 #include "swp_jkr.h"
+#include "swp_cor.h"
 #include "swp_time.h"
 #include "swr_damping.h"
 #include "swr_internal.h"
 #include "swr_normal.h"
+#include "swr_plastic.h"
 #include "swr_rolling.h"
 #include "swr_tangential.h"
 #include "swr_wall.h"
@@ -154,6 +156,36 @@ static double travel_time(const swr_normal *n, double E, double x_lo, double x_h
     return sum;
 }
 
+/* Thornton-Ning normal impact in closed form (scaled units, E0 = 1/2): the
+ * loading ends where the work done equals the impact energy, the unloading
+ * is conservative on the flattened curve. Time: elastic JKR travel, the
+ * harmonic yield branch (z = delta - delta_y + F_y/k oscillates about 0 at
+ * sqrt(k)), and the unloading travel to the separation. Returns the time to
+ * the decision (turning point) in *t_turn and to the separation in *t_sep
+ * (bounce), and the rebound energy e^2/2 (<= 0: kept). */
+static double plastic_closed_form(swr_plastic *pl, double E0, double dstar, double *t_turn,
+                                  double *t_sep)
+{
+    swr_plastic_unload(pl, dstar);
+    const swr_normal *el = &pl->el;
+    const double xj = el->gamma > 0.0 ? el->xj : 0.0;
+    double t;
+    if (dstar < pl->dy) {
+        t = travel_time(el, E0, xj, pl->xstar);
+    } else {
+        t = pl->Wy > 0.0 ? travel_time(el, E0, xj, pl->xy) : 0.0;
+        const double w = sqrt(pl->k), z0 = pl->Fy / pl->k;
+        const double u2 = 2.0 * (E0 - pl->Wy);
+        const double amp = sqrt(z0 * z0 + (u2 > 0.0 ? u2 : 0.0) / pl->k);
+        const double c = amp > 0.0 ? z0 / amp : 1.0;
+        t += acos(c > 1.0 ? 1.0 : (c < -1.0 ? -1.0 : c)) / w;
+    }
+    *t_turn = t;
+    const double rebound = E0 - swr_plastic_separation_energy(pl);
+    *t_sep = rebound > 0.0 ? t + travel_time(&pl->un, pl->Ustar, pl->un.xf, pl->xstar) : t;
+    return rebound;
+}
+
 swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
                        const swr_trace *trace)
 {
@@ -180,10 +212,14 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
     const double v_ref = in->vn > v_adh ? in->vn : v_adh;
     const double tc = swp_hertz_contact_time(mass, R, m->Estar, v_ref);
 
+    const int plastic = p->cor == SWR_COR_THORNTON_NING;
     r->e_target = swr_damping_target(p, m->Estar, R, mass, in->vn);
-    const double alpha = p->cor == SWR_COR_CONSTANT ? m->alpha_const
+    const int damp_both = p->dashpot == SWR_DASHPOT_BOTH;
+    const double alpha = plastic ? 0.0
+                       : damp_both ? swr_damping_alpha_both(r->e_target)
+                       : p->cor == SWR_COR_CONSTANT ? m->alpha_const
                                                     : swr_damping_alpha(r->e_target);
-    if (r->e_target < m->e_min)
+    if (!plastic && r->e_target < (damp_both ? swr_damping_e_min_both() : m->e_min))
         append_msg(r, "plastic COR below the dashpot table: damping capped");
     if (m->adhesive) {
         int ok;
@@ -214,11 +250,55 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
     const double g = swr_damping_time_factor(alpha);
     double h = g / p->accuracy, h2 = 0.5 * h;
     const double E0 = 0.5;                           /* kinetic energy at first contact */
-    const double dsep = nrm.delta_c;                 /* 0 for Hertz */
+    double dsep = nrm.delta_c;                       /* 0 for Hertz */
+    double usep = nrm.Uc;                            /* energy needed to separate */
+    /* energy scale of the balance check: the impact energy, or the adhesive
+     * separation energy when that is larger (slow impacts) */
+    const double eref = E0 > nrm.Uc ? E0 : nrm.Uc;
+    /* no tangential motion and no trace: once the remaining normal motion is
+     * conservative, finish it in closed form instead of stepping */
+    const int tangential = in->vt != 0.0 || in->omega != 0.0;
+    const int stride = trace && trace->fn && trace->stride > 0 ? trace->stride : 0;
+    const int shortcut = !tangential && !stride;
 
-    r->dt = h * T;
     /* bound: SWR_CONTACT_TIMES_MAX undamped contact times t_c */
-    r->max_steps = (long)ceil(SWR_CONTACT_TIMES_MAX * p->accuracy / g) + 16;
+    double t_bound = SWR_CONTACT_TIMES_MAX / g;
+    swr_plastic pl;
+    double dstar = 0.0;
+    if (plastic) {
+        swr_plastic_init(&pl, Rs, m->Estar * sE, gam * T * T / mass,
+                         swp_limiting_pressure(p->sigma_y) * sE);
+        /* the turning point follows from the energy (closed form); the
+         * step resolves the stiffest curve met, the flattened contact's
+         * unloading (k = 2 E* a*), and the bound adds the softer yield
+         * branch's half period */
+        dstar = swr_plastic_turning(&pl, E0);
+        double xs;
+        swr_plastic_load_work(&pl, dstar, &xs);
+        const double tu = M_PI / sqrt(2.0 * m->Estar * sE * xs * xs);
+        if (tu < 1.0) {
+            h = tu / p->accuracy;
+            h2 = 0.5 * h;
+        }
+        t_bound = SWR_CONTACT_TIMES_MAX * (1.0 + tu + M_PI / sqrt(pl.k));
+        if (shortcut) {
+            double t_turn, t_sep;
+            const double reb = plastic_closed_form(&pl, E0, dstar, &t_turn, &t_sep);
+            r->status = SWR_OK;
+            r->dt = 0.0;
+            r->steps = 0;
+            r->max_steps = 0;
+            r->delta_max = dstar * L;
+            r->energy_err = 0.0;
+            r->contact_kept = !(reb > 0.0);
+            r->stick = r->contact_kept;
+            r->e_n = reb > 0.0 ? sqrt(2.0 * reb) : 0.0;
+            r->t_contact = (reb > 0.0 ? t_sep : t_turn) * T;
+            return SWR_OK;
+        }
+    }
+    r->dt = h * T;
+    r->max_steps = (long)ceil(t_bound / h) + 16;
 
     /* --- state at first contact (jump-in for JKR) --- */
     double t = 0.0, delta = 0.0, u = 1.0;
@@ -227,24 +307,22 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
     double vt = in->vt / V, w = in->omega * T;
     swr_tangential tan = { 0.0, 0, 0.0 };
     swr_rolling rol = { 0.0, 0, 0.0 };
+    const swr_normal *act = &nrm;                    /* curve the tangential laws use */
     double ft = 0.0, mr = 0.0;
     double wd = 0.0, err = 0.0, dmax = 0.0, em = E0, phi_old = 0.0;
     double e_dec = E0;   /* normal energy from the decision on (conserved) */
     enum { OPEN, BOUNCE, STICK } outcome = OPEN;
     int separated = 0, moving_out = 0;
     double t_end = 0.0, vt_out = vt;
-    const int stride = trace && trace->fn && trace->stride > 0 ? trace->stride : 0;
-    /* no tangential motion and no trace: once the remaining normal motion is
-     * conservative, finish it in closed form instead of stepping */
-    const int tangential = in->vt != 0.0 || in->omega != 0.0;
-    const int shortcut = !tangential && !stride;
 
     if (stride)
         trace->fn(trace->ctx, 0.0, 0.0, in->vn, fn * mass * L / (T * T), x * x * L, in->vt,
                   in->omega);
     /* Known at first contact: with E0 <= U_c it can never escape (damping
      * only removes energy); undamped, the energy is conserved. */
-    if (E0 <= nrm.Uc)
+    if (plastic)
+        ; /* decided on the unloading curve */
+    else if (E0 <= nrm.Uc)
         outcome = STICK;
     else if (alpha == 0.0)
         outcome = BOUNCE;
@@ -260,7 +338,15 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
         delta += h * uh;
         n++;
         t += h;
-        if (delta < dsep || (dsep == 0.0 && delta <= 0.0)) {
+        if (plastic && uh < 0.0 && pl.branch != SWR_PL_UNLOAD) {
+            /* turned: unload from the turning point of the energy balance */
+            swr_plastic_unload(&pl, dstar);
+            act = &pl.un;
+            x = pl.xstar;
+            dsep = swr_plastic_separation_overlap(&pl);
+            usep = swr_plastic_separation_energy(&pl);
+        }
+        if (delta < dsep || (act->gamma == 0.0 && delta <= dsep)) {
             /* the contact breaks during this drift (undamped since u < 0) */
             t_end = t - h + h * (d_old - dsep) / (d_old - delta);
             vt_out = vth;
@@ -270,8 +356,12 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
             outcome = BOUNCE;
             break;
         }
-        x = swr_normal_x(&nrm, delta, x);
-        fne = swr_normal_force(&nrm, x);
+        if (plastic) {
+            fne = swr_plastic_force(&pl, delta, &x);
+        } else {
+            x = swr_normal_x(&nrm, delta, x);
+            fne = swr_normal_force(&nrm, x);
+        }
         /* closing kick. The dashpot acts while loading; its impulse over the
          * step is exact: int c(delta) u dt = Phi(delta1) - Phi(delta0),
          * Phi = (4/5) alpha kd delta^(5/4), which also removes the error of
@@ -280,14 +370,14 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
         u = uh - h2 * fne;
         const double phi = delta > 0.0 ? pk * delta * sqrt(sqrt(delta)) : 0.0;
         fd = 0.0;
-        if (uh > 0.0 && alpha > 0.0) {
+        if ((uh > 0.0 || (damp_both && (delta > 0.0 || d_old > 0.0))) && alpha > 0.0) {
             const double imp = phi - phi_old - h2 * fd_old;
             const double ue = u;
             u -= imp;
-            if (u < 0.0 && ue > 0.0)
-                u = 0.0; /* the dashpot stops the approach, it never reverses it */
-            wd += (phi - phi_old) * 0.5 * (u_old + (u > 0.0 ? u : 0.0));
-            if (u > 0.0 && delta > 0.0)
+            if (ue > 0.0 ? u < 0.0 : (ue < 0.0 && u > 0.0))
+                u = 0.0; /* the dashpot stops the motion, it never reverses it */
+            wd += (phi - phi_old) * 0.5 * (u_old + (ue > 0.0 ? fmax(u, 0.0) : fmin(u, 0.0)));
+            if ((u > 0.0 || damp_both) && delta > 0.0)
                 fd = alpha * kd * sqrt(sqrt(delta)) * u;
         } else if (fd_old != 0.0) {
             u += h2 * fd_old; /* loading ended: undo the opening kick's dashpot part */
@@ -299,10 +389,10 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
             /* Coulomb limit on the whole contact load: the dashpot stands for
              * the plastic contact pressure while loading */
             ft = swr_tangential_update(&tan, h * (vth + Rs * wh), 8.0 * Gs * a,
-                                       mu * fabs(fn + 2.0 * nrm.Fc));
+                                       mu * fabs(fn + 2.0 * act->Fc));
             if (m->adhesive) {
-                const double ra = a / nrm.a0;
-                mr = swr_rolling_update(&rol, -h * Rs * wh, 4.0 * nrm.Fc * ra * sqrt(ra), xic);
+                const double ra = a / act->a0;
+                mr = swr_rolling_update(&rol, -h * Rs * wh, 4.0 * act->Fc * ra * sqrt(ra), xic);
             }
             vt = vth + h2 * ft;
             w = wh + h2 * (Rs * ft + mr) / Is;
@@ -310,8 +400,8 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
         if (delta > dmax)
             dmax = delta;
 
-        em = 0.5 * u * u + swr_normal_energy(&nrm, x);
-        const double e_err = fabs(em + wd - E0) / E0;
+        em = 0.5 * u * u + (plastic ? swr_plastic_energy(&pl, delta, x) : swr_normal_energy(&nrm, x));
+        const double e_err = fabs(em + wd - E0) / eref;
         if (e_err > err)
             err = e_err;
         if (stride && n % stride == 0)
@@ -323,17 +413,18 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
             /* Turned back after a bounce decision: only possible within the
              * integration error of E - U_c, right at the threshold. The
              * decision stands (it used the energy); finish in closed form. */
-            t_end = t + travel_time(&nrm, e_dec, nrm.xf, x);
+            t_end = t + (plastic ? travel_time(act, e_dec - pl.Wstar + pl.Ustar, act->xf, x)
+                                 : travel_time(&nrm, e_dec, nrm.xf, x));
             vt_out = vt;
             separated = 1;
             break;
         }
-        if (outcome == OPEN) {
-            if (em <= nrm.Uc) {
+        if (outcome == OPEN && (!plastic || pl.branch == SWR_PL_UNLOAD)) {
+            if (em <= usep) {
                 /* it can never reach delta_c: damping only removes energy */
                 outcome = STICK;
                 t_end = t;
-            } else if (u < 0.0) {
+            } else if (u < 0.0 && !(damp_both && alpha > 0.0 && delta > 0.0)) {
                 /* moving out: undamped from here on, and with E > U_c the
                  * energy exceeds U everywhere between here and delta_c (U
                  * falls to its minimum at delta(a0), then rises to U_c), so
@@ -343,8 +434,10 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
                 e_dec = em < E0 ? em : E0;
                 /* the elastic remainder is slower than the damped loading:
                  * back to the undamped step */
-                h = 1.0 / p->accuracy;
-                h2 = 0.5 * h;
+                if (!plastic) {
+                    h = 1.0 / p->accuracy;
+                    h2 = 0.5 * h;
+                }
             }
         }
     }
@@ -377,7 +470,7 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
         append_msg(r, "step bound reached: outcome is the best estimate");
         vt_out = vt;
     }
-    if (outcome == STICK && n == 0) {
+    if (outcome == STICK && n == 0 && !plastic) {
         /* decided at first contact: the overlap an undamped approach reaches
          * (an upper bound when damped) */
         const double xm = turning_x(&nrm, E0, nrm.xj);
@@ -386,7 +479,7 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
     r->steps = n;
     r->contact_kept = outcome == STICK;
     /* rebound speed from the conserved energy past the decision */
-    r->e_n = outcome == BOUNCE ? sqrt(2.0 * fmax(e_dec - nrm.Uc, 0.0)) : 0.0;
+    r->e_n = outcome == BOUNCE ? sqrt(2.0 * fmax(e_dec - usep, 0.0)) : 0.0;
     r->t_contact = t_end * T;
     r->delta_max = dmax * L;
     r->energy_err = err;
@@ -397,7 +490,7 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
     } else {
         /* sliding and rolling of the adhered sphere stop under the adhesive
          * resistances; predict when and where (doc/kernel.md) */
-        const double fs = mu * 2.0 * nrm.Fc, ml = 4.0 * nrm.Fc * xic;
+        const double fs = mu * 2.0 * act->Fc, ml = 4.0 * act->Fc * xic;
         double tr = 0.0, sr = 0.0;
         r->stick = tangential ? swr_tangential_rest(1.0, Rs, Is, fs, ml, vt, w, &tr, &sr) : 1;
         r->t_rest = tr * T;

@@ -56,7 +56,8 @@ typedef struct {
     double dt;           /* time step used [s] */
     long steps;          /* steps taken */
     long max_steps;      /* guaranteed upper bound on steps */
-    double energy_err;   /* relative energy-balance error of the integration */
+    double energy_err;   /* energy-balance error of the integration, relative to the
+                            larger of the impact and the adhesive separation energy */
     char msg[160];       /* warning or error text ("" when none) */
     /* Kept contacts: sliding and rolling stop under the adhesive resistances
      * (mu 2F_c, 4F_c xi_crit) after this time and displacement of the centre

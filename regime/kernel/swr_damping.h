@@ -43,6 +43,13 @@ double swr_damping_alpha(double e);
 double swr_damping_time_factor(double alpha);
 /* The smallest COR the table covers. */
 double swr_damping_e_min(void);
+/* The same with the dashpot acting on both branches (`dashpot both`): the
+ * COR of the whole damped Hertz impact (ODE solve), and alpha(e) from a table
+ * built on first use (Steffen spline in -ln e, e down to 1e-3; a smaller e
+ * gets the table's largest alpha, about 1.6). */
+double swr_damping_cor_both(double alpha);
+double swr_damping_alpha_both(double e);
+double swr_damping_e_min_both(void);
 /* alpha for e by a GSL Brent root finder on swr_damping_cor (about 1 ms). */
 double swr_damping_alpha_exact(double e);
 /* Build the table now (idempotent, thread-safe); 0 or -1 on failure. */
@@ -54,6 +61,8 @@ int swr_damping_init(void);
  * spheres of this size (R* = R/2, m* = m/2); thornton-asymptote: the
  * large-velocity asymptote of the same pair (the wall form
  * 1.324 (p_y^5/(E*^4 rho))^(1/8) V_i^(-1/4) as the original work used it).
+ * thornton-ning: no dashpot (the caller sets none); the value is Thornton's
+ * wall COR, which that contact law gives without adhesion (informative).
  * Estar is the particle-wall E*, R the particle radius, m its mass, vi the
  * normal impact speed. */
 double swr_damping_target(const swr_params *p, double Estar, double R, double m, double vi);

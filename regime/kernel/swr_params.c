@@ -128,12 +128,14 @@ int swr_params_set(swr_params *p, const char *key, const char *value, char *err,
             p->cor = SWR_COR_THORNTON;
         } else if (strcmp(value, "thornton-asymptote") == 0) {
             p->cor = SWR_COR_THORNTON_ASYMPTOTE;
+        } else if (strcmp(value, "thornton-ning") == 0) {
+            p->cor = SWR_COR_THORNTON_NING;
         } else {
             double v;
             if (parse_number(value, &v) != 0)
                 return fail(err, errlen,
-                            "cor: '%s' is neither elastic, thornton, thornton-asymptote "
-                            "nor a number", value);
+                            "cor: '%s' is neither elastic, thornton, thornton-asymptote, "
+                            "thornton-ning nor a number", value);
             if (!(v >= COR_MIN && v <= COR_MAX))
                 return fail(err, errlen, "cor: %s is out of range [%g, %g] (constant restitution)",
                             value, COR_MIN, COR_MAX);
@@ -149,6 +151,15 @@ int swr_params_set(swr_params *p, const char *key, const char *value, char *err,
             p->cor_pair = SWR_PAIR_PARTICLE;
         else
             return fail(err, errlen, "cor_pair: '%s' is neither wall nor particle", value);
+        return 0;
+    }
+    if (strcmp(key, "dashpot") == 0) {
+        if (strcmp(value, "loading") == 0)
+            p->dashpot = SWR_DASHPOT_LOADING;
+        else if (strcmp(value, "both") == 0)
+            p->dashpot = SWR_DASHPOT_BOTH;
+        else
+            return fail(err, errlen, "dashpot: '%s' is neither loading nor both", value);
         return 0;
     }
     if (strcmp(key, "adhesion") == 0) {
@@ -244,13 +255,15 @@ int swr_params_validate(const swr_params *p, char *err, size_t errlen)
             return fail(err, errlen, "%s: %g is out of range [%g, %g] (%s)", num_keys[i].key, v,
                         num_keys[i].lo, num_keys[i].hi, num_keys[i].what);
     }
-    if (p->cor < SWR_COR_ELASTIC || p->cor > SWR_COR_THORNTON_ASYMPTOTE)
+    if (p->cor < SWR_COR_ELASTIC || p->cor > SWR_COR_THORNTON_NING)
         return fail(err, errlen, "cor: invalid mode %d", (int)p->cor);
     if (p->cor == SWR_COR_CONSTANT && !(p->cor_value >= COR_MIN && p->cor_value <= COR_MAX))
         return fail(err, errlen, "cor: %g is out of range [%g, %g] (constant restitution)",
                     p->cor_value, COR_MIN, COR_MAX);
     if (p->cor_pair != SWR_PAIR_WALL && p->cor_pair != SWR_PAIR_PARTICLE)
         return fail(err, errlen, "cor_pair: invalid value %d", (int)p->cor_pair);
+    if (p->dashpot != SWR_DASHPOT_LOADING && p->dashpot != SWR_DASHPOT_BOTH)
+        return fail(err, errlen, "dashpot: invalid value %d", (int)p->dashpot);
     if (p->adhesion != SWR_ADHESION_JKR && p->adhesion != SWR_ADHESION_NONE)
         return fail(err, errlen, "adhesion: invalid value %d", (int)p->adhesion);
     return 0;
@@ -269,6 +282,8 @@ void swr_params_print(const swr_params *p, const char *prefix, FILE *stream)
     case SWR_COR_CONSTANT: fprintf(stream, "%scor %.17g\n", pre, p->cor_value); break;
     case SWR_COR_THORNTON: fprintf(stream, "%scor thornton\n", pre); break;
     case SWR_COR_THORNTON_ASYMPTOTE: fprintf(stream, "%scor thornton-asymptote\n", pre); break;
+    case SWR_COR_THORNTON_NING: fprintf(stream, "%scor thornton-ning\n", pre); break;
     }
     fprintf(stream, "%scor_pair %s\n", pre, p->cor_pair == SWR_PAIR_PARTICLE ? "particle" : "wall");
+    fprintf(stream, "%sdashpot %s\n", pre, p->dashpot == SWR_DASHPOT_BOTH ? "both" : "loading");
 }

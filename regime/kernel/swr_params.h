@@ -22,12 +22,22 @@ typedef enum {
     SWR_COR_ELASTIC = 0,          /* "elastic": no damping (e = 1) */
     SWR_COR_CONSTANT,             /* a number in (0, 1]: constant e */
     SWR_COR_THORNTON,             /* "thornton": full Thornton (1997) e_p(V_y/V_i) */
-    SWR_COR_THORNTON_ASYMPTOTE    /* "thornton-asymptote": e_p = 1.324 (...)^(1/8) V_i^(-1/4),
+    SWR_COR_THORNTON_ASYMPTOTE,   /* "thornton-asymptote": e_p = 1.324 (...)^(1/8) V_i^(-1/4),
                                      per impact, exactly as the original work */
+    SWR_COR_THORNTON_NING         /* "thornton-ning": no dashpot; the normal contact is
+                                     Thornton & Ning's (1998) adhesive elastic-plastic
+                                     law (swr_plastic.h), yielding at p_y = 2.5 sigma_y */
 } swr_cor_mode;
 
 /* Key `cor_pair`: which yield velocity the Thornton COR uses. */
 typedef enum { SWR_PAIR_WALL = 0, SWR_PAIR_PARTICLE } swr_pair;
+
+/* Key `dashpot`: when the COR dashpot acts (not for thornton-ning, which has none). */
+typedef enum {
+    SWR_DASHPOT_LOADING = 0,      /* "loading": while the contact is loaded (Thornton's picture) */
+    SWR_DASHPOT_BOTH              /* "both": while loading and unloading (delta > 0), as common
+                                     DEM codes do; for comparison (doc/kernel.md) */
+} swr_dashpot;
 
 /* Key `adhesion`: normal contact law. */
 typedef enum { SWR_ADHESION_JKR = 0, SWR_ADHESION_NONE } swr_adhesion;
@@ -46,9 +56,10 @@ typedef struct {
     double gamma;      /* `gamma`    work of adhesion [J/m2]         0.2      */
     swr_adhesion adhesion; /* `adhesion` jkr | none                  jkr      */
     double z0;         /* `z0`       equilibrium separation for the Tabor check [m] 0.3e-9 */
-    swr_cor_mode cor;  /* `cor`      elastic | <number> | thornton | thornton-asymptote  thornton */
+    swr_cor_mode cor;  /* `cor`      elastic | <number> | thornton | thornton-asymptote | thornton-ning  thornton */
     double cor_value;  /*            the number when cor is constant               */
     swr_pair cor_pair; /* `cor_pair` wall | particle                     wall     */
+    swr_dashpot dashpot; /* `dashpot` loading | both                     loading  */
     double mu;         /* `mu`       sliding friction coefficient [-] 0.05    */
     double xi_crit;    /* `xi_crit`  critical rolling displacement [m] (Dominik & Tielens) 1e-9 */
     /* numerics */
