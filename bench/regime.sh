@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # bench/regime.sh - benchmark of the regime kernel and snowregime (prints figures).
 #
-# Usage: bench/regime.sh [--reps N] [--build DIR] [--help]
+# Usage: bench/regime.sh [--reps N] [--build DIR] [--set KEY=VALUE]... [--help]
 #
+# --set KEY=VALUE: a kernel setting for every figure (e.g. cor=thornton-ning;
+# keys: snowregime --help), passed to swr_bench and snowregime.
 # Uses the release build (./Allwmake: build/release and bin/; --build DIR: another
 # CMake release build folder, its snowregime and swr_bench). Prints medians of
 # N repetitions (default 7) on this machine, 2 threads:
@@ -21,9 +23,11 @@ set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 reps=7
 build=
+sets=()
 while [ $# -gt 0 ]; do
     case "$1" in
-        -h|--help) sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) sed -n '2,24p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        --set) sets+=(--set "${2:?"--set needs KEY=VALUE"}"); shift ;;
         --reps) reps=${2:?"--reps needs a number"}; shift ;;
         --build) build=${2:?"--build needs a folder"}; shift ;;
         *) echo "bench/regime.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
@@ -46,8 +50,8 @@ if [ ! -x "$bench" ] || [ ! -x "$sr" ]; then
     exit 1
 fi
 
-echo "# bench/regime.sh on $(uname -n), $(nproc) cores, $(date -u +%Y-%m-%dT%H:%MZ), $reps repetitions"
-out=$("$bench" --reps "$reps" --threads 2)
+echo "# bench/regime.sh on $(uname -n), $(nproc) cores, $(date -u +%Y-%m-%dT%H:%MZ), $reps repetitions${sets[*]:+, ${sets[*]}}"
+out=$("$bench" --reps "$reps" --threads 2 "${sets[@]}")
 echo "$out" | sed 's/^/# /'
 get() { echo "$out" | awk -v k="$1" '$1 == k { print $2 }'; }
 
@@ -65,9 +69,9 @@ median_of() {   # command... -> median wall time in ms over $reps runs
     done
     printf '%s\n' "${ts[@]}" | sort -n | awk '{ a[NR] = $1 } END { m = (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2; printf "%.2f", m / 1000 }'
 }
-cli_vcrit=$(median_of "$sr" vcrit --d "$dlist" --threads 2)
-cli_map=$(median_of "$sr" map --out "$tmp/map" --no-plot --threads 2)
-cli_map_png=$(median_of "$sr" map --out "$tmp/map" --threads 2)
+cli_vcrit=$(median_of "$sr" vcrit --d "$dlist" --threads 2 "${sets[@]}")
+cli_map=$(median_of "$sr" map --out "$tmp/map" --no-plot --threads 2 "${sets[@]}")
+cli_map_png=$(median_of "$sr" map --out "$tmp/map" --threads 2 "${sets[@]}")
 
 coll=$(get collision_us); accerr=$(get vcrit_rel_error_max)
 acc01=$(get accuracy_for_0.1pct); coll01=$(get collision_us_at_0.1pct); err01=$(get vcrit_rel_error_at_it)

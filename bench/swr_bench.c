@@ -122,6 +122,7 @@ int main(int argc, char **argv)
     for (int i = 0; i < ND; i++) d[i] = 10e-6 + 90e-6 * i / (ND - 1);
     swt_vcrit_opts o;
     swt_vcrit_opts_default(&o);
+    o.vmax = SWR_V_MAX; /* every speed the kernel accepts (some laws stick up to ~800 m/s) */
 
     /* v_crit of 46 diameters */
     vc_ctx c = { m, &o, d, vc };
@@ -181,7 +182,7 @@ int main(int argc, char **argv)
     }
 
     /* the 46 x 50 map, speed range as snowregime map chooses it */
-    swt_grid g = { 46, 50, 10e-6, 100e-6, vc[ND - 1] / 1.5, 1.5 * vc[0], 1 };
+    swt_grid g = { 46, 50, 10e-6, 100e-6, vc[ND - 1] / 1.5, fmin(1.5 * vc[0], SWR_V_MAX), 1 };
     double tg[1000], tt[1000];
     long nstick = 0;
     for (int r = 0; r < reps; r++) {

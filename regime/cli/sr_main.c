@@ -412,7 +412,8 @@ int sr_auto_vrange(const swr_model *m, swt_grid *g, int set_min, int set_max,
     if (!set_max) {
         if (auto_vcrit(m, g->dmin, &vo, &v, err, errlen) != 0)
             return -1;
-        g->vmax = 1.5 * v;
+        /* within the speeds the kernel accepts */
+        g->vmax = 1.5 * v < SWR_V_MAX ? 1.5 * v : SWR_V_MAX;
     }
     if (!(g->vmax > g->vmin)) {
         snprintf(err, errlen, "speed range [%g, %g] m/s is empty: give --vmin and --vmax",

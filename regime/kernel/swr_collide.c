@@ -252,9 +252,10 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
     const double E0 = 0.5;                           /* kinetic energy at first contact */
     double dsep = nrm.delta_c;                       /* 0 for Hertz */
     double usep = nrm.Uc;                            /* energy needed to separate */
-    /* energy scale of the balance check: the impact energy, or the adhesive
-     * separation energy when that is larger (slow impacts) */
-    const double eref = E0 > nrm.Uc ? E0 : nrm.Uc;
+    /* energy scale of the balance check: the largest of the impact energy,
+     * the adhesive separation energy (slow impacts) and the kinetic energy
+     * the adhesion's pull gives during the contact */
+    double eref = E0 > nrm.Uc ? E0 : nrm.Uc;
     /* no tangential motion and no trace: once the remaining normal motion is
      * conservative, finish it in closed form instead of stepping */
     const int tangential = in->vt != 0.0 || in->omega != 0.0;
@@ -264,23 +265,28 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
     /* bound: SWR_CONTACT_TIMES_MAX undamped contact times t_c */
     double t_bound = SWR_CONTACT_TIMES_MAX / g;
     swr_plastic pl;
-    double dstar = 0.0;
+    double dstar = 0.0, h_el = h, h_yield = h, h_unload = h, h_min = h;
     if (plastic) {
         swr_plastic_init(&pl, Rs, m->Estar * sE, gam * T * T / mass,
                          swp_limiting_pressure(p->sigma_y) * sE);
-        /* the turning point follows from the energy (closed form); the
-         * step resolves the stiffest curve met, the flattened contact's
-         * unloading (k = 2 E* a*), and the bound adds the softer yield
-         * branch's half period */
+        /* the turning point follows from the energy (closed form). Steps:
+         * `accuracy` per time scale of each branch: the elastic loading, the
+         * Hertz time (or the yield branch's, if shorter); the yield branch,
+         * its half period pi/sqrt(k) (F = F_y + k z is harmonic); unloading,
+         * the half period of the flattened contact's stiffness 2 E* a* at
+         * the turning point, if shorter than the Hertz time. */
         dstar = swr_plastic_turning(&pl, E0);
         double xs;
         swr_plastic_load_work(&pl, dstar, &xs);
         const double tu = M_PI / sqrt(2.0 * m->Estar * sE * xs * xs);
-        if (tu < 1.0) {
-            h = tu / p->accuracy;
-            h2 = 0.5 * h;
-        }
-        t_bound = SWR_CONTACT_TIMES_MAX * (1.0 + tu + M_PI / sqrt(pl.k));
+        const double tp = M_PI / sqrt(pl.k);
+        h_el = (tp < 1.0 ? tp : 1.0) / p->accuracy;
+        h_yield = tp / p->accuracy;
+        h_unload = (tu < 1.0 ? tu : 1.0) / p->accuracy;
+        h = pl.dy > 0.0 ? h_el : h_yield;    /* dy = 0: yields from the first touch */
+        h2 = 0.5 * h;
+        h_min = fmin(h_el, fmin(h_yield, h_unload));
+        t_bound = SWR_CONTACT_TIMES_MAX * (1.0 + tu + tp);
         if (shortcut) {
             double t_turn, t_sep;
             const double reb = plastic_closed_form(&pl, E0, dstar, &t_turn, &t_sep);
@@ -297,8 +303,10 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
             return SWR_OK;
         }
     }
-    r->dt = h * T;
-    r->max_steps = (long)ceil(t_bound / h) + 16;
+    if (!plastic)
+        h_min = h;
+    r->dt = h_min * T;
+    r->max_steps = (long)ceil(t_bound / h_min) + 16;
 
     /* --- state at first contact (jump-in for JKR) --- */
     double t = 0.0, delta = 0.0, u = 1.0;
@@ -339,12 +347,24 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
         n++;
         t += h;
         if (plastic && uh < 0.0 && pl.branch != SWR_PL_UNLOAD) {
-            /* turned: unload from the turning point of the energy balance */
+            /* turned: unload from the turning point of the energy balance.
+             * The normal motion does not depend on the tangential one and is
+             * conservative from here, so the outcome is decided now by the
+             * exact energy (as in the closed form); the steps go on for the
+             * tangential motion (and the trace) of a bounce. */
             swr_plastic_unload(&pl, dstar);
             act = &pl.un;
             x = pl.xstar;
             dsep = swr_plastic_separation_overlap(&pl);
             usep = swr_plastic_separation_energy(&pl);
+            if (E0 <= usep) {
+                outcome = STICK;
+                t_end = t - h2;
+            } else {
+                outcome = BOUNCE;
+                e_dec = E0;
+                moving_out = 1;
+            }
         }
         if (delta < dsep || (act->gamma == 0.0 && delta <= dsep)) {
             /* the contact breaks during this drift (undamped since u < 0) */
@@ -401,6 +421,8 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
             dmax = delta;
 
         em = 0.5 * u * u + (plastic ? swr_plastic_energy(&pl, delta, x) : swr_normal_energy(&nrm, x));
+        if (0.5 * u * u > eref)
+            eref = 0.5 * u * u;
         const double e_err = fabs(em + wd - E0) / eref;
         if (e_err > err)
             err = e_err;
@@ -419,7 +441,7 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
             separated = 1;
             break;
         }
-        if (outcome == OPEN && (!plastic || pl.branch == SWR_PL_UNLOAD)) {
+        if (outcome == OPEN && !plastic) {
             if (em <= usep) {
                 /* it can never reach delta_c: damping only removes energy */
                 outcome = STICK;
@@ -438,6 +460,15 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
                     h = 1.0 / p->accuracy;
                     h2 = 0.5 * h;
                 }
+            }
+        }
+        if (plastic) {
+            /* the next step on the branch the contact is on now */
+            const double hb = pl.branch == SWR_PL_UNLOAD ? h_unload
+                            : pl.branch == SWR_PL_YIELD ? h_yield : h_el;
+            if (hb != h) {
+                h = hb;
+                h2 = 0.5 * h;
             }
         }
     }

@@ -53,11 +53,13 @@ typedef struct {
     double t_contact;    /* contact duration [s] (time to decision if kept) */
     double delta_max;    /* largest overlap [m] */
     double e_target;     /* plastic COR the dashpot was set to (1 elastic) */
-    double dt;           /* time step used [s] */
+    double dt;           /* time step used [s] (the smallest, when the contact law
+                            changes it between loading and unloading; 0: closed form) */
     long steps;          /* steps taken */
     long max_steps;      /* guaranteed upper bound on steps */
     double energy_err;   /* energy-balance error of the integration, relative to the
-                            larger of the impact and the adhesive separation energy */
+                            largest of the impact energy, the adhesive separation
+                            energy and the kinetic energy during the contact */
     char msg[160];       /* warning or error text ("" when none) */
     /* Kept contacts: sliding and rolling stop under the adhesive resistances
      * (mu 2F_c, 4F_c xi_crit) after this time and displacement of the centre
