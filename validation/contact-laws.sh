@@ -18,15 +18,16 @@
 #   e_v.csv      rebound COR e_n(v) at d = 50 um, v 1 mm/s - 50 m/s (0 = stick)
 #   contact-laws.png  both, as plots (gnuplot)
 # Speeds are searched in [1e-4, 1000] m/s; "> 1000" means sticks everywhere.
-# Exit status: 0 done, 1 a run failed, 2 usage error.
+# The snowregime used is bin/snowregime, or $SNOWREGIME if set (the tests).
+# Exit status: 0 done, 1 a run failed, 2 usage error or a rejected setting.
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
-sr=$top/bin/snowregime
+sr=${SNOWREGIME:-$top/bin/snowregime}
 out=
 sets=()
 while [ $# -gt 0 ]; do
     case "$1" in
-        -h|--help) sed -n '2,24p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) sed -n '2,25p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
         --out) out=${2:?"--out needs a folder"}; shift ;;
         --config) sets+=(--config "${2:?"--config needs a file"}"); shift ;;
         --set) sets+=(--set "${2:?"--set needs KEY=VALUE"}"); shift ;;
@@ -57,7 +58,7 @@ dtab=10e-6,20e-6,50e-6,100e-6
 
 # settings as the kernel sees them (for the closed-form estimate)
 "$sr" vcrit --d 1e-5 "${sets[@]}" --set cor=elastic >"$tmp/hdr" 2>/dev/null ||
-    { echo "contact-laws.sh: snowregime rejects the settings:" >&2; "$sr" vcrit --d 1e-5 "${sets[@]}" >/dev/null; exit 1; }
+    { echo "contact-laws.sh: snowregime rejects the settings:" >&2; "$sr" vcrit --d 1e-5 "${sets[@]}" >/dev/null; exit 2; }
 
 vcrit_of() {   # law dlist -> file with "d v" lines ("nan" when sticks/bounces everywhere)
     # shellcheck disable=SC2046

@@ -12,7 +12,8 @@
  *
  * Sub-models, each in its own file under regime/kernel, formulas in pure
  * functions (regime/physics): normal contact (swr_normal.c: Hertz, JKR with
- * hysteresis), damping (swr_damping.c: COR modes), tangential sliding
+ * hysteresis; swr_plastic.c: Thornton & Ning's adhesive elastic-plastic
+ * contact, cor thornton-ning), damping (swr_damping.c: COR modes), tangential sliding
  * (swr_tangential.c), rolling resistance (swr_rolling.c), wall geometry
  * (swr_wall.c), time integration (swr_collide.c).
  */

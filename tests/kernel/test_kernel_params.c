@@ -54,6 +54,11 @@ static void set_and_reject(void **s)
     assert_true(p.cor_value == 0.35);
     assert_int_equal(swr_params_set(&p, "cor", "thornton-asymptote", err, sizeof err), 0);
     assert_int_equal(p.cor, SWR_COR_THORNTON_ASYMPTOTE);
+    assert_int_equal(swr_params_set(&p, "cor", "thornton-ning", err, sizeof err), 0);
+    assert_int_equal(p.cor, SWR_COR_THORNTON_NING);
+    assert_int_equal(p.dashpot, SWR_DASHPOT_LOADING);
+    assert_int_equal(swr_params_set(&p, "dashpot", "both", err, sizeof err), 0);
+    assert_int_equal(p.dashpot, SWR_DASHPOT_BOTH);
     assert_int_equal(swr_params_set(&p, "cor_pair", "particle", err, sizeof err), 0);
     assert_int_equal(p.cor_pair, SWR_PAIR_PARTICLE);
     assert_int_equal(swr_params_set(&p, "adhesion", "none", err, sizeof err), 0);
@@ -76,6 +81,8 @@ static void set_and_reject(void **s)
     expect_reject(&p, "cor", "plastic");
     expect_reject(&p, "cor_pair", "floor");
     expect_reject(&p, "adhesion", "dmt");
+    expect_reject(&p, "dashpot", "unloading");
+    expect_reject(&p, "cor", "thornton-ninga");
     expect_reject(&p, "accuracy", "2");
     expect_reject(&p, "colour", "blue");
 }
@@ -148,6 +155,7 @@ static void print_round_trip(void **s)
     assert_int_equal(swr_params_set(&p, "gamma", "0.37", err, sizeof err), 0);
     assert_int_equal(swr_params_set(&p, "adhesion", "none", err, sizeof err), 0);
     assert_int_equal(swr_params_set(&p, "cor_pair", "particle", err, sizeof err), 0);
+    assert_int_equal(swr_params_set(&p, "dashpot", "both", err, sizeof err), 0);
     char path[] = "/tmp/swr_print_XXXXXX";
     const int fd = mkstemp(path);
     FILE *f = fdopen(fd, "w");
@@ -157,7 +165,7 @@ static void print_round_trip(void **s)
     assert_int_equal(swr_params_load(&q, path, err, sizeof err), 0);
     unlink(path);
     assert_true(q.cor == p.cor && q.cor_value == p.cor_value && q.gamma == p.gamma);
-    assert_true(q.adhesion == p.adhesion && q.cor_pair == p.cor_pair);
+    assert_true(q.adhesion == p.adhesion && q.cor_pair == p.cor_pair && q.dashpot == p.dashpot);
     assert_true(q.E == p.E && q.rho == p.rho && q.xi_crit == p.xi_crit && q.z0 == p.z0);
 }
 
