@@ -5,6 +5,9 @@
 
 #include "sr.h"
 
+/* the wall model reads at most this many values per list (wallmodel/core) */
+#define SWW_TABLE_MAX 4096
+
 /* Grid and map options shared by map and sensitivity. */
 typedef struct {
     swt_grid g;
@@ -295,6 +298,23 @@ int sr_cmd_map(int argc, char **argv)
     }
     swt_outset *os = swt_outset_alloc(mo.out, err, sizeof err);
     if (!os) { swr_model_free(m); rc = sr_out_error(cmd, mo.out, err); goto out; }
+    /* --vt LIST starting at 0: the v_t = 0 map's fit and speed nodes, for the
+     * combined regime.coeffs with the d_crit(v_n, v_t) table */
+    const int oblique = axis && !axis_angle && naxis >= 2 && axis[0] == 0.0;
+    swt_fit fit0;
+    int have_fit0 = 0;
+    double *vn0 = NULL, d0min = 0.0, d0max = 0.0;
+    int nvn0 = 0;
+    if (oblique && naxis > SWW_TABLE_MAX / 2) {
+        swt_outset_free(os);
+        swr_model_free(m);
+        rc = sr_usage_error(cmd, "--vt: too many values for the d_crit(v_n, v_t) table");
+        goto out;
+    }
+    if (axis && !axis_angle && naxis >= 2 && axis[0] != 0.0) {
+        printf("  note: --vt LIST does not start with 0: no combined regime.coeffs with the "
+               "d_crit(v_n, v_t) table\n");
+    }
     for (int k = 0; k < nmaps && rc == 0; k++) {
         swt_vcrit_opts o = mo.o;
         char sfx[64] = "", what[160];
@@ -340,9 +360,66 @@ int sr_cmd_map(int argc, char **argv)
             printf("  wall time: grid %.4f s (%ld collisions, %d threads), total %.4f s\n",
                    r.mp->seconds, r.mp->collisions, s.threads, r.seconds_total);
             if (r.mp->msg[0]) printf("  kernel warning: %s\n", r.mp->msg);
+            if (oblique && k == 0 && r.fit_ok) {
+                fit0 = r.fit;
+                have_fit0 = 1;
+                d0min = r.mp->g.dmin;
+                d0max = r.mp->g.dmax;
+                /* table speeds: the map's log spacing, extended a decade below
+                 * and half a decade above its range (the wall model clamps v_n
+                 * to the table for the tangential limit) */
+                const double v_lo = r.mp->g.vmin / 10.0, v_hi = fmin(r.mp->g.vmax * sqrt(10.0), SWR_V_MAX);
+                const double step = r.mp->g.vlog ? log(r.mp->g.vmax / r.mp->g.vmin) / (r.mp->g.nv - 1)
+                                                 : log(1.5);
+                nvn0 = 1 + (int)ceil(log(v_hi / v_lo) / (step > 0.0 ? step : log(1.5)));
+                if (nvn0 * naxis > SWW_TABLE_MAX) nvn0 = SWW_TABLE_MAX / naxis;
+                if (nvn0 >= 2) {
+                    vn0 = malloc((size_t)nvn0 * sizeof *vn0);
+                    for (int j = 0; vn0 && j < nvn0; j++)
+                        vn0[j] = v_lo * pow(v_hi / v_lo, (double)j / (nvn0 - 1));
+                }
+            }
         }
         mapres_free(&r);
     }
+    if (rc == 0 && oblique) {
+        if (!have_fit0 || !vn0) {
+            rc = sr_fail(cmd, "--vt LIST: the v_t = 0 map has no fit: no combined regime.coeffs "
+                              "(widen --vmin/--vmax)");
+        } else {
+            swt_oblique ob;
+            swt_vcrit_opts o = mo.o;
+            if (swt_oblique_compute(&ob, m, axis, naxis, vn0, nvn0, &o, SWR_D_MIN, SWR_D_MAX,
+                                    s.threads, err, sizeof err) != 0) {
+                rc = sr_fail(cmd, err);
+            } else {
+                char ocb[160], label[300];
+                snprintf(label, sizeof label, "%s, vt 0..%g m/s, gamma %g",
+                         sr_outcome_text(&o, ocb, sizeof ocb), axis[naxis - 1], p.gamma);
+                FILE *f = swt_outset_open(os, "regime.coeffs", err, sizeof err);
+                if (!f) {
+                    rc = sr_fail(cmd, err);
+                } else {
+                    swt_coeffs_write_ex(f, &fit0, &p, d0min, d0max, label, &ob);
+                    /* the v_t = 0 row against the fit it sits beside */
+                    double dev = 0.0;
+                    for (int j = 0; j < nvn0; j++)
+                        if (ob.status[j] == SWT_OB_FOUND && vn0[j] >= fit0.vnmin && vn0[j] <= fit0.vnmax)
+                            dev = fmax(dev, fabs(exp(swt_fit_eval(&fit0, vn0[j])) / ob.dcrit[j] - 1.0));
+                    printf("regime.coeffs: d_crit(v_n, v_t) table %d x %d (v_t 0..%g m/s, slide "
+                           "length %g m), %ld collisions, %.3f s; v_t = 0 row vs the fit: max %.3g; "
+                           "nodes sticking at every d %d, bouncing at every d %d, non-monotone %d\n",
+                           naxis, nvn0, axis[naxis - 1], o.max_slide, ob.collisions, ob.seconds,
+                           dev, ob.n_all_stick, ob.n_no_stick, ob.n_nonmono);
+                    if (o.max_slide <= 0.0)
+                        printf("  note: without --max-slide every kept contact comes to rest on a "
+                               "flat wall: the table repeats the normal interface\n");
+                }
+                swt_oblique_free(&ob);
+            }
+        }
+    }
+    free(vn0);
     if (rc == 0 && swt_outset_commit(os, err, sizeof err) != 0) rc = sr_fail(cmd, err);
     if (rc == 0) printf("written to %s/\n", mo.out);
     swt_outset_free(os);

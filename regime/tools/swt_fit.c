@@ -127,6 +127,12 @@ int swt_fit_interface(const swt_interface *it, int degree, swt_fit *f, char *err
 void swt_coeffs_write(FILE *fp, const swt_fit *f, const swr_params *p, double dmin, double dmax,
                       const char *label)
 {
+    swt_coeffs_write_ex(fp, f, p, dmin, dmax, label, NULL);
+}
+
+void swt_coeffs_write_ex(FILE *fp, const swt_fit *f, const swr_params *p, double dmin,
+                         double dmax, const char *label, const swt_oblique *ob)
+{
     const double Es = swp_effective_modulus(p->E, p->nu, p->E_wall, p->nu_wall);
     fprintf(fp, "// regime.coeffs - stick/bounce interface of snowregime map (snowwall 0.1)\n");
     fprintf(fp, "// format: doc/regime-coeffs.md\n");
@@ -174,5 +180,7 @@ void swt_coeffs_write(FILE *fp, const swt_fit *f, const swr_params *p, double dm
     fprintf(fp, "    Estar           %.10g;\n", Es);
     fprintf(fp, "    rhoParticle     %.10g;\n", p->rho);
     fprintf(fp, "    mu              %.10g;\n", p->mu);
+    if (ob)
+        swt_oblique_write(fp, ob);
     fprintf(fp, "}\n");
 }

@@ -11,6 +11,7 @@
 
 #include "swr_params.h"
 #include "swt_map.h"
+#include "swt_oblique.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -40,6 +41,9 @@ int swt_fit_interface(const swt_interface *it, int degree, swt_fit *f, char *err
 /* Write regime.coeffs per doc/regime-coeffs.md. */
 void swt_coeffs_write(FILE *fp, const swt_fit *f, const swr_params *p, double dmin, double dmax,
                       const char *label);
+/* The same with the d_crit(v_n, v_t) table of oblique impacts (ob may be NULL). */
+void swt_coeffs_write_ex(FILE *fp, const swt_fit *f, const swr_params *p, double dmin,
+                         double dmax, const char *label, const swt_oblique *ob);
 
 #ifdef __cplusplus
 }

@@ -249,6 +249,122 @@ static double tau_indep(double G, double Es, double R, double mu, double k)
     return mu > 0 && slide < roll ? slide : roll;
 }
 
+/* The oblique table (issue 11) from code: the fixture's normal interface with
+ * a table D = min(d_crit(v_n), d_t(v_t)), d_t = 20 um (v_t / 0.5)^(-2/3). */
+static double dtan(double vt) { return 2e-5 * pow(vt / 0.5, -2.0 / 3.0); }
+
+static void set_oblique(sww_model *m, const double *vt, size_t nvt)
+{
+    const double vn[] = { 0.05, 0.2, 1.0, 6.0, 20.0 };
+    double d[5 * 8];
+    for (size_t i = 0; i < nvt; i++)
+        for (size_t j = 0; j < 5; j++) {
+            const double dn = sww_dcrit(m, vn[j]);
+            d[i * 5 + j] = i == 0 ? dn : fmin(dn, dtan(vt[i]));
+        }
+    assert_int_equal(sww_regime_list(m, "obliqueVt", vt, nvt), SWW_OK);
+    assert_int_equal(sww_regime_list(m, "obliqueVn", vn, 5), SWW_OK);
+    assert_int_equal(sww_regime_list(m, "obliqueDCrit", d, nvt * 5), SWW_OK);
+    assert_int_equal(sww_regime_number(m, "obliqueSlide", 1e-4), SWW_OK);
+    assert_int_equal(sww_regime_commit(m, "code"), SWW_OK);
+}
+
+static void oblique_gate(void **s)
+{
+    (void)s;
+    sww_model *m = load_fixture();
+    /* without a table the regime gate cannot be set; d_crit(v_n, v_t) = d_crit(v_n) */
+    assert_int_equal(sww_set_tangential_regime(m), SWW_EMISSING);
+    assert_non_null(strstr(sww_errmsg(m), "oblique table"));
+    assert_true(sww_dcrit_oblique(m, 1.0, 5.0) == sww_dcrit(m, 1.0));
+    assert_false(sww_oblique_table(m, NULL, NULL));
+    const double vt[] = { 0.0, 0.5, 1.0, 2.0 };
+    set_oblique(m, vt, 4);
+    size_t nvt, nvn;
+    assert_true(sww_oblique_table(m, &nvt, &nvn) && nvt == 4 && nvn == 5);
+    assert_int_equal(sww_set_tangential_regime(m), SWW_OK);
+    assert_int_equal(sww_tangential_on(m), 2);
+    /* v_t = 0 and v_t -> 0: the normal interface exactly */
+    for (double v = 0.01; v < 100.0; v *= 1.7) {
+        assert_true(sww_dcrit_oblique(m, v, 0.0) == sww_dcrit(m, v));
+        assert_true(sww_dcrit_oblique(m, v, 1e-9) == sww_dcrit(m, v));
+    }
+    /* where the tangential limit binds (v_n 0.2: d_crit 100+ um), the power law
+     * d_t is exact inside, below and beyond the v_t nodes (linear in ln-ln) */
+    const double vts[] = { 0.5, 0.7, 1.0, 1.5, 0.1, 0.02, 3.0, 40.0 };
+    for (size_t k = 0; k < sizeof vts / sizeof *vts; k++)
+        ASSERT_REL(sww_dcrit_oblique(m, 0.2, vts[k]), dtan(vts[k]), 1e-12);
+    /* off the v_n nodes too (D_t does not depend on v_n here) */
+    ASSERT_REL(sww_dcrit_oblique(m, 0.37, 0.8), fmin(sww_dcrit(m, 0.37), dtan(0.8)), 1e-12);
+    /* where the normal limit binds the kink is exact: min of the two */
+    ASSERT_REL(sww_dcrit_oblique(m, 3.0, 0.7), fmin(sww_dcrit(m, 3.0), dtan(0.7)), 1e-12);
+    /* outside the v_n span: the tangential limit of the end column */
+    ASSERT_REL(sww_dcrit_oblique(m, 0.001, 1.0), dtan(1.0), 1e-12);
+    ASSERT_REL(sww_dcrit_oblique(m, 500.0, 1.0), fmin(sww_dcrit(m, 500.0), dtan(1.0)), 1e-12);
+    /* monotone in v_t, never NaN, limits */
+    srand48(7);
+    for (int k = 0; k < 20000; k++) {
+        const double vn = exp(-8.0 + 16.0 * drand48()), v1 = exp(-12.0 + 20.0 * drand48());
+        const double a = sww_dcrit_oblique(m, vn, v1), b = sww_dcrit_oblique(m, vn, 1.3 * v1);
+        assert_true(a > 0.0 && b > 0.0 && isfinite(a) && b <= a);
+    }
+    assert_true(sww_dcrit_oblique(m, 1.0, INFINITY) == 0.0);
+    assert_true(isnan(sww_dcrit_oblique(m, NAN, 1.0)) && isnan(sww_dcrit_oblique(m, 1.0, NAN)));
+    assert_true(isinf(sww_dcrit_oblique(m, 0.0, 1.0)));
+    /* the decision: between d_t and d_crit(v_n) a stick candidate bounces by
+     * the tangential gate; below d_t it sticks */
+    const double d = 0.5 * (dtan(1.0) + sww_dcrit(m, 0.5));
+    assert_true(d > dtan(1.0) && d < sww_dcrit(m, 0.5));
+    sww_outcome o = decide(m, d, 0.5, 1.0, 0.0, 0.5);
+    assert_int_equal(o.fate, SWW_BOUNCE);
+    assert_int_equal(o.reason, SWW_BY_TANGENTIAL);
+    assert_int_equal(decide(m, d, 0.5, 0.0, 0.0, 0.5).fate, SWW_STICK);
+    assert_int_equal(decide(m, 0.9 * dtan(1.0), 0.5, 1.0, 0.0, 0.5).fate, SWW_STICK);
+    char buf[600];
+    sww_describe(m, buf, sizeof buf);
+    assert_non_null(strstr(buf, "regime table 4 x 5"));
+    /* loading a regime without a table while the gate is on: an error naming
+     * the missing table, and the gate is off */
+    assert_int_equal(sww_regime_load(m, FIXTURE), SWW_EMISSING);
+    assert_non_null(strstr(sww_errmsg(m), "needs the oblique table"));
+    assert_int_equal(sww_tangential_on(m), 0);
+    sww_free(m);
+
+    /* two v_t values: flat below the only non-zero node (documented) */
+    m = load_fixture();
+    const double vt2[] = { 0.0, 1.0 };
+    set_oblique(m, vt2, 2);
+    ASSERT_REL(sww_dcrit_oblique(m, 0.2, 0.1), dtan(1.0), 1e-12);
+    ASSERT_REL(sww_dcrit_oblique(m, 0.2, 10.0), dtan(1.0), 1e-12);
+    sww_free(m);
+
+    /* errors, each naming the key and value */
+    m = load_fixture();
+    const double vbad[] = { 0.1, 0.5 }, vdec[] = { 0.0, 0.5, 0.4 }, vn3[] = { 0.1, 1.0, 10.0 };
+    assert_int_equal(sww_regime_list(m, "obliqueVt", vbad, 2), SWW_EINVAL);
+    assert_non_null(strstr(sww_errmsg(m), "must be 0"));
+    assert_int_equal(sww_regime_list(m, "obliqueVt", vdec, 3), SWW_EINVAL);
+    assert_non_null(strstr(sww_errmsg(m), "strictly increasing"));
+    const double dneg[] = { 1e-5, -1e-5, 1e-5, 1e-5, 1e-5, 1e-5 };
+    assert_int_equal(sww_regime_list(m, "obliqueDCrit", dneg, 6), SWW_EINVAL);
+    assert_non_null(strstr(sww_errmsg(m), "-1e-05"));
+    assert_int_equal(sww_regime_number(m, "obliqueVt", 1.0), SWW_EINVAL);
+    const double vt3[] = { 0.0, 0.5, 1.0 };
+    assert_int_equal(sww_regime_list(m, "obliqueVt", vt3, 3), SWW_OK);
+    assert_int_equal(sww_regime_commit(m, "code"), SWW_EMISSING);
+    assert_non_null(strstr(sww_errmsg(m), "obliqueVn"));
+    assert_int_equal(sww_regime_list(m, "obliqueVn", vn3, 3), SWW_OK);
+    const double d8[] = { 1e-5, 1e-5, 1e-5, 1e-5, 1e-5, 1e-5, 1e-5, 1e-5 };
+    assert_int_equal(sww_regime_list(m, "obliqueDCrit", d8, 8), SWW_OK);
+    assert_int_equal(sww_regime_commit(m, "code"), SWW_EINVAL);
+    assert_non_null(strstr(sww_errmsg(m), "8 values"));
+    const double drise[] = { 1e-5, 1e-5, 1e-5, 2e-5, 1e-5, 1e-5, 1e-5, 1e-5, 1e-5 };
+    assert_int_equal(sww_regime_list(m, "obliqueDCrit", drise, 9), SWW_OK);
+    assert_int_equal(sww_regime_commit(m, "code"), SWW_EINVAL);
+    assert_non_null(strstr(sww_errmsg(m), "must not increase with v_t"));
+    sww_free(m);
+}
+
 static void detach_physics(void **s)
 {
     (void)s;
@@ -562,6 +678,7 @@ int main(void)
         cmocka_unit_test(range_handling),
         cmocka_unit_test(table_and_linear_from_code),
         cmocka_unit_test(tangential_gate),
+        cmocka_unit_test(oblique_gate),
         cmocka_unit_test(detach_physics),
         cmocka_unit_test(shear_gate),
         cmocka_unit_test(probability_hook_and_bad_impacts),

@@ -12,8 +12,15 @@
 static const char *const num_keys[K_NNUM] = {
     "version", "degree", "vnMin", "vnMax", "dMin", "dMax", "slopeLow", "slopeHigh",
     "rmsResidual", "maxResidual", "yieldVelocity", "reboundNormal", "gamma", "Estar",
-    "rhoParticle", "mu"
+    "rhoParticle", "mu", "obliqueSlide"
 };
+
+/* list keys */
+static int is_list_key(const char *key)
+{
+    return !strcmp(key, "coeffs") || !strcmp(key, "vn") || !strcmp(key, "dCrit")
+        || !strcmp(key, "obliqueVt") || !strcmp(key, "obliqueVn") || !strcmp(key, "obliqueDCrit");
+}
 
 int sww_fail(sww_model *m, int code, const char *fmt, ...)
 {
@@ -37,11 +44,24 @@ sww_model *sww_alloc(void)
     return m;
 }
 
+static void oblique_clear(sww_model *m)
+{
+    free(m->ob_vt);
+    free(m->ob_lnv);
+    free(m->ob_lnd);
+    free(m->ob_s);
+    free(m->ob_lnt);
+    m->ob_vt = m->ob_lnv = m->ob_lnd = m->ob_s = m->ob_lnt = NULL;
+    m->ob_nvt = m->ob_nvn = m->ob_nd = 0;
+    m->ob_ready = 0;
+}
+
 void sww_regime_clear(sww_model *m)
 {
     free(m->tab_lnv);
     free(m->tab_lnd);
     m->tab_lnv = m->tab_lnd = NULL;
+    oblique_clear(m);
     memset(m->num, 0, sizeof m->num);
     memset(m->has, 0, sizeof m->has);
     m->representation = m->basis = 0;
@@ -78,7 +98,7 @@ int sww_regime_number(sww_model *m, const char *key, double v)
         m->ready = 0;
         return SWW_OK;
     }
-    if (!strcmp(key, "coeffs") || !strcmp(key, "vn") || !strcmp(key, "dCrit"))
+    if (is_list_key(key))
         return sww_fail(m, SWW_EINVAL, "key '%s': expects a list ( ... ), got the number %g", key, v);
     if (!strcmp(key, "representation") || !strcmp(key, "basis") || !strcmp(key, "label"))
         return sww_fail(m, SWW_EINVAL, "key '%s': expects a word, got the number %g", key, v);
@@ -116,6 +136,44 @@ static int set_table_part(sww_model *m, const char *key, const double *v, size_t
     return SWW_OK;
 }
 
+/* The oblique table's lists (checked together at commit). obliqueVt and
+ * obliqueVn are kept as given (ln of vn), obliqueDCrit as ln d. */
+static int set_oblique_part(sww_model *m, const char *key, const double *v, size_t n)
+{
+    const int which = !strcmp(key, "obliqueVt") ? 0 : !strcmp(key, "obliqueVn") ? 1 : 2;
+    if (n < (which == 2 ? 4u : 2u) || n > SWW_MAX_TABLE)
+        return sww_fail(m, SWW_EINVAL, "key '%s': %zu values, expected %d to %d", key, n,
+                        which == 2 ? 4 : 2, SWW_MAX_TABLE);
+    double *p = malloc(n * sizeof *p);
+    if (!p)
+        return sww_fail(m, SWW_ENOMEM, "key '%s': out of memory", key);
+    for (size_t i = 0; i < n; i++) {
+        if (which == 0 ? !(v[i] >= 0.0) : !(v[i] > 0.0)) {
+            free(p);
+            return sww_fail(m, SWW_EINVAL, "key '%s': value %g (entry %zu) must be %s", key, v[i],
+                            i, which == 0 ? ">= 0" : "> 0");
+        }
+        if (which < 2 && i > 0 && !(v[i] > v[i - 1])) {
+            free(p);
+            return sww_fail(m, SWW_EINVAL, "key '%s': value %g (entry %zu) is not larger than %g: "
+                            "the list must be strictly increasing", key, v[i], i, v[i - 1]);
+        }
+        p[i] = which == 0 ? v[i] : log(v[i]);
+    }
+    if (which == 0 && v[0] != 0.0) {
+        free(p);
+        return sww_fail(m, SWW_EINVAL, "key 'obliqueVt': the first value is %g, it must be 0 "
+                        "(the head-on row)", v[0]);
+    }
+    double **dst = which == 0 ? &m->ob_vt : which == 1 ? &m->ob_lnv : &m->ob_lnd;
+    size_t *cnt = which == 0 ? &m->ob_nvt : which == 1 ? &m->ob_nvn : &m->ob_nd;
+    free(*dst);
+    *dst = p;
+    *cnt = n;
+    m->ob_ready = 0;
+    return SWW_OK;
+}
+
 int sww_regime_list(sww_model *m, const char *key, const double *v, size_t n)
 {
     for (size_t i = 0; i < n; i++)
@@ -135,6 +193,8 @@ int sww_regime_list(sww_model *m, const char *key, const double *v, size_t n)
         return set_table_part(m, key, v, n, 0);
     if (!strcmp(key, "dCrit"))
         return set_table_part(m, key, v, n, 1);
+    if (!strcmp(key, "obliqueVt") || !strcmp(key, "obliqueVn") || !strcmp(key, "obliqueDCrit"))
+        return set_oblique_part(m, key, v, n);
     for (int k = 0; k < K_NNUM; k++)
         if (!strcmp(key, num_keys[k]))
             return sww_fail(m, SWW_EINVAL, "key '%s': expects one number, got a list of %zu", key, n);
@@ -172,7 +232,7 @@ int sww_regime_word(sww_model *m, const char *key, const char *w)
     for (int k = 0; k < K_NNUM; k++)
         if (!strcmp(key, num_keys[k]))
             return sww_fail(m, SWW_EINVAL, "key '%s': value '%s' is not a number", key, w);
-    if (!strcmp(key, "coeffs") || !strcmp(key, "vn") || !strcmp(key, "dCrit"))
+    if (is_list_key(key))
         return sww_fail(m, SWW_EINVAL, "key '%s': expects a list ( ... ), got '%s'", key, w);
     return SWW_OK;
 }
@@ -219,6 +279,69 @@ double sww_dcrit(const sww_model *m, double vn)
     if (vn > hi)
         return m->d_hi * pow(vn / hi, m->num[K_SLOPEHIGH]);
     return fit_eval(m, vn);
+}
+
+/* The oblique table at commit: all three keys or none; sizes; d_crit
+ * non-increasing with v_t in every column (2e-3 relative: the kernel's
+ * bisection tolerance); the v_t axis coordinate s. */
+static int oblique_commit(sww_model *m, const char *o)
+{
+    m->ob_ready = 0;
+    const int n_given = (m->ob_nvt > 0) + (m->ob_nvn > 0) + (m->ob_nd > 0);
+    if (n_given == 0)
+        return SWW_OK;
+    if (n_given < 3)
+        return sww_fail(m, SWW_EMISSING, "%s: the oblique table needs obliqueVt, obliqueVn and "
+                        "obliqueDCrit together (missing '%s')", o, !m->ob_nvt ? "obliqueVt"
+                        : !m->ob_nvn ? "obliqueVn" : "obliqueDCrit");
+    if (m->ob_nd != m->ob_nvt * m->ob_nvn)
+        return sww_fail(m, SWW_EINVAL, "%s: key 'obliqueDCrit': %zu values, but obliqueVt x "
+                        "obliqueVn = %zu x %zu = %zu", o, m->ob_nd, m->ob_nvt, m->ob_nvn,
+                        m->ob_nvt * m->ob_nvn);
+    if (m->has[K_OBSLIDE] && !(m->num[K_OBSLIDE] >= 0.0))
+        return sww_fail(m, SWW_EINVAL, "%s: key 'obliqueSlide': value %g must be >= 0", o,
+                        m->num[K_OBSLIDE]);
+    for (size_t i = 1; i < m->ob_nvt; i++)
+        for (size_t j = 0; j < m->ob_nvn; j++) {
+            const double a = m->ob_lnd[(i - 1) * m->ob_nvn + j], b = m->ob_lnd[i * m->ob_nvn + j];
+            if (b > a + 2e-3)
+                return sww_fail(m, SWW_EINVAL, "%s: key 'obliqueDCrit': d_crit rises from %g to "
+                                "%g m between v_t = %g and %g m/s (v_n = %g m/s): it must not "
+                                "increase with v_t", o, exp(a), exp(b), m->ob_vt[i - 1],
+                                m->ob_vt[i], exp(m->ob_lnv[j]));
+        }
+    /* The tangential limit D_t: at a node where d_crit lies below the head-on
+     * value of its column (by more than the kernel's bisection tolerance) the
+     * tangential motion limits sticking and D_t = d_crit; where the normal
+     * limit binds, D_t is only known to lie above, and takes the lowest-v_n
+     * column's value of the same row (the tangential limit of a flat wall
+     * hardly depends on v_n) if that is higher. The wall model then takes
+     * min(d_crit(v_n), D_t): the kink between the two limits is exact, not
+     * interpolated. */
+    const size_t N = m->ob_nvn, K = m->ob_nvt;
+    double *sc = realloc(m->ob_s, K * sizeof *sc);
+    if (sc)
+        m->ob_s = sc;
+    double *t = realloc(m->ob_lnt, K * N * sizeof *t);
+    if (t)
+        m->ob_lnt = t;
+    if (!sc || !t)
+        return sww_fail(m, SWW_ENOMEM, "%s: out of memory", o);
+    sc[0] = -INFINITY;
+    for (size_t i = 1; i < K; i++)
+        sc[i] = log(m->ob_vt[i]);
+    const double *D = m->ob_lnd;
+    const double tol = 3e-3;
+    for (size_t i = 0; i < K; i++)
+        for (size_t j = 0; j < N; j++) {
+            const double d = D[i * N + j];
+            if (i == 0 || d < D[j] - tol)
+                t[i * N + j] = d;
+            else
+                t[i * N + j] = D[i * N] > d ? D[i * N] : d;
+        }
+    m->ob_ready = 1;
+    return SWW_OK;
 }
 
 int sww_regime_commit(sww_model *m, const char *origin)
@@ -298,6 +421,14 @@ int sww_regime_commit(sww_model *m, const char *origin)
     }
     m->d_lo = fit_eval(m, lo);
     m->d_hi = fit_eval(m, hi);
+    const int rc_ob = oblique_commit(m, o);
+    if (rc_ob != SWW_OK)
+        return rc_ob;
+    if (m->vt_on == 2 && !m->ob_ready) {
+        m->vt_on = 0;
+        return sww_fail(m, SWW_EMISSING, "%s: the regime tangential gate needs the oblique table "
+                        "(obliqueVt, obliqueVn, obliqueDCrit: snowregime map --vt 0,...)", o);
+    }
     m->ready = 1;
     m->err[0] = '\0';
     /* an adhesion shear gate set before needs the (new) regime's data */
@@ -324,6 +455,95 @@ int sww_set_tangential_gate(sww_model *m, double vt_max, double d_ref, double ex
     m->vt_dref = d_ref;
     m->vt_exp = exponent;
     return SWW_OK;
+}
+
+int sww_set_tangential_regime(sww_model *m)
+{
+    if (!m->ready || !m->ob_ready)
+        return sww_fail(m, SWW_EMISSING, "tangential gate 'regime': the regime map has no "
+                        "oblique table (obliqueVt, obliqueVn, obliqueDCrit: make it with "
+                        "snowregime map --vt 0,... --max-slide S)");
+    m->vt_on = 2;
+    return SWW_OK;
+}
+
+/* ln D_t(v_n, v_t) for v_t > 0: the tangential limit (commit), bilinear in
+ * ln v_n (clamped to the span) and ln v_t; below the first non-zero node and
+ * beyond the last, each column continued as a power law in v_t with its
+ * first / last segment's slope (never rising with v_t). */
+static double oblique_lndt(const sww_model *m, double vn, double vt)
+{
+    const size_t N = m->ob_nvn, K = m->ob_nvt;
+    const double *X = m->ob_lnv;
+    double x = log(vn);
+    if (x < X[0])
+        x = X[0];
+    if (x > X[N - 1])
+        x = X[N - 1];
+    size_t j = 0, jh = N - 1;
+    while (jh - j > 1) {
+        const size_t mid = (j + jh) / 2;
+        if (X[mid] <= x)
+            j = mid;
+        else
+            jh = mid;
+    }
+    const double tx = (x - X[j]) / (X[jh] - X[j]);
+    const double *S = m->ob_s, *D = m->ob_lnt;   /* S[i] = ln vt_i, rows 1..K-1 */
+    const double y = log(vt);
+    size_t i, ih;
+    if (K == 2) {
+        i = ih = 1;
+    } else if (y <= S[1]) {
+        i = 1;
+        ih = 2;
+    } else if (y >= S[K - 1]) {
+        i = K - 2;
+        ih = K - 1;
+    } else {
+        i = 1;
+        ih = K - 1;
+        while (ih - i > 1) {
+            const size_t mid = (i + ih) / 2;
+            if (S[mid] <= y)
+                i = mid;
+            else
+                ih = mid;
+        }
+    }
+    const double a0 = D[i * N + j] + tx * (D[i * N + jh] - D[i * N + j]);
+    if (ih == i)
+        return a0;
+    const double a1 = D[ih * N + j] + tx * (D[ih * N + jh] - D[ih * N + j]);
+    const double slope = (a1 - a0) / (S[ih] - S[i]);
+    if (y < S[i] || y > S[ih]) {
+        /* outside the nodes: power law, never rising with v_t */
+        const double sl = slope < 0.0 ? slope : 0.0;
+        return y < S[i] ? a0 + sl * (y - S[i]) : a1 + sl * (y - S[ih]);
+    }
+    return a0 + slope * (y - S[i]);
+}
+
+double sww_dcrit_oblique(const sww_model *m, double vn, double vt)
+{
+    if (!m->ready || isnan(vn) || isnan(vt))
+        return NAN;
+    const double dn = sww_dcrit(m, vn);
+    if (!m->ob_ready || !(vt > 0.0) || vn <= 0.0)
+        return dn;
+    if (isinf(vt))
+        return 0.0;
+    const double dt = exp(oblique_lndt(m, vn, vt));
+    return dn < dt ? dn : dt;
+}
+
+int sww_oblique_table(const sww_model *m, size_t *nvt, size_t *nvn)
+{
+    if (nvt)
+        *nvt = m->ob_ready ? m->ob_nvt : 0;
+    if (nvn)
+        *nvn = m->ob_ready ? m->ob_nvn : 0;
+    return m->ob_ready;
 }
 
 void sww_set_tangential_off(sww_model *m)
@@ -381,7 +601,7 @@ double sww_rebound_normal(const sww_model *m, double vn)
 
 double sww_vt_max(const sww_model *m, double d)
 {
-    if (!m->vt_on)
+    if (m->vt_on != 1)
         return INFINITY;
     return m->vt_exp == 0.0 ? m->vt_max : m->vt_max * pow(d / m->vt_dref, m->vt_exp);
 }
@@ -431,8 +651,11 @@ void sww_describe(const sww_model *m, char *buf, size_t n)
         snprintf(reb, sizeof reb, "e_n Thornton(V_y %g m/s)", m->num[K_YIELD]);
     else
         snprintf(reb, sizeof reb, "e_n 1 (no yieldVelocity/reboundNormal)");
-    if (m->vt_on)
+    if (m->vt_on == 1)
         snprintf(vt, sizeof vt, "on: vtMax %g m/s (d/%g m)^%g", m->vt_max, m->vt_dref, m->vt_exp);
+    else if (m->vt_on == 2)
+        snprintf(vt, sizeof vt, "on: regime table %zu x %zu (v_t 0..%g m/s, slide %g m)",
+                 m->ob_nvt, m->ob_nvn, m->ob_vt[m->ob_nvt - 1], m->num[K_OBSLIDE]);
     else
         snprintf(vt, sizeof vt, "off");
     if (m->shear_on == 1)
@@ -472,7 +695,11 @@ int sww_decide(const sww_model *m, const sww_impact *in, sww_outcome *out)
     out->p_stick = stick_probability(m, in->d, dc);
     out->reason = SWW_BY_CRITERION;
     int stick = in->u < out->p_stick;
-    if (stick && m->vt_on && in->vt > sww_vt_max(m, in->d)) {
+    if (stick && m->vt_on == 1 && in->vt > sww_vt_max(m, in->d)) {
+        stick = 0;
+        out->reason = SWW_BY_TANGENTIAL;
+    } else if (stick && m->vt_on == 2 && in->vt > 0.0
+               && in->d > sww_dcrit_oblique(m, in->vn, in->vt)) {
         stick = 0;
         out->reason = SWW_BY_TANGENTIAL;
     }

@@ -76,8 +76,9 @@ const char *sww_errmsg(const sww_model *m);
 int sww_regime_load(sww_model *m, const char *path);
 /* Or set the same keys from code (the keys of the regime dictionary), then commit.
  * number keys: version degree vnMin vnMax dMin dMax slopeLow slopeHigh rmsResidual
- *   maxResidual yieldVelocity reboundNormal gamma Estar rhoParticle mu
- * list keys: coeffs vn dCrit;  word keys: representation basis label
+ *   maxResidual yieldVelocity reboundNormal gamma Estar rhoParticle mu obliqueSlide
+ * list keys: coeffs vn dCrit obliqueVt obliqueVn obliqueDCrit;
+ * word keys: representation basis label
  * Unknown keys are accepted and ignored (forward compatibility). Setting any key
  * makes the model not ready until the next successful sww_regime_commit. */
 int sww_regime_number(sww_model *m, const char *key, double v);
@@ -91,6 +92,10 @@ void sww_regime_clear(sww_model *m);
 /* ---- options (each off / neutral by default) ----------------------------- */
 /* Tangential gate: a stick candidate sticks only if vt <= vt_max (d/d_ref)^exponent. */
 int sww_set_tangential_gate(sww_model *m, double vt_max, double d_ref, double exponent);
+/* Tangential gate from the regime map's oblique table (model regime): a stick
+ * candidate sticks only if d <= sww_dcrit_oblique(vn, vt). Needs a committed
+ * regime with obliqueVt/obliqueVn/obliqueDCrit (SWW_EMISSING otherwise). */
+int sww_set_tangential_regime(sww_model *m);
 void sww_set_tangential_off(sww_model *m);
 /* Shear gate with a constant critical wall shear stress tau_c [Pa]. */
 int sww_set_shear_gate_constant(sww_model *m, double tau_c);
@@ -112,15 +117,30 @@ int sww_decide(const sww_model *m, const sww_impact *in, sww_outcome *out);
  * d_crit(vn_end) (v_n/vn_end)^slope anchored at the range end; INFINITY for
  * v_n <= 0; NaN only for NaN input or a model that is not ready. */
 double sww_dcrit(const sww_model *m, double vn);
+/* d_crit(v_n, v_t) [m] with the oblique table: min(d_crit(v_n), D_t(v^_n, v_t)),
+ * d_crit(v_n) the normal interface (above), D_t the tangential limit taken
+ * from the table at commit (at nodes where d_crit falls below the head-on
+ * value of its v_n column; where the normal limit binds, the lowest-v_n
+ * column's value of the row), interpolated bilinearly in ln d over ln v_n and
+ * ln v_t, continued below the first non-zero and beyond the last v_t node as
+ * a power law with the end segment's slope (never rising with v_t); v^_n = v_n
+ * clamped to the table's span (snowregime extends it a decade below the map's
+ * speeds). v_t = 0 gives d_crit(v_n) exactly and so does v_t -> 0 when the
+ * table has at least two non-zero v_t; without a table it is d_crit(v_n) for
+ * every v_t. NaN only for NaN input or a model that is not ready. */
+double sww_dcrit_oblique(const sww_model *m, double vn, double vt);
+/* 1 when the regime has an oblique table (sizes into *nvt, *nvn; may be NULL). */
+int sww_oblique_table(const sww_model *m, size_t *nvt, size_t *nvn);
 /* Normal rebound factor e_n(v_n) (Thornton with yieldVelocity, or the constant). */
 double sww_rebound_normal(const sww_model *m, double vn);
-/* Tangential limit vtMax(d) [m/s] (INFINITY when the gate is off). */
+/* Tangential limit vtMax(d) [m/s] of the constant gate (INFINITY when that
+ * gate is off, or the regime gate is on: see sww_dcrit_oblique). */
 double sww_vt_max(const sww_model *m, double d);
 /* Critical wall shear stress tau_c(d) [Pa] (INFINITY when the gate is off). */
 double sww_tau_crit(const sww_model *m, double d);
 /* 1 when sww_decide may be called. */
 int sww_ready(const sww_model *m);
-int sww_tangential_on(const sww_model *m);
+int sww_tangential_on(const sww_model *m);   /* 0 off, 1 constant, 2 regime */
 int sww_shear_on(const sww_model *m);
 /* The fit range and the label of the map. */
 double sww_vn_min(const sww_model *m);

@@ -12,7 +12,7 @@
 /* numeric keys of the regime dictionary, in this order */
 enum {
     K_VERSION, K_DEGREE, K_VNMIN, K_VNMAX, K_DMIN, K_DMAX, K_SLOPELOW, K_SLOPEHIGH,
-    K_RMS, K_MAXRES, K_YIELD, K_REBOUND, K_GAMMA, K_ESTAR, K_RHO, K_MU, K_NNUM
+    K_RMS, K_MAXRES, K_YIELD, K_REBOUND, K_GAMMA, K_ESTAR, K_RHO, K_MU, K_OBSLIDE, K_NNUM
 };
 
 struct sww_model {
@@ -28,11 +28,16 @@ struct sww_model {
     int has_vn, has_dcrit;
     size_t n_vn, n_dcrit;
     char label[SWW_LABELLEN];
+    /* oblique table d_crit(v_n, v_t): obliqueVt, obliqueVn, obliqueDCrit */
+    double *ob_vt, *ob_lnv, *ob_lnd;  /* v_t, ln v_n, ln d_crit (K x N, rows by v_t) */
+    double *ob_s, *ob_lnt;            /* ln v_t, ln D_t the tangential limit (commit) */
+    size_t ob_nvt, ob_nvn, ob_nd;
+    int ob_ready;                  /* the table passed the commit checks */
     /* derived at commit */
     int ready;
     double d_lo, d_hi;             /* d_crit at vnMin, vnMax */
     /* options */
-    int vt_on;
+    int vt_on;                     /* 0 off, 1 constant vtMax (d/dRef)^exponent, 2 regime table */
     double vt_max, vt_dref, vt_exp;
     int shear_on;                  /* 0 off, 1 constant, 2 adhesion */
     double tau_c, roughness;
