@@ -4,7 +4,10 @@
  *
  * Decides N impacts (default 1e6) with diameters 1-200 um and normal speeds
  * 0.01-30 m/s (inside and outside the fit range) R times (default 7) for each
- * configuration and prints the median time per call in ns. Exit 2 on bad input.
+ * configuration and prints the median time per call in ns: gates off, the
+ * constant tangential gate, with the adhesion shear gate, and, when the file
+ * has the oblique table (snowregime map --vt 0,...), the regime tangential
+ * gate alone. Exit 2 on bad input.
  */
 #include "sww.h"
 
@@ -55,7 +58,8 @@ int main(int argc, char **argv)
             puts("Usage: sww_bench [--help] [--calls N] [--repeats R] REGIME_FILE\n\n"
                  "Median time per sww_decide call [ns] for N impacts (default 1000000),\n"
                  "R repeats (default 7, at most 63): gates off, tangential gate on,\n"
-                 "both gates on (adhesion shear gate). Exit status 2 on bad input.");
+                 "both gates on (adhesion shear gate), and the regime tangential gate\n"
+                 "when the file has the oblique table. Exit status 2 on bad input.");
             return 0;
         }
         if ((!strcmp(argv[i], "--calls") || !strcmp(argv[i], "--repeats")) && i + 1 < argc) {
@@ -111,6 +115,14 @@ int main(int argc, char **argv)
     if (sww_set_shear_gate_adhesion(m, 0.05) == SWW_OK) {
         t = run(m, in, n, reps, f);
         printf("tangential + shear: %6.1f ns/call  (stick %ld bounce %ld ripoff %ld)\n", t, f[0], f[1], f[2]);
+    }
+    size_t nvt, nvn;
+    if (sww_oblique_table(m, &nvt, &nvn)) {
+        sww_set_shear_off(m);
+        sww_set_tangential_regime(m);
+        t = run(m, in, n, reps, f);
+        printf("regime gate (%zu x %zu): %6.1f ns/call  (stick %ld bounce %ld ripoff %ld)\n", nvt, nvn,
+               t, f[0], f[1], f[2]);
     }
     free(in);
     sww_free(m);

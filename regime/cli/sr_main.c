@@ -160,6 +160,13 @@ static const char *help_map =
 "    vt = vn tan(angle)) one map per value is made and the outcome is full stick;\n"
 "    a map of the series whose interface cannot be fitted (too few points) is\n"
 "    written without fit and without its coeffs file, with a warning.\n"
+"    With --vt LIST starting at 0 (0,V1,V2,... increasing) the combined\n"
+"    regime.coeffs is written too: the v_t = 0 fit plus the table of d_crit(v_n,\n"
+"    v_t) (the largest diameter that sticks, by bisection in ln d over 0.1 um -\n"
+"    10 cm) on those v_t and on log-spaced v_n from a decade below the map's range\n"
+"    to 3x above it, for the wall model's tangential gate `model regime`. Use\n"
+"    --max-slide S with it: on a flat wall an adhered particle always stops, so\n"
+"    S (stick = at rest within S) is what makes v_t matter.\n"
 "\n"
 "OPTIONS\n"
 "    --out DIR         output folder (created; required)\n"
@@ -189,6 +196,8 @@ static const char *help_map =
 "    interfaceSUFFIX.csv   vn_m_s,dcrit_m,dfit_m,rel_residual per interface point\n"
 "    fitSUFFIX.txt         degree, coefficients, residuals, slopes, counts, timing\n"
 "    regimeSUFFIX.coeffs   the interface for the wall model (doc/regime-coeffs.md)\n"
+"    regime.coeffs         with --vt 0,...: the v_t = 0 interface and the d_crit(v_n,\n"
+"                          v_t) table (obliqueVt, obliqueVn, obliqueDCrit, obliqueSlide)\n"
 "    mapSUFFIX.png         the map with the interface points and the fit (gnuplot)\n"
 "    A summary is printed on stdout. All files appear together or not at all.\n"
 "\n"
@@ -199,7 +208,8 @@ static const char *help_map =
 "EXAMPLES\n"
 "    snowregime map --out results/map\n"
 "    snowregime map --out results/map-g05 --set gamma=0.5 --degree 4\n"
-"    snowregime map --out results/angles --angle 0,30,60 --max-slide 100e-6 --nd 20 --nv 30\n";
+"    snowregime map --out results/angles --angle 0,30,60 --max-slide 100e-6 --nd 20 --nv 30\n"
+"    snowregime map --out results/oblique --vt 0,0.25,0.5,1,2,4,8 --max-slide 100e-6\n";
 
 static const char *help_sensitivity =
 "NAME\n"

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # test_wedge_case.sh - tutorials/wedge end to end on its coarsest variant, in a
 # temporary copy. WEDGE_MODE selects the run:
-#   transient (default)  Allrun -test -compare: the DDES route, the three gate
-#                        settings as three clouds in one run (about 50 s)
+#   transient (default)  Allrun -test -compare: the DDES route, the four gate
+#                        settings as four clouds in one run (about 60 s)
 #   parallel             Allrun -test (serial) and Allrun -test -parallel 2, gates
 #                        off: both checked, and their impact counts on the nose
 #                        agree within 4 Poisson standard deviations (about 60 s)
@@ -17,15 +17,16 @@
 #   * rear-face map (raw per-face values x face area) = rear integral within 1e-4
 #     (plus 1e-9 kg); transient: the two half-window maps add up to twice the
 #     window map, and convergence.md holds the per-patch and the region tables;
-#   * the rear-face PNG, the per-patch table (and with -compare the 3-panel gate PNG
-#     and the region table) are written; the wall shear stress is computed exactly
-#     when a shear-gate cloud runs;
+#   * the rear-face PNG, the per-patch table (and with -compare the 4-panel gate PNG,
+#     the region and the per-patch gate tables) are written; the wall shear stress is
+#     computed exactly when a shear-gate cloud runs; the regime gate's cloud reads
+#     the d_crit(v_n, v_t) table;
 #   * Allclean restores the case (no file left that the repository does not hold).
 # Skipped (77) without OpenFOAM, the project's solver and libraries, or gnuplot.
 set -u
 mode=${WEDGE_MODE:-transient}
 case "$mode" in
-    transient) runs=("-test -compare"); gates="off tangential shear" ;;
+    transient) runs=("-test -compare"); gates="off tangential shear regime" ;;
     parallel)  runs=("-test" "-test -parallel 2"); gates=off ;;
     steady)    runs=("-steady -test"); gates=off ;;
     *) echo "unknown WEDGE_MODE '$mode'"; exit 2 ;;
@@ -110,7 +111,9 @@ run_case() {  # run_case N ARGS: Allrun ARGS in a fresh copy $tmp/wedgeN, then t
     case "$args" in
         *-compare*)
             check "gate comparison PNG" "[ \"\$(head -c 4 '$r/gates_compare.png' | tail -c 3)\" = PNG ]"
-            check "regions table has 3 gate rows" "[ \$(grep -c -E '^\| (off|tangential|shear) \|' '$r/regions.md') = 3 ]"
+            check "regions table has 4 gate rows" "[ \$(grep -c -E '^\| (off|tangential|shear|regime) \|' '$r/regions.md') = 4 ]"
+            check "per-patch gate table has the 6 patches" "[ \$(grep -c -E '^\| (rear|nose|top|bottom|sideYneg|sideYpos) \|' '$r/gates_per_patch.md') = 6 ]"
+            check "the regime gate's cloud read the oblique table" "grep -q 'tangential gate on: regime table' '$w/$log'"
             check "the shear-gate cloud had the wall shear stress" "ls '$w/'0.*/wallShearStress >/dev/null 2>&1"
             # the solver's cloud options: bad lists stop it at start-up with a message
             bad_clouds() {  # bad_clouds MESSAGE ARGS...

@@ -330,6 +330,12 @@ static int oblique_commit(sww_model *m, const char *o)
     sc[0] = -INFINITY;
     for (size_t i = 1; i < K; i++)
         sc[i] = log(m->ob_vt[i]);
+    /* uniform spacing in ln v_n (to 1e-9 of a cell): direct indexing */
+    const double *X = m->ob_lnv, dx = (X[N - 1] - X[0]) / (double)(N - 1);
+    m->ob_dx_inv = 1.0 / dx;
+    for (size_t j = 0; j < N; j++)
+        if (fabs(X[j] - (X[0] + (double)j * dx)) > 1e-9 * dx)
+            m->ob_dx_inv = 0.0;
     const double *D = m->ob_lnd;
     const double tol = 3e-3;
     for (size_t i = 0; i < K; i++)
@@ -481,6 +487,12 @@ static double oblique_lndt(const sww_model *m, double vn, double vt)
     if (x > X[N - 1])
         x = X[N - 1];
     size_t j = 0, jh = N - 1;
+    if (m->ob_dx_inv > 0.0) {
+        /* uniform in ln v_n (as snowregime writes it): the cell directly */
+        const double f = (x - X[0]) * m->ob_dx_inv;
+        j = f < (double)(N - 2) ? (size_t)f : N - 2;
+        jh = j + 1;
+    }
     while (jh - j > 1) {
         const size_t mid = (j + jh) / 2;
         if (X[mid] <= x)
@@ -535,6 +547,11 @@ double sww_dcrit_oblique(const sww_model *m, double vn, double vt)
         return 0.0;
     const double dt = exp(oblique_lndt(m, vn, vt));
     return dn < dt ? dn : dt;
+}
+
+double sww_oblique_slide(const sww_model *m)
+{
+    return m->ob_ready && m->has[K_OBSLIDE] ? m->num[K_OBSLIDE] : NAN;
 }
 
 int sww_oblique_table(const sww_model *m, size_t *nvt, size_t *nvn)
@@ -698,8 +715,9 @@ int sww_decide(const sww_model *m, const sww_impact *in, sww_outcome *out)
     if (stick && m->vt_on == 1 && in->vt > sww_vt_max(m, in->d)) {
         stick = 0;
         out->reason = SWW_BY_TANGENTIAL;
-    } else if (stick && m->vt_on == 2 && in->vt > 0.0
-               && in->d > sww_dcrit_oblique(m, in->vn, in->vt)) {
+    } else if (stick && m->vt_on == 2 && in->vt > 0.0 && in->vn > 0.0
+               && (isinf(in->vt) || log(in->d) > oblique_lndt(m, in->vn, in->vt))) {
+        /* d <= d_crit(v_n) already: the tangential limit decides */
         stick = 0;
         out->reason = SWW_BY_TANGENTIAL;
     }

@@ -129,6 +129,9 @@ double sww_dcrit(const sww_model *m, double vn);
  * table has at least two non-zero v_t; without a table it is d_crit(v_n) for
  * every v_t. NaN only for NaN input or a model that is not ready. */
 double sww_dcrit_oblique(const sww_model *m, double vn, double vt);
+/* The slide length the oblique table was made with [m] (obliqueSlide; NaN
+ * without a table or the key). */
+double sww_oblique_slide(const sww_model *m);
 /* 1 when the regime has an oblique table (sizes into *nvt, *nvn; may be NULL). */
 int sww_oblique_table(const sww_model *m, size_t *nvt, size_t *nvn);
 /* Normal rebound factor e_n(v_n) (Thornton with yieldVelocity, or the constant). */

@@ -31,6 +31,7 @@ struct sww_model {
     /* oblique table d_crit(v_n, v_t): obliqueVt, obliqueVn, obliqueDCrit */
     double *ob_vt, *ob_lnv, *ob_lnd;  /* v_t, ln v_n, ln d_crit (K x N, rows by v_t) */
     double *ob_s, *ob_lnt;            /* ln v_t, ln D_t the tangential limit (commit) */
+    double ob_dx_inv;                 /* 1 / ln-v_n spacing when uniform, else 0 */
     size_t ob_nvt, ob_nvn, ob_nd;
     int ob_ready;                  /* the table passed the commit checks */
     /* derived at commit */

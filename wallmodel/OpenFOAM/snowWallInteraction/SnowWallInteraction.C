@@ -126,17 +126,49 @@ void Foam::SnowWallInteraction<CloudType>::setup()
         const dictionary& g = cd.subDict("tangentialGate");
         if (g.lookupOrDefault<Switch>("active", true))
         {
-            check
-            (
-                sww_set_tangential_gate
+            const word model(g.lookupOrDefault<word>("model", "constant"));
+            if (model == "constant")
+            {
+                check
                 (
-                    model_,
-                    g.get<scalar>("vtMax"),
-                    g.lookupOrDefault<scalar>("dRef", 5e-5),
-                    g.lookupOrDefault<scalar>("exponent", 0.0)
-                ),
-                g
-            );
+                    sww_set_tangential_gate
+                    (
+                        model_,
+                        g.get<scalar>("vtMax"),
+                        g.lookupOrDefault<scalar>("dRef", 5e-5),
+                        g.lookupOrDefault<scalar>("exponent", 0.0)
+                    ),
+                    g
+                );
+            }
+            else if (model == "regime")
+            {
+                // d_crit(v_n, v_t) from the regime's oblique table
+                // (snowregime map --vt 0,... --max-slide S)
+                check(sww_set_tangential_regime(model_), g);
+                // the criterion's slide length, when the case states it,
+                // must be the one the table was made with
+                scalar slide = 0;
+                if (g.readIfPresent("slideLength", slide))
+                {
+                    const scalar made = sww_oblique_slide(model_);
+                    if (!(mag(slide - made) <= 1e-9*mag(made)))
+                    {
+                        FatalIOErrorInFunction(g)
+                            << "snowWallInteraction: tangentialGate slideLength "
+                            << slide << " differs from the regime table's "
+                            << "obliqueSlide " << made << ": remake regime.coeffs "
+                            << "with snowregime map --max-slide " << slide
+                            << exit(FatalIOError);
+                    }
+                }
+            }
+            else
+            {
+                FatalIOErrorInFunction(g)
+                    << "snowWallInteraction: tangentialGate model '" << model
+                    << "' is not constant or regime" << exit(FatalIOError);
+            }
         }
     }
 
