@@ -100,33 +100,6 @@ static swr_status bad_input(swr_result *r, const char *what, double v)
     return SWR_EINVAL;
 }
 
-/* Largest x = sqrt(a) with U(x) = E (the turning point of a conservative
- * motion with energy E): Newton from above, bisection as a safeguard. U grows
- * monotonically above the equilibrium sqrt(a0). */
-static double turning_x(const swr_normal *n, double E, double x_start)
-{
-    double lo = n->a0 > 0.0 ? sqrt(n->a0) : 0.0, hi = x_start > lo ? x_start : 2.0 * lo + 1.0;
-    for (int i = 0; i < 200 && swr_normal_energy(n, hi) < E; i++)
-        hi *= 2.0;
-    double x = hi;
-    for (int i = 0; i < 100; i++) {
-        const double f = swr_normal_energy(n, x) - E;
-        if (f > 0.0)
-            hi = x;
-        else
-            lo = x;
-        const double x2 = x * x;
-        const double slope = swr_normal_force(n, x) * (4.0 * x2 * x / n->R - n->C);
-        double xn = slope > 0.0 ? x - f / slope : 0.5 * (lo + hi);
-        if (!(xn > lo && xn < hi))
-            xn = 0.5 * (lo + hi);
-        if (fabs(xn - x) <= 1e-14 * x)
-            return xn;
-        x = xn;
-    }
-    return x;
-}
-
 /* Duration of a conservative normal motion with energy E between the contact
  * radii x_lo^2 < x_hi^2 (x_hi may be the turning point), the integral of
  * d delta / |u| = delta'(x) dx / sqrt(2 (E - U(x))). The substitution
@@ -479,7 +452,7 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
             /* conservative remainder with energy e_dec, closed form */
             double xs = nrm.xf;               /* separation: a_f, or 0 for Hertz */
             if (u > 0.0) {                    /* still loading (undamped run) */
-                const double xm = turning_x(&nrm, e_dec, x);
+                const double xm = swr_normal_turning_x(&nrm, e_dec, x);
                 t += travel_time(&nrm, e_dec, x, xm) + travel_time(&nrm, e_dec, xs, xm);
                 const double dm = xm * xm * xm * xm / nrm.R - nrm.C * xm;
                 if (dm > dmax)
@@ -504,7 +477,7 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
     if (outcome == STICK && n == 0 && !plastic) {
         /* decided at first contact: the overlap an undamped approach reaches
          * (an upper bound when damped) */
-        const double xm = turning_x(&nrm, E0, nrm.xj);
+        const double xm = swr_normal_turning_x(&nrm, E0, nrm.xj);
         dmax = xm * xm * xm * xm / nrm.R - nrm.C * xm;
     }
     r->steps = n;

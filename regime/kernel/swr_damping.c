@@ -12,22 +12,25 @@
 
 static const double BETA = 1.3693063937629153; /* sqrt(15/8) */
 
-/* -x'' of the dimensionless impact: Hertz, plus the dashpot while loading. */
-static double decel(double x, double v, double alpha)
+/* -x'' of the dimensionless impact: Hertz, plus the dashpot while loading
+ * (both: whatever the direction). */
+static double decel(double x, double v, double alpha, int both)
 {
     if (x <= 0.0)
         return 0.0;
     const double s = sqrt(x);
-    return 1.25 * x * s + (v > 0.0 ? BETA * alpha * sqrt(s) * v : 0.0);
+    return 1.25 * x * s + (v > 0.0 || both ? BETA * alpha * sqrt(s) * v : 0.0);
 }
 
-/* -x'' with the dashpot acting whatever the direction (dashpot both) */
-static double decel2(double x, double v, double alpha)
+/* One classical RK4 step of the dimensionless impact. */
+static void rk4(double x, double v, double h, double alpha, int both, double *xn, double *vn)
 {
-    if (x <= 0.0)
-        return 0.0;
-    const double s = sqrt(x);
-    return 1.25 * x * s + BETA * alpha * sqrt(s) * v;
+    const double k1x = v, k1v = -decel(x, v, alpha, both);
+    const double k2x = v + 0.5 * h * k1v, k2v = -decel(x + 0.5 * h * k1x, k2x, alpha, both);
+    const double k3x = v + 0.5 * h * k2v, k3v = -decel(x + 0.5 * h * k2x, k3x, alpha, both);
+    const double k4x = v + h * k3v, k4v = -decel(x + h * k3x, k4x, alpha, both);
+    *xn = x + h / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x);
+    *vn = v + h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
 }
 
 /* COR and loading time (turning point, in units of delta_H / v).
@@ -47,12 +50,8 @@ static double cor_and_time(double alpha, double *t_load)
     double x = t - (16.0 / 45.0) * b * pow(t, 2.25), v = 1.0 - 0.8 * b * pow(t, 1.25);
     for (long i = 0; i < 100000000L; i++) {
         const double h = t / 8.0 < hmax ? t / 8.0 : hmax;
-        const double k1x = v, k1v = -decel(x, v, alpha);
-        const double k2x = v + 0.5 * h * k1v, k2v = -decel(x + 0.5 * h * k1x, k2x, alpha);
-        const double k3x = v + 0.5 * h * k2v, k3v = -decel(x + 0.5 * h * k2x, k3x, alpha);
-        const double k4x = v + h * k3v, k4v = -decel(x + h * k3x, k4x, alpha);
-        const double xn = x + h / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x);
-        const double vn = v + h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
+        double xn, vn;
+        rk4(x, v, h, alpha, 0, &xn, &vn);
         if (vn <= 0.0) {
             /* turning point inside this step: cubic Hermite in time through
              * (x, v) and (xn, vn), maximum where its derivative vanishes */
@@ -101,12 +100,8 @@ static double cor_both(double alpha)
     double x = t - (16.0 / 45.0) * b * pow(t, 2.25), v = 1.0 - 0.8 * b * pow(t, 1.25);
     while (t < 1e2) {
         const double h = t / 8.0 < hmax ? t / 8.0 : hmax;
-        const double k1x = v, k1v = -decel2(x, v, alpha);
-        const double k2x = v + 0.5 * h * k1v, k2v = -decel2(x + 0.5 * h * k1x, k2x, alpha);
-        const double k3x = v + 0.5 * h * k2v, k3v = -decel2(x + 0.5 * h * k2x, k3x, alpha);
-        const double k4x = v + h * k3v, k4v = -decel2(x + h * k3x, k4x, alpha);
-        const double xn = x + h / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x);
-        const double vn = v + h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
+        double xn, vn;
+        rk4(x, v, h, alpha, 1, &xn, &vn);
         if (xn <= 0.0 && vn < 0.0)
             return -(v + (vn - v) * x / (x - xn));
         x = xn;

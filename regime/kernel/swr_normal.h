@@ -36,6 +36,12 @@ typedef struct {
 /* Set the constants from R*, E*, Gamma (Gamma = 0: Hertz). */
 void swr_normal_init(swr_normal *n, double R, double Es, double gamma);
 
+/* Largest x = sqrt(a) with U(x) = E (the turning point of a conservative
+ * motion with energy E relative to the jump-in): Newton from above (x_start,
+ * doubled until U >= E), bisection as a safeguard; U grows monotonically above
+ * the equilibrium sqrt(a0). */
+double swr_normal_turning_x(const swr_normal *n, double E, double x_start);
+
 /* sqrt of the contact radius for overlap delta (>= delta_c), closed form. */
 double swr_normal_x_closed(const swr_normal *n, double delta);
 

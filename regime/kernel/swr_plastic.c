@@ -52,24 +52,9 @@ double swr_plastic_turning(const swr_plastic *s, double E)
         const double z = Fy > 0.0 ? 2.0 * q / (Fy + r) : (r - Fy) / k;
         return s->dy + z;
     }
-    /* elastic curve: U(x) = E for x between sqrt(a0) and x_y (U increasing
-     * there), Newton with bisection safeguard */
+    /* elastic curve: U(x) = E below x_y (U increasing above sqrt(a0)) */
     const swr_normal *n = &s->el;
-    double lo = n->a0 > 0.0 ? sqrt(n->a0) : 0.0, hi = s->xy, x = hi;
-    for (int i = 0; i < 200; i++) {
-        const double f = swr_normal_energy(n, x) - E;
-        if (f > 0.0)
-            hi = x;
-        else
-            lo = x;
-        const double slope = swr_normal_force(n, x) * (4.0 * x * x * x / n->R - n->C);
-        double xn = slope > 0.0 ? x - f / slope : 0.5 * (lo + hi);
-        if (!(xn > lo && xn < hi))
-            xn = 0.5 * (lo + hi);
-        if (fabs(xn - x) <= 1e-15 * x)
-            break;
-        x = xn;
-    }
+    const double x = swr_normal_turning_x(n, E, s->xy);
     return x * x * x * x / n->R - n->C * x;
 }
 
