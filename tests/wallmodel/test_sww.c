@@ -249,6 +249,85 @@ static double tau_indep(double G, double Es, double R, double mu, double k)
     return mu > 0 && slide < roll ? slide : roll;
 }
 
+/* Build-up feedback (issue 12): bare -> blended -> covered. The covered
+ * regime is the fixture with ln d_crit lowered by ln 2 (d_crit(1 m/s) 15 um
+ * instead of 30 um) and a constant rebound 0.3. */
+static int same_outcome(const sww_outcome *a, const sww_outcome *b)
+{
+    return a->fate == b->fate && a->reason == b->reason && a->d_crit == b->d_crit
+        && a->p_stick == b->p_stick && a->e_n == b->e_n && a->e_t == b->e_t
+        && a->range == b->range;
+}
+
+static void buildup_blend(void **s)
+{
+    (void)s;
+    sww_model *bare = load_fixture(), *cov = load_fixture();
+    const double c[] = { C0 - log(2.0), C1, C2, C3 };
+    assert_int_equal(sww_regime_list(cov, "coeffs", c, 4), SWW_OK);
+    assert_int_equal(sww_regime_number(cov, "reboundNormal", 0.3), SWW_OK);
+    assert_int_equal(sww_regime_commit(cov, "covered"), SWW_OK);
+    ASSERT_REL(sww_dcrit(cov, 1.0), 0.5 * sww_dcrit(bare, 1.0), 1e-12);
+    const double d = 2e-5, v = 1.0; /* sticks on the bare wall, bounces on snow */
+    sww_impact in = { .d = d, .vn = v, .vt = 0.0, .tau_w = 0.0, .u = 0.999 };
+    sww_outcome o, ref;
+    /* bare: w = 0 is sww_decide of the bare regime exactly, for any u */
+    assert_int_equal(sww_decide_blend(bare, cov, 0.0, &in, &o), SWW_OK);
+    assert_int_equal(sww_decide(bare, &in, &ref), SWW_OK);
+    assert_true(same_outcome(&o, &ref));
+    assert_int_equal(o.fate, SWW_STICK);
+    /* covered: w = 1 is the covered regime */
+    in.u = 0.0;
+    assert_int_equal(sww_decide_blend(bare, cov, 1.0, &in, &o), SWW_OK);
+    assert_int_equal(sww_decide(cov, &in, &ref), SWW_OK);
+    assert_true(same_outcome(&o, &ref));
+    assert_int_equal(o.fate, SWW_BOUNCE);
+    ASSERT_REL(o.e_n, 0.3, 1e-15);
+    /* blended, w = 0.3: p_stick = 0.7 */
+    in.u = 0.69;
+    assert_int_equal(sww_decide_blend(bare, cov, 0.3, &in, &o), SWW_OK);
+    assert_int_equal(o.fate, SWW_STICK);
+    ASSERT_REL(o.p_stick, 0.7, 1e-15);
+    ASSERT_REL(o.d_crit, 0.7 * sww_dcrit(bare, v) + 0.3 * sww_dcrit(cov, v), 1e-14);
+    in.u = 0.71;
+    assert_int_equal(sww_decide_blend(bare, cov, 0.3, &in, &o), SWW_OK);
+    assert_int_equal(o.fate, SWW_BOUNCE);
+    ASSERT_REL(o.e_n, 0.3, 1e-15);               /* the regime that bounced */
+    /* the fraction of sticks over many u is 1 - w */
+    for (double w = 0.0; w <= 1.0; w += 0.125) {
+        long n = 0;
+        for (int k = 0; k < 1000; k++) {
+            in.u = (k + 0.5) / 1000.0;
+            assert_int_equal(sww_decide_blend(bare, cov, w, &in, &o), SWW_OK);
+            n += o.fate == SWW_STICK;
+        }
+        assert_int_equal(n, (long)lround(1000.0 * (1.0 - w)));
+    }
+    /* both agree: no blend effect */
+    in.d = 5e-6;
+    in.u = 0.999;
+    assert_int_equal(sww_decide_blend(bare, cov, 0.5, &in, &o), SWW_OK);
+    assert_int_equal(o.fate, SWW_STICK);
+    /* no covered regime: the bare one */
+    assert_int_equal(sww_decide_blend(bare, NULL, 0.5, &in, &o), SWW_OK);
+    /* bad input */
+    assert_int_equal(sww_decide_blend(bare, cov, -0.1, &in, &o), SWW_EINVAL);
+    assert_int_equal(sww_decide_blend(bare, cov, 1.5, &in, &o), SWW_EINVAL);
+    assert_int_equal(sww_decide_blend(bare, cov, NAN, &in, &o), SWW_EINVAL);
+    in.u = 1.0;
+    assert_int_equal(sww_decide_blend(bare, cov, 0.5, &in, &o), SWW_EINVAL);
+    /* the covered fraction and the monolayer */
+    ASSERT_REL(sww_monolayer_mass(920.0, 33e-6), M_PI / (2.0 * sqrt(3.0)) * 2.0 / 3.0 * 920.0 * 33e-6, 1e-15);
+    ASSERT_REL(sww_monolayer_mass(920.0, 33e-6), 0.018357, 1e-4);
+    assert_true(isnan(sww_monolayer_mass(-1.0, 1e-5)) && isnan(sww_monolayer_mass(920.0, INFINITY)));
+    assert_true(sww_cover_fraction(0.0, 0.02) == 0.0 && sww_cover_fraction(-1.0, 0.02) == 0.0);
+    ASSERT_REL(sww_cover_fraction(0.005, 0.02), 0.25, 1e-15);
+    assert_true(sww_cover_fraction(0.02, 0.02) == 1.0 && sww_cover_fraction(1e9, 0.02) == 1.0);
+    assert_true(isnan(sww_cover_fraction(NAN, 0.02)) && isnan(sww_cover_fraction(0.01, 0.0)));
+    sww_free(bare);
+    sww_free(cov);
+}
+
 /* The oblique table (issue 11) from code: the fixture's normal interface with
  * a table D = min(d_crit(v_n), d_t(v_t)), d_t = 20 um (v_t / 0.5)^(-2/3). */
 static double dtan(double vt) { return 2e-5 * pow(vt / 0.5, -2.0 / 3.0); }
@@ -679,6 +758,7 @@ int main(void)
         cmocka_unit_test(table_and_linear_from_code),
         cmocka_unit_test(tangential_gate),
         cmocka_unit_test(oblique_gate),
+        cmocka_unit_test(buildup_blend),
         cmocka_unit_test(detach_physics),
         cmocka_unit_test(shear_gate),
         cmocka_unit_test(probability_hook_and_bad_impacts),

@@ -742,3 +742,60 @@ int sww_decide(const sww_model *m, const sww_impact *in, sww_outcome *out)
     }
     return SWW_OK;
 }
+
+/* ---------------------------------------------------------------- build-up */
+
+double sww_monolayer_mass(double rho, double d)
+{
+    if (!(rho > 0.0) || !(d > 0.0) || isinf(rho) || isinf(d))
+        return NAN;
+    /* hexagonally close-packed spheres on a plane: area fraction pi/(2 sqrt 3),
+     * a sphere's mass over its projected area (2/3) rho d */
+    return M_PI / (2.0 * sqrt(3.0)) * (2.0 / 3.0) * rho * d;
+}
+
+double sww_cover_fraction(double mass_per_area, double cover_mass)
+{
+    if (isnan(mass_per_area) || !(cover_mass > 0.0))
+        return NAN;
+    if (!(mass_per_area > 0.0))
+        return 0.0;
+    const double w = mass_per_area / cover_mass;
+    return w < 1.0 ? w : 1.0;
+}
+
+int sww_decide_blend(const sww_model *bare, const sww_model *covered, double w,
+                     const sww_impact *in, sww_outcome *out)
+{
+    if (!(w >= 0.0 && w <= 1.0))
+        return SWW_EINVAL;
+    if (w == 0.0 || !covered)
+        return sww_decide(bare, in, out);
+    if (w == 1.0)
+        return sww_decide(covered, in, out);
+    /* each regime's own outcome (with its gates), the random number aside */
+    sww_impact in0 = *in;
+    in0.u = 0.0;
+    sww_outcome ob, oc;
+    int rc = sww_decide(bare, &in0, &ob);
+    if (rc != SWW_OK)
+        return rc;
+    rc = sww_decide(covered, &in0, &oc);
+    if (rc != SWW_OK)
+        return rc;
+    if (!(in->u >= 0.0 && in->u < 1.0))
+        return SWW_EINVAL;
+    const double pb = ob.fate == SWW_STICK ? 1.0 : 0.0, pc = oc.fate == SWW_STICK ? 1.0 : 0.0;
+    const double p = (1.0 - w) * pb + w * pc;
+    /* sticks with the blended probability; otherwise the outcome of a regime
+     * that does not stick (the covered one when neither does and w >= 1/2) */
+    const sww_outcome *o;
+    if (in->u < p)
+        o = pc > pb ? &oc : (pb > pc ? &ob : (w >= 0.5 ? &oc : &ob));
+    else
+        o = pc < pb ? &oc : (pb < pc ? &ob : (w >= 0.5 ? &oc : &ob));
+    *out = *o;
+    out->p_stick = p;
+    out->d_crit = (1.0 - w) * ob.d_crit + w * oc.d_crit;
+    return SWW_OK;
+}

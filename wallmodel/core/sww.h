@@ -113,6 +113,27 @@ int sww_set_rebound_tangential(sww_model *m, double e_t);
  * SWW_ENOTREADY. Thread-safe, allocates nothing, writes no message. */
 int sww_decide(const sww_model *m, const sww_impact *in, sww_outcome *out);
 
+/* ---- build-up feedback: a face covered by snow (issue 12) -------------------
+ * A face's state follows from its own deposit m [kg/m2]: bare at m = 0,
+ * covered from the covering mass m_c on, in between a blend of the stick
+ * probabilities with the covered fraction w = min(1, m / m_c):
+ *     p_stick = (1 - w) p_bare + w p_covered,
+ * p of each regime its own decision with its own gates (0 or 1 for a sharp
+ * map). The particle sticks if u < p_stick; otherwise it leaves with the
+ * outcome (reason, rebound, rip-off) of a regime that does not stick there (the
+ * covered one when neither does and w >= 1/2). out->d_crit is the blend
+ * (1 - w) d_bare + w d_covered, out->p_stick the blended probability.
+ * w = 0 and w = 1 are exactly sww_decide of the bare / covered regime.
+ * Returns SWW_EINVAL for w outside [0, 1] (or a bad impact). */
+int sww_decide_blend(const sww_model *bare, const sww_model *covered, double w,
+                     const sww_impact *in, sww_outcome *out);
+/* Covered fraction min(1, m / m_c) (0 for m <= 0; NaN for NaN m or m_c <= 0). */
+double sww_cover_fraction(double mass_per_area, double cover_mass);
+/* Mass per area of one monolayer of spheres of diameter d and density rho,
+ * hexagonally close packed: m_c = (pi / (2 sqrt 3)) (2/3) rho d = 0.6046 rho d
+ * [kg/m2] (NaN for non-positive or infinite input). */
+double sww_monolayer_mass(double rho, double d);
+
 /* d_crit(v_n) [m]: the fit inside [vnMin, vnMax]; outside it the power law
  * d_crit(vn_end) (v_n/vn_end)^slope anchored at the range end; INFINITY for
  * v_n <= 0; NaN only for NaN input or a model that is not ready. */

@@ -12,6 +12,7 @@
 template<class CloudType>
 void Foam::SnowWallInteraction<CloudType>::check
 (
+    const sww_model* m,
     int rc,
     const dictionary& dict
 ) const
@@ -19,7 +20,7 @@ void Foam::SnowWallInteraction<CloudType>::check
     if (rc != SWW_OK)
     {
         FatalIOErrorInFunction(dict)
-            << "snowWallInteraction: " << sww_errmsg(model_)
+            << "snowWallInteraction: " << sww_errmsg(m)
             << exit(FatalIOError);
     }
 }
@@ -28,12 +29,13 @@ void Foam::SnowWallInteraction<CloudType>::check
 template<class CloudType>
 void Foam::SnowWallInteraction<CloudType>::readRegime
 (
+    sww_model* m,
     const dictionary& regimeDict
 )
 {
     // Every entry goes through the C core's setters: the contract of
     // doc/regime-coeffs.md is checked once, in C.
-    sww_regime_clear(model_);
+    sww_regime_clear(m);
     for (const entry& e : regimeDict)
     {
         if (e.isDict())
@@ -50,18 +52,18 @@ void Foam::SnowWallInteraction<CloudType>::readRegime
         int rc = SWW_OK;
         if (t0.isNumber() && is.size() == 1)
         {
-            rc = sww_regime_number(model_, key.c_str(), t0.number());
+            rc = sww_regime_number(m, key.c_str(), t0.number());
         }
         else if ((t0.isWord() || t0.isString()) && is.size() == 1)
         {
             const std::string w(t0.isWord() ? t0.wordToken() : t0.stringToken());
-            rc = sww_regime_word(model_, key.c_str(), w.c_str());
+            rc = sww_regime_word(m, key.c_str(), w.c_str());
         }
         else if (t0.isPunctuation() && t0.pToken() == token::BEGIN_LIST)
         {
             scalarList vals;
             is >> vals;
-            rc = sww_regime_list(model_, key.c_str(), vals.cdata(), vals.size());
+            rc = sww_regime_list(m, key.c_str(), vals.cdata(), vals.size());
         }
         else
         {
@@ -69,54 +71,26 @@ void Foam::SnowWallInteraction<CloudType>::readRegime
                 << "snowWallInteraction: regime key '" << e.keyword()
                 << "': cannot read value " << is << exit(FatalIOError);
         }
-        check(rc, regimeDict);
+        check(m, rc, regimeDict);
     }
     const std::string origin(regimeDict.name());
-    check(sww_regime_commit(model_, origin.c_str()), regimeDict);
+    check(m, sww_regime_commit(m, origin.c_str()), regimeDict);
 }
 
 
 template<class CloudType>
-void Foam::SnowWallInteraction<CloudType>::setup()
+void Foam::SnowWallInteraction<CloudType>::applyGates
+(
+    sww_model* m,
+    const dictionary& cd
+)
 {
-    const dictionary& cd = this->coeffDict();
-    model_ = sww_alloc();
-    if (!model_)
-    {
-        FatalErrorInFunction << "out of memory" << exit(FatalError);
-    }
-
-    if (!cd.isDict("regime"))
-    {
-        FatalIOErrorInFunction(cd)
-            << "snowWallInteraction: missing sub-dictionary 'regime' in "
-            << cd.name() << ": add  #include \"regime.coeffs\"  (written by "
-            << "snowregime map) to snowWallInteractionCoeffs"
-            << exit(FatalIOError);
-    }
-    readRegime(cd.subDict("regime"));
-
-    const word stuck(cd.lookupOrDefault<word>("stuckParcels", "remove"));
-    if (stuck == "remove")
-    {
-        removeStuck_ = true;
-    }
-    else if (stuck == "keep")
-    {
-        removeStuck_ = false;
-    }
-    else
-    {
-        FatalIOErrorInFunction(cd)
-            << "snowWallInteraction: stuckParcels '" << stuck
-            << "' is not remove or keep" << exit(FatalIOError);
-    }
-
     check
     (
+        m,
         sww_set_rebound_tangential
         (
-            model_, cd.lookupOrDefault<scalar>("reboundTangential", 1.0)
+            m, cd.lookupOrDefault<scalar>("reboundTangential", 1.0)
         ),
         cd
     );
@@ -131,9 +105,10 @@ void Foam::SnowWallInteraction<CloudType>::setup()
             {
                 check
                 (
+                    m,
                     sww_set_tangential_gate
                     (
-                        model_,
+                        m,
                         g.get<scalar>("vtMax"),
                         g.lookupOrDefault<scalar>("dRef", 5e-5),
                         g.lookupOrDefault<scalar>("exponent", 0.0)
@@ -145,13 +120,13 @@ void Foam::SnowWallInteraction<CloudType>::setup()
             {
                 // d_crit(v_n, v_t) from the regime's oblique table
                 // (snowregime map --vt 0,... --max-slide S)
-                check(sww_set_tangential_regime(model_), g);
+                check(m, sww_set_tangential_regime(m), g);
                 // the criterion's slide length, when the case states it,
                 // must be the one the table was made with
                 scalar slide = 0;
                 if (g.readIfPresent("slideLength", slide))
                 {
-                    const scalar made = sww_oblique_slide(model_);
+                    const scalar made = sww_oblique_slide(m);
                     if (!(mag(slide - made) <= 1e-9*mag(made)))
                     {
                         FatalIOErrorInFunction(g)
@@ -182,9 +157,10 @@ void Foam::SnowWallInteraction<CloudType>::setup()
             {
                 check
                 (
+                    m,
                     sww_set_shear_gate_adhesion
                     (
-                        model_, g.lookupOrDefault<scalar>("roughnessFactor", 1.0)
+                        m, g.lookupOrDefault<scalar>("roughnessFactor", 1.0)
                     ),
                     g
                 );
@@ -193,7 +169,8 @@ void Foam::SnowWallInteraction<CloudType>::setup()
             {
                 check
                 (
-                    sww_set_shear_gate_constant(model_, g.get<scalar>("tauCrit")),
+                    m,
+                    sww_set_shear_gate_constant(m, g.get<scalar>("tauCrit")),
                     g
                 );
             }
@@ -206,6 +183,111 @@ void Foam::SnowWallInteraction<CloudType>::setup()
             shearOn_ = true;
             tauName_ = g.lookupOrDefault<word>("field", "wallShearStress");
             rhoAir_ = g.lookupOrDefault<scalar>("rhoAir", -1.0);
+        }
+    }
+}
+
+
+template<class CloudType>
+void Foam::SnowWallInteraction<CloudType>::setup()
+{
+    const dictionary& cd = this->coeffDict();
+    model_ = sww_alloc();
+    if (!model_)
+    {
+        FatalErrorInFunction << "out of memory" << exit(FatalError);
+    }
+
+    if (!cd.isDict("regime"))
+    {
+        FatalIOErrorInFunction(cd)
+            << "snowWallInteraction: missing sub-dictionary 'regime' in "
+            << cd.name() << ": add  #include \"regime.coeffs\"  (written by "
+            << "snowregime map) to snowWallInteractionCoeffs"
+            << exit(FatalIOError);
+    }
+    readRegime(model_, cd.subDict("regime"));
+
+    const word stuck(cd.lookupOrDefault<word>("stuckParcels", "remove"));
+    if (stuck == "remove")
+    {
+        removeStuck_ = true;
+    }
+    else if (stuck == "keep")
+    {
+        removeStuck_ = false;
+    }
+    else
+    {
+        FatalIOErrorInFunction(cd)
+            << "snowWallInteraction: stuckParcels '" << stuck
+            << "' is not remove or keep" << exit(FatalIOError);
+    }
+
+    applyGates(model_, cd);
+
+    // Build-up feedback: a face covered by its own deposit decides with the
+    // snow-covered regime (doc/wallmodel.md)
+    if (cd.isDict("buildUp"))
+    {
+        const dictionary& b = cd.subDict("buildUp");
+        if (b.lookupOrDefault<Switch>("active", true))
+        {
+            if (!b.isDict("regime"))
+            {
+                FatalIOErrorInFunction(b)
+                    << "snowWallInteraction: buildUp: missing sub-dictionary "
+                    << "'regime': add  #include \"regime-snow.coeffs\"  (written "
+                    << "by snowregime map --config regime/configs/ice-on-ice.conf)"
+                    << exit(FatalIOError);
+            }
+            covered_ = sww_alloc();
+            if (!covered_)
+            {
+                FatalErrorInFunction << "out of memory" << exit(FatalError);
+            }
+            readRegime(covered_, b.subDict("regime"));
+            applyGates(covered_, cd);
+            scalar dCover = -1;
+            if (b.readIfPresent("coverMass", coverMass_))
+            {
+                if (!(coverMass_ > 0) || !std::isfinite(coverMass_))
+                {
+                    FatalIOErrorInFunction(b)
+                        << "snowWallInteraction: buildUp: coverMass " << coverMass_
+                        << " must be a mass per area > 0 [kg/m2]" << exit(FatalIOError);
+                }
+            }
+            else if (b.readIfPresent("coverDiameter", dCover))
+            {
+                const scalar rho = this->owner().constProps().rho0();
+                coverMass_ = sww_monolayer_mass(rho, dCover);
+                if (!(coverMass_ > 0) || !std::isfinite(coverMass_))
+                {
+                    FatalIOErrorInFunction(b)
+                        << "snowWallInteraction: buildUp: coverDiameter " << dCover
+                        << " (particle density " << rho << ") gives no covering "
+                        << "mass: give a diameter > 0 [m]" << exit(FatalIOError);
+                }
+            }
+            else
+            {
+                FatalIOErrorInFunction(b)
+                    << "snowWallInteraction: buildUp: give coverDiameter (the mean "
+                    << "particle diameter [m]: one monolayer covers a face) or "
+                    << "coverMass [kg/m2]" << exit(FatalIOError);
+            }
+            char desc[1024];
+            sww_describe(covered_, desc, sizeof desc);
+            Info<< "    snowWallInteraction: build-up on: snow-covered regime "
+                << desc << nl << "    covering mass " << coverMass_ << " kg/m2";
+            if (dCover > 0)
+            {
+                Info<< " (one monolayer of " << dCover
+                    << " m spheres: 0.6046 rho d)";
+            }
+            Info<< "; a face blends bare and covered with w = min(1, deposit/"
+                << "covering mass)" << endl;
         }
     }
 
@@ -400,6 +482,8 @@ Foam::SnowWallInteraction<CloudType>::SnowWallInteraction
     patchData_(cloud.mesh(), this->coeffDict()),
     groupType_(),
     model_(nullptr),
+    covered_(nullptr),
+    coverMass_(-1),
     removeStuck_(true),
     shearOn_(false),
     tauName_("wallShearStress"),
@@ -425,6 +509,8 @@ Foam::SnowWallInteraction<CloudType>::SnowWallInteraction
     patchData_(pim.patchData_),
     groupType_(),
     model_(nullptr),
+    covered_(nullptr),
+    coverMass_(-1),
     removeStuck_(true),
     shearOn_(false),
     tauName_("wallShearStress"),
@@ -474,6 +560,7 @@ template<class CloudType>
 Foam::SnowWallInteraction<CloudType>::~SnowWallInteraction()
 {
     sww_free(model_);
+    sww_free(covered_);
 }
 
 
@@ -580,7 +667,21 @@ bool Foam::SnowWallInteraction<CloudType>::correct
     if (in.u >= 1) in.u = 0;
 
     sww_outcome out;
-    if (sww_decide(model_, &in, &out) != SWW_OK)
+    int rc;
+    if (covered_)
+    {
+        // the face's own deposit decides how far it is covered
+        const scalar w = sww_cover_fraction
+        (
+            deposit().boundaryField()[pp.index()][facei], coverMass_
+        );
+        rc = sww_decide_blend(model_, covered_, w, &in, &out);
+    }
+    else
+    {
+        rc = sww_decide(model_, &in, &out);
+    }
+    if (rc != SWW_OK)
     {
         FatalErrorInFunction
             << "snowWallInteraction: invalid impact on patch " << pp.name()
@@ -658,6 +759,29 @@ void Foam::SnowWallInteraction<CloudType>::info(Ostream& os)
             << " (" << no[s] << " impacts outside the fitted v_n range)" << nl;
     }
     writeSeries(ni, ns, nb, nr, md);
+
+    if (covered_)
+    {
+        // faces bare / blending / covered, from the deposit field
+        const volScalarField& dep = deposit();
+        forAll(snowPatches_, s)
+        {
+            const scalarField& f = dep.boundaryField()[snowPatches_[s]];
+            label nBlend = 0, nCovered = 0;
+            forAll(f, i)
+            {
+                if (f[i] >= coverMass_) ++nCovered;
+                else if (f[i] > 0) ++nBlend;
+            }
+            reduce(nBlend, sumOp<label>());
+            reduce(nCovered, sumOp<label>());
+            const label nFaces =
+                returnReduce(f.size(), sumOp<label>());
+            os  << "    snowWall: patch " << bm[snowPatches_[s]].name()
+                << ": faces covered " << nCovered << ", partly covered "
+                << nBlend << ", of " << nFaces << nl;
+        }
+    }
 
     if (this->writeTime())
     {
