@@ -7,7 +7,8 @@
  * configuration and prints the median time per call in ns: gates off, the
  * constant tangential gate, with the adhesion shear gate, and, when the file
  * has the oblique table (snowregime map --vt 0,...), the regime tangential
- * gate alone. Exit 2 on bad input.
+ * gate alone; and sww_decide_blend with a half-covered face (the file as both
+ * regimes). Exit 2 on bad input.
  */
 #include "sww.h"
 
@@ -116,6 +117,29 @@ int main(int argc, char **argv)
         t = run(m, in, n, reps, f);
         printf("tangential + shear: %6.1f ns/call  (stick %ld bounce %ld ripoff %ld)\n", t, f[0], f[1], f[2]);
     }
+    /* the build-up blend with a face half covered (two decisions per call),
+     * the covered regime a second copy of the file, gates off */
+    sww_model *c = sww_alloc();
+    if (c && sww_regime_load(c, path) == SWW_OK) {
+        sww_set_tangential_off(m);
+        sww_set_shear_off(m);
+        double tb[64];
+        for (int r = 0; r < reps; r++) {
+            long fb[3] = { 0, 0, 0 };
+            const double t0 = now();
+            for (long i = 0; i < n; i++) {
+                sww_outcome o;
+                if (sww_decide_blend(m, c, 0.5, &in[i], &o) == SWW_OK)
+                    fb[o.fate]++;
+            }
+            tb[r] = (now() - t0) / n * 1e9;
+            memcpy(f, fb, sizeof fb);
+        }
+        qsort(tb, reps, sizeof *tb, cmp);
+        printf("build-up blend w 0.5: %6.1f ns/call  (stick %ld bounce %ld ripoff %ld)\n", tb[reps / 2],
+               f[0], f[1], f[2]);
+    }
+    sww_free(c);
     size_t nvt, nvn;
     if (sww_oblique_table(m, &nvt, &nvn)) {
         sww_set_shear_off(m);

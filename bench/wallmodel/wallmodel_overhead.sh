@@ -3,6 +3,7 @@
 # built-in localInteraction on a case with many wall impacts.
 #
 # Usage: bench/wallmodel/wallmodel_overhead.sh [--help] [--runs N] [--parcels N] [--steps N]
+#                                              [--buildup]
 #
 # The case (made in a temp folder): a 0.1 m cube, 4x4x4 cells, walls at y = 0 and
 # y = 0.1; N parcels (default 20000) of 100 um ice fly force-free at 10 m/s normal
@@ -16,15 +17,19 @@
 # overhead ratio. Needs ./Allwmake (platforms/lib/libsnowWallInteraction.so).
 # Then runs sww_bench (build/release/bench/wallmodel, from ./Allwmake): the cost of
 # one sww_decide call and its share of the run time in this case.
+# --buildup: snowWallInteraction with the build-up feedback on (buildUp with the
+# same regime as the covered one, coverMass 1 kg/m2): every impact also reads its
+# face's deposit and the covered fraction (all bounce here, so w stays 0).
 # Exit 2 on bad arguments; 77 when OpenFOAM or the library is missing.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 top=$(cd "$here/../.." && pwd)
-runs=5 parcels=20000 steps=100
-usage() { sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; }
+runs=5 parcels=20000 steps=100 buildup=
+usage() { sed -n '2,23p' "$0" | sed 's/^# \{0,1\}//'; }
 while [ $# -gt 0 ]; do
     case "$1" in
         -h|--help) usage; exit 0 ;;
+        --buildup) buildup='buildUp { #include "regime.coeffs" coverMass 1; }' ;;
         --runs|--parcels|--steps)
             [ $# -ge 2 ] && [[ "$2" =~ ^[1-9][0-9]*$ ]] \
                 || { echo "wallmodel_overhead: $1 needs a positive integer, got '${2:-}'" >&2; exit 2; }
@@ -94,6 +99,7 @@ subModels
     {
         #include "regime.coeffs"
         patches ( "(wall|top)" { type snow; } sides { type escape; } );
+        $buildup
     }
 }
 cloudFunctions {}
@@ -116,7 +122,7 @@ one_run() { # MODEL -> prints "cpu impacts"
 }
 median() { sort -g | awk '{ a[NR] = $1 } END { print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2 }'; }
 
-echo "wallmodel_overhead: $parcels parcels, $steps steps of 1 ms, $runs runs per model"
+echo "wallmodel_overhead: $parcels parcels, $steps steps of 1 ms, $runs runs per model${buildup:+, build-up feedback on}"
 : > "$tmp/local" ; : > "$tmp/snow"
 for i in $(seq "$runs"); do
     read -r tl _ < <(one_run localInteraction)
