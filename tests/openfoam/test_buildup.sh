@@ -98,6 +98,15 @@ read -r a b < <(check_case "$tmp/off" 0 "4 4 0 0")
 rel_ok "$a" "$(awk -v m="$m1" 'BEGIN { printf "%.12g", 3 * m }')" || fail "buildUp off: A $a, expected 3 m1"
 echo "off: ok"
 
+# 1b'. buildUp patches (wall): the same as all snow patches
+prep "$tmp/sel"
+foamDictionary -entry subModels/snowWallInteractionCoeffs/buildUp/patches -add "(wall)" \
+    "$tmp/sel/constant/kinematicCloudProperties" > /dev/null
+(cd "$tmp/sel" && run log.run icoUncoupledKinematicParcelFoam)
+check_case "$tmp/sel" 0 "4 2 2 0" > /dev/null
+grep -q "build-up on the snow patches wall" "$tmp/sel/log.run" || fail "patches: no selection line"
+echo "patch selection: ok"
+
 # 1c. covering mass just above one parcel: face A 99.9 % covered, the blend bounces
 prep "$tmp/partly"
 foamDictionary -entry subModels/snowWallInteractionCoeffs/buildUp/coverDiameter \
@@ -149,5 +158,9 @@ prep "$tmp/badMass"
 foamDictionary -entry subModels/snowWallInteractionCoeffs/buildUp/coverMass -add -1 \
     "$tmp/badMass/constant/kinematicCloudProperties" > /dev/null
 expect_fatal "$tmp/badMass" "buildUp: coverMass -1 must be a mass per area > 0"
+prep "$tmp/badSel"
+foamDictionary -entry subModels/snowWallInteractionCoeffs/buildUp/patches -add "(top)" \
+    "$tmp/badSel/constant/kinematicCloudProperties" > /dev/null
+expect_fatal "$tmp/badSel" "buildUp patches: 'top' matches no snow patch"
 echo "errors: ok"
 echo "PASS"

@@ -332,6 +332,38 @@ void Foam::SnowWallInteraction<CloudType>::setup()
     }
     snowPatches_.transfer(snow);
     const label n = snowPatches_.size();
+
+    // the snow patches with the build-up feedback: buildUp/patches, or all
+    buildUpOn_.setSize(n, covered_ != nullptr);
+    if (covered_ && cd.subDict("buildUp").found("patches"))
+    {
+        const dictionary& b = cd.subDict("buildUp");
+        const wordRes sel(b.get<wordRes>("patches"));
+        forAll(sel, k)
+        {
+            bool hit = false;
+            forAll(snowPatches_, si)
+            {
+                if (sel[k].match(bm[snowPatches_[si]].name())) hit = true;
+            }
+            if (!hit)
+            {
+                FatalIOErrorInFunction(b)
+                    << "snowWallInteraction: buildUp patches: '" << sel[k]
+                    << "' matches no snow patch" << exit(FatalIOError);
+            }
+        }
+        forAll(snowPatches_, si)
+        {
+            buildUpOn_[si] = sel.match(bm[snowPatches_[si]].name());
+        }
+        Info<< "    snowWallInteraction: build-up on the snow patches";
+        forAll(snowPatches_, si)
+        {
+            if (buildUpOn_[si]) Info<< ' ' << bm[snowPatches_[si]].name();
+        }
+        Info<< endl;
+    }
     nImpact_.setSize(n, 0);
     nStick_.setSize(n, 0);
     nBounce_.setSize(n, 0);
@@ -668,7 +700,7 @@ bool Foam::SnowWallInteraction<CloudType>::correct
 
     sww_outcome out;
     int rc;
-    if (covered_)
+    if (covered_ && buildUpOn_[slotOfPatch_[pp.index()]])
     {
         // the face's own deposit decides how far it is covered
         const scalar w = sww_cover_fraction
@@ -766,6 +798,7 @@ void Foam::SnowWallInteraction<CloudType>::info(Ostream& os)
         const volScalarField& dep = deposit();
         forAll(snowPatches_, s)
         {
+            if (!buildUpOn_[s]) continue;
             const scalarField& f = dep.boundaryField()[snowPatches_[s]];
             label nBlend = 0, nCovered = 0;
             forAll(f, i)
