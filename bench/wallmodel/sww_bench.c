@@ -31,7 +31,9 @@ static int cmp(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-static double run(const sww_model *m, const sww_impact *in, long n, int reps, long *fates)
+/* Median ns per call of sww_decide (cov NULL) or sww_decide_blend(m, cov, w). */
+static double run_blend(const sww_model *m, const sww_model *cov, double w, const sww_impact *in,
+                        long n, int reps, long *fates)
 {
     double t[64];
     for (int r = 0; r < reps; r++) {
@@ -39,7 +41,7 @@ static double run(const sww_model *m, const sww_impact *in, long n, int reps, lo
         const double t0 = now();
         for (long i = 0; i < n; i++) {
             sww_outcome o;
-            if (sww_decide(m, &in[i], &o) == SWW_OK)
+            if ((cov ? sww_decide_blend(m, cov, w, &in[i], &o) : sww_decide(m, &in[i], &o)) == SWW_OK)
                 f[o.fate]++;
         }
         t[r] = (now() - t0) / n * 1e9;
@@ -47,6 +49,11 @@ static double run(const sww_model *m, const sww_impact *in, long n, int reps, lo
     }
     qsort(t, reps, sizeof *t, cmp);
     return t[reps / 2];
+}
+
+static double run(const sww_model *m, const sww_impact *in, long n, int reps, long *fates)
+{
+    return run_blend(m, NULL, 0.0, in, n, reps, fates);
 }
 
 int main(int argc, char **argv)
@@ -123,20 +130,8 @@ int main(int argc, char **argv)
     if (c && sww_regime_load(c, path) == SWW_OK) {
         sww_set_tangential_off(m);
         sww_set_shear_off(m);
-        double tb[64];
-        for (int r = 0; r < reps; r++) {
-            long fb[3] = { 0, 0, 0 };
-            const double t0 = now();
-            for (long i = 0; i < n; i++) {
-                sww_outcome o;
-                if (sww_decide_blend(m, c, 0.5, &in[i], &o) == SWW_OK)
-                    fb[o.fate]++;
-            }
-            tb[r] = (now() - t0) / n * 1e9;
-            memcpy(f, fb, sizeof fb);
-        }
-        qsort(tb, reps, sizeof *tb, cmp);
-        printf("build-up blend w 0.5: %6.1f ns/call  (stick %ld bounce %ld ripoff %ld)\n", tb[reps / 2],
+        const double tb = run_blend(m, c, 0.5, in, n, reps, f);
+        printf("build-up blend w 0.5: %6.1f ns/call  (stick %ld bounce %ld ripoff %ld)\n", tb,
                f[0], f[1], f[2]);
     }
     sww_free(c);

@@ -239,24 +239,32 @@ int sww_regime_word(sww_model *m, const char *key, const char *w)
 
 /* ---------------------------------------------------------------- the fit */
 
+/* The cell [lo, lo + 1] of the increasing X[lo..hi] that holds x (bisection;
+ * x at or beyond the ends gives the end cell). Returns lo. */
+static size_t cell_of(const double *X, size_t lo, size_t hi, double x)
+{
+    while (hi - lo > 1) {
+        const size_t mid = (lo + hi) / 2;
+        if (X[mid] <= x)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
 /* d_crit inside the range (no range handling). */
 static double fit_eval(const sww_model *m, double vn)
 {
     if (m->representation == 2) {
         const double x = log(vn);
         const double *X = m->tab_lnv, *Y = m->tab_lnd;
-        size_t lo = 0, hi = m->ntab - 1;
+        const size_t last = m->ntab - 1;
         if (x <= X[0])
             return exp(Y[0]);
-        if (x >= X[hi])
-            return exp(Y[hi]);
-        while (hi - lo > 1) {
-            const size_t mid = (lo + hi) / 2;
-            if (X[mid] <= x)
-                lo = mid;
-            else
-                hi = mid;
-        }
+        if (x >= X[last])
+            return exp(Y[last]);
+        const size_t lo = cell_of(X, 0, last, x), hi = lo + 1;
         const double t = (x - X[lo]) / (X[hi] - X[lo]);
         return exp(Y[lo] + t * (Y[hi] - Y[lo]));
     }
@@ -486,20 +494,15 @@ static double oblique_lndt(const sww_model *m, double vn, double vt)
         x = X[0];
     if (x > X[N - 1])
         x = X[N - 1];
-    size_t j = 0, jh = N - 1;
+    size_t j;
     if (m->ob_dx_inv > 0.0) {
         /* uniform in ln v_n (as snowregime writes it): the cell directly */
         const double f = (x - X[0]) * m->ob_dx_inv;
         j = f < (double)(N - 2) ? (size_t)f : N - 2;
-        jh = j + 1;
+    } else {
+        j = cell_of(X, 0, N - 1, x);
     }
-    while (jh - j > 1) {
-        const size_t mid = (j + jh) / 2;
-        if (X[mid] <= x)
-            j = mid;
-        else
-            jh = mid;
-    }
+    const size_t jh = j + 1;
     const double tx = (x - X[j]) / (X[jh] - X[j]);
     const double *S = m->ob_s, *D = m->ob_lnt;   /* S[i] = ln vt_i, rows 1..K-1 */
     const double y = log(vt);
@@ -513,15 +516,8 @@ static double oblique_lndt(const sww_model *m, double vn, double vt)
         i = K - 2;
         ih = K - 1;
     } else {
-        i = 1;
-        ih = K - 1;
-        while (ih - i > 1) {
-            const size_t mid = (i + ih) / 2;
-            if (S[mid] <= y)
-                i = mid;
-            else
-                ih = mid;
-        }
+        i = cell_of(S, 1, K - 1, y);
+        ih = i + 1;
     }
     const double a0 = D[i * N + j] + tx * (D[i * N + jh] - D[i * N + j]);
     if (ih == i)
