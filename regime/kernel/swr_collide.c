@@ -140,13 +140,12 @@ static double plastic_closed_form(swr_plastic *pl, double E0, double dstar, doub
                                   double *t_sep)
 {
     swr_plastic_unload(pl, dstar);
-    const swr_normal *el = &pl->el;
-    const double xj = el->gamma > 0.0 ? el->xj : 0.0;
+    const swr_normal *el = &pl->el;   /* its jump-in x_j is 0 for Hertz */
     double t;
     if (dstar < pl->dy) {
-        t = travel_time(el, E0, xj, pl->xstar);
+        t = travel_time(el, E0, el->xj, pl->xstar);
     } else {
-        t = pl->Wy > 0.0 ? travel_time(el, E0, xj, pl->xy) : 0.0;
+        t = pl->Wy > 0.0 ? travel_time(el, E0, el->xj, pl->xy) : 0.0;
         const double w = sqrt(pl->k), z0 = pl->Fy / pl->k;
         const double u2 = 2.0 * (E0 - pl->Wy);
         const double amp = sqrt(z0 * z0 + (u2 > 0.0 ? u2 : 0.0) / pl->k);
@@ -429,10 +428,8 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
                 e_dec = em < E0 ? em : E0;
                 /* the elastic remainder is slower than the damped loading:
                  * back to the undamped step */
-                if (!plastic) {
-                    h = 1.0 / p->accuracy;
-                    h2 = 0.5 * h;
-                }
+                h = 1.0 / p->accuracy;
+                h2 = 0.5 * h;
             }
         }
         if (plastic) {

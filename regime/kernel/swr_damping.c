@@ -167,16 +167,24 @@ double swr_damping_e_min(void)
     return exp(-tab_y[NTAB - 1]);
 }
 
+/* alpha for e from a table of alpha over y = -ln e (n points, built): e >= 1
+ * gives 0, an e below the table its largest alpha. */
+static double table_alpha(const gsl_interp *in, const double *ty, const double *ta, int n,
+                          double e)
+{
+    const double y = -log(e);
+    if (y >= ty[n - 1])
+        return ta[n - 1];
+    return gsl_interp_eval(in, ty, ta, y, NULL);
+}
+
 double swr_damping_alpha(double e)
 {
     if (!(e < 1.0))
         return 0.0;
     if (swr_damping_init() != 0)
         return NAN;
-    double y = -log(e);
-    if (y >= tab_y[NTAB - 1])
-        return tab_alpha[NTAB - 1];
-    return gsl_interp_eval(tab_interp, tab_y, tab_alpha, y, NULL);
+    return table_alpha(tab_interp, tab_y, tab_alpha, NTAB, e);
 }
 
 double swr_damping_time_factor(double alpha)
@@ -228,10 +236,7 @@ double swr_damping_alpha_both(double e)
     pthread_once(&tabb_once, build_table_both);
     if (tabb_n == 0)
         return NAN;
-    const double y = -log(e);
-    if (y >= tabb_y[tabb_n - 1])
-        return tabb_alpha[tabb_n - 1];
-    return gsl_interp_eval(tabb_interp, tabb_y, tabb_alpha, y, NULL);
+    return table_alpha(tabb_interp, tabb_y, tabb_alpha, tabb_n, e);
 }
 
 double swr_damping_e_min_both(void)

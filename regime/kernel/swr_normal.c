@@ -3,6 +3,7 @@
 
 #include "swp_contact.h"
 #include "swp_jkr.h"
+#include "swp_root.h"
 
 void swr_normal_init(swr_normal *n, double R, double Es, double gamma)
 {
@@ -39,26 +40,27 @@ double swr_normal_x_closed(const swr_normal *n, double delta)
     return sqrt(swp_jkr_radius(delta, n->gamma, n->Es, n->R));
 }
 
+typedef struct {
+    const swr_normal *n;
+    double E;
+} turning_ctx;
+
+/* U(x) - E and its derivative F(x) delta'(x) */
+static double turning_f(double x, void *ctx, double *dfdx)
+{
+    const turning_ctx *c = ctx;
+    const swr_normal *n = c->n;
+    if (dfdx) {
+        const double x2 = x * x;
+        *dfdx = swr_normal_force(n, x) * (4.0 * x2 * x / n->R - n->C);
+    }
+    return swr_normal_energy(n, x) - c->E;
+}
+
 double swr_normal_turning_x(const swr_normal *n, double E, double x_start)
 {
-    double lo = n->a0 > 0.0 ? sqrt(n->a0) : 0.0, hi = x_start > lo ? x_start : 2.0 * lo + 1.0;
-    for (int i = 0; i < 200 && swr_normal_energy(n, hi) < E; i++)
-        hi *= 2.0;
-    double x = hi;
-    for (int i = 0; i < 100; i++) {
-        const double f = swr_normal_energy(n, x) - E;
-        if (f > 0.0)
-            hi = x;
-        else
-            lo = x;
-        const double x2 = x * x;
-        const double slope = swr_normal_force(n, x) * (4.0 * x2 * x / n->R - n->C);
-        double xn = slope > 0.0 ? x - f / slope : 0.5 * (lo + hi);
-        if (!(xn > lo && xn < hi))
-            xn = 0.5 * (lo + hi);
-        if (fabs(xn - x) <= 1e-14 * x)
-            return xn;
-        x = xn;
-    }
-    return x;
+    const double lo = n->a0 > 0.0 ? sqrt(n->a0) : 0.0;
+    const turning_ctx c = { n, E };
+    return swp_root_increasing(turning_f, (void *)&c, lo, x_start > lo ? x_start : 2.0 * lo + 1.0,
+                               200, 1e-14, 100);
 }

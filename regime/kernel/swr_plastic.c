@@ -13,7 +13,7 @@ void swr_plastic_init(swr_plastic *s, double R, double Es, double gamma, double 
     s->py = py;
     s->k = swp_plastic_stiffness(py, R);
     const double ay = swp_plastic_yield_radius(py, s->el.gamma, Es, R);
-    const double aj = s->el.gamma > 0.0 ? s->el.xj * s->el.xj : 0.0;
+    const double aj = s->el.xj * s->el.xj;   /* 0 for Hertz */
     /* the loading curve starts at the jump-in: yield from the first touch
      * when a_y is below it */
     const double a = ay > aj ? ay : aj;

@@ -4,9 +4,25 @@
 
 #include <math.h>
 
+#include "swp_root.h"
+
 double swp_plastic_centre_pressure(double a, double Gamma, double Estar, double Rstar)
 {
     return 2.0 * Estar * a / (M_PI * Rstar) - sqrt(2.0 * Gamma * Estar / (M_PI * a));
+}
+
+typedef struct {
+    double p_y, Gamma, Estar, Rstar;
+} yield_ctx;
+
+/* centre pressure - p_y and its derivative in a */
+static double yield_f(double a, void *ctx, double *dfdx)
+{
+    const yield_ctx *c = ctx;
+    if (dfdx)
+        *dfdx = 2.0 * c->Estar / (M_PI * c->Rstar)
+              + 0.5 * sqrt(2.0 * c->Gamma * c->Estar / M_PI) * pow(a, -1.5);
+    return swp_plastic_centre_pressure(a, c->Gamma, c->Estar, c->Rstar) - c->p_y;
 }
 
 double swp_plastic_yield_radius(double p_y, double Gamma, double Estar, double Rstar)
@@ -16,27 +32,9 @@ double swp_plastic_yield_radius(double p_y, double Gamma, double Estar, double R
     const double aH = M_PI * Rstar * p_y / (2.0 * Estar);
     if (Gamma == 0.0)
         return aH;
-    /* f(a) = p(0) - p_y is increasing; f(aH) < 0. Bracket [aH, hi]. */
-    double lo = aH, hi = 2.0 * aH;
-    for (int i = 0; i < 2000 && swp_plastic_centre_pressure(hi, Gamma, Estar, Rstar) < p_y; i++)
-        hi *= 2.0;
-    double a = hi;
-    for (int i = 0; i < 200; i++) {
-        const double f = swp_plastic_centre_pressure(a, Gamma, Estar, Rstar) - p_y;
-        if (f > 0.0)
-            hi = a;
-        else
-            lo = a;
-        const double fp = 2.0 * Estar / (M_PI * Rstar)
-                        + 0.5 * sqrt(2.0 * Gamma * Estar / M_PI) * pow(a, -1.5);
-        double an = a - f / fp;
-        if (!(an > lo && an < hi))
-            an = 0.5 * (lo + hi);
-        if (fabs(an - a) <= 1e-14 * a)
-            return an;
-        a = an;
-    }
-    return a;
+    /* f(a) = p(0) - p_y is increasing; f(aH) < 0 */
+    const yield_ctx c = { p_y, Gamma, Estar, Rstar };
+    return swp_root_increasing(yield_f, (void *)&c, aH, 2.0 * aH, 2000, 1e-14, 200);
 }
 
 double swp_plastic_unload_radius(double a_star, double F_star, double Gamma, double Estar)

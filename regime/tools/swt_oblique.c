@@ -10,8 +10,8 @@
 
 typedef struct {
     const swr_model *m;
-    double vn, vt;
-    swt_vcrit_opts o;
+    double vn;
+    swt_vcrit_opts o;    /* o.vt: the tangential speed */
 } dc_ctx;
 
 static int sticks_at_d(void *ctx, double d, swt_vcrit_result *r)
@@ -23,7 +23,7 @@ static int sticks_at_d(void *ctx, double d, swt_vcrit_result *r)
 swt_vcrit_status swt_dcrit(const swr_model *m, double vn, double vt, const swt_vcrit_opts *o,
                            double dlo, double dhi, swt_vcrit_result *r)
 {
-    dc_ctx c = { m, vn, vt, *o };
+    dc_ctx c = { m, vn, *o };
     c.o.vt = vt;
     c.o.tan_angle = 0.0;
     swt_vcrit_opts so = *o;

@@ -136,8 +136,8 @@ static int set_table_part(sww_model *m, const char *key, const double *v, size_t
     return SWW_OK;
 }
 
-/* The oblique table's lists (checked together at commit). obliqueVt and
- * obliqueVn are kept as given (ln of vn), obliqueDCrit as ln d. */
+/* The oblique table's lists (checked together at commit): obliqueVt kept as
+ * given, obliqueVn and obliqueDCrit as their logarithms. */
 static int set_oblique_part(sww_model *m, const char *key, const double *v, size_t n)
 {
     const int which = !strcmp(key, "obliqueVt") ? 0 : !strcmp(key, "obliqueVn") ? 1 : 2;
@@ -291,7 +291,7 @@ double sww_dcrit(const sww_model *m, double vn)
 
 /* The oblique table at commit: all three keys or none; sizes; d_crit
  * non-increasing with v_t in every column (2e-3 relative: the kernel's
- * bisection tolerance); the v_t axis coordinate s. */
+ * bisection tolerance); ln v_t of the nodes; the tangential limit D_t. */
 static int oblique_commit(sww_model *m, const char *o)
 {
     m->ob_ready = 0;
