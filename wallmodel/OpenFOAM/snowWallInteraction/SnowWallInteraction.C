@@ -689,6 +689,7 @@ bool Foam::SnowWallInteraction<CloudType>::correct
     const scalar Un = Urel & nw;            // > 0: towards the wall
     const vector Ut = Urel - Un*nw;
     const label facei = pp.whichFace(p.face());
+    const label s = slotOfPatch_[pp.index()];
 
     sww_impact in;
     in.d = p.d();
@@ -700,7 +701,7 @@ bool Foam::SnowWallInteraction<CloudType>::correct
 
     sww_outcome out;
     int rc;
-    if (covered_ && buildUpOn_[slotOfPatch_[pp.index()]])
+    if (covered_ && buildUpOn_[s])
     {
         // the face's own deposit decides how far it is covered
         const scalar w = sww_cover_fraction
@@ -721,7 +722,6 @@ bool Foam::SnowWallInteraction<CloudType>::correct
             << " tau_w " << in.tau_w << exit(FatalError);
     }
 
-    const label s = slotOfPatch_[pp.index()];
     ++nImpact_[s];
     if (out.range != 0) ++nOutside_[s];
 
