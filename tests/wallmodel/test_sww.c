@@ -16,6 +16,7 @@
 #include "swp_cor.h"
 #include "swp_detach.h"
 
+#define SWW_TEST_MAX 4096   /* SWW_MAX_TABLE: values per list */
 #define ASSERT_REL(x, ref, tol) assert_true(fabs((x) - (ref)) <= (tol) * fabs(ref))
 
 static const char *const FIXTURE = SWW_FIXTURES "/regime.coeffs";
@@ -444,6 +445,233 @@ static void oblique_gate(void **s)
     sww_free(m);
 }
 
+/* ------------------------------------------------------------- rough wall */
+
+/* A stick-probability table (issue 9) on the fixture's interface: diameters
+ * 5, 20, 80 um, speeds 0.5, 1, 4 m/s; p rows by diameter. */
+static const double PD[] = { 5e-6, 2e-5, 8e-5 }, PV[] = { 0.5, 1.0, 4.0 };
+static const double PP[] = { 0.95, 0.90, 0.60,    /* d 5 um  */
+                             0.80, 0.55, 0.20,    /* d 20 um */
+                             0.40, 0.10, 0.00 };  /* d 80 um */
+
+static const char *PTABLE =
+    "    probabilityD      (5e-6 2e-5 8e-5);\n"
+    "    probabilityVn     (0.5 1 4);\n"
+    "    probabilityStick  (0.95 0.90 0.60 0.80 0.55 0.20 0.40 0.10 0.00);\n"
+    "    probabilityPoints 64;\n";
+
+/* the fixture file with the table inside regime { } */
+static sww_model *load_rough(void)
+{
+    FILE *f = fopen(FIXTURE, "r");
+    assert_non_null(f);
+    static char text[8192];
+    const size_t n = fread(text, 1, sizeof text - 1, f);
+    fclose(f);
+    text[n] = '\0';
+    char *close = strrchr(text, '}');
+    assert_non_null(close);
+    char out[10000];
+    snprintf(out, sizeof out, "%.*s%s}\n", (int)(close - text), text, PTABLE);
+    char path[256];
+    snprintf(path, sizeof path, "%s/rough.coeffs", tmpdir);
+    f = fopen(path, "w");
+    assert_non_null(f);
+    fputs(out, f);
+    fclose(f);
+    sww_model *m = sww_alloc();
+    const int rc = sww_regime_load(m, path);
+    if (rc)
+        fprintf(stderr, "%s\n", sww_errmsg(m));
+    assert_int_equal(rc, SWW_OK);
+    return m;
+}
+
+/* bilinear in (ln d, ln v_n), written out independently: weights of the four
+ * corners of the cell (i, j) */
+static double p_expected(double d, double v)
+{
+    size_t i = 0, j = 0;
+    while (i < 1 && d > PD[i + 1])
+        i++;
+    while (j < 1 && v > PV[j + 1])
+        j++;
+    const double a = log(d / PD[i]) / log(PD[i + 1] / PD[i]);
+    const double b = log(v / PV[j]) / log(PV[j + 1] / PV[j]);
+    return PP[i * 3 + j] * (1 - a) * (1 - b) + PP[i * 3 + j + 1] * (1 - a) * b
+         + PP[(i + 1) * 3 + j] * a * (1 - b) + PP[(i + 1) * 3 + j + 1] * a * b;
+}
+
+static void probability_table(void **s)
+{
+    (void)s;
+    sww_model *m = load_rough(), *sharp = load_fixture();
+    size_t nd = 9, nv = 9;
+    assert_true(sww_probability_table(m, &nd, &nv) && nd == 3 && nv == 3);
+    assert_false(sww_probability_table(sharp, &nd, &nv));
+    assert_true(nd == 0 && nv == 0);
+    assert_false(sww_probability_table(sharp, NULL, NULL));
+    /* the interface is unchanged: d_crit is the p = 0.5 contour's fit */
+    for (double v = 0.01; v < 100.0; v *= 1.9)
+        assert_true(sww_dcrit(m, v) == sww_dcrit(sharp, v));
+    /* exactly the table at the nodes (corners and edges included) */
+    for (size_t i = 0; i < 3; i++)
+        for (size_t j = 0; j < 3; j++) {
+            const sww_outcome o = decide(m, PD[i], PV[j], 0.0, 0.0, 0.0);
+            assert_true(o.p_stick == PP[i * 3 + j]);
+            assert_int_equal(o.fate, PP[i * 3 + j] > 0.0 ? SWW_STICK : SWW_BOUNCE);
+        }
+    /* bilinear in (ln d, ln v_n) in between */
+    srand48(11);
+    double pmin = 1.0, pmax = 0.0;
+    for (int k = 0; k < 2000; k++) {
+        const double d = PD[0] * pow(PD[2] / PD[0], drand48());
+        const double v = PV[0] * pow(PV[2] / PV[0], drand48());
+        const double p = decide(m, d, v, 0.0, 0.0, 0.5).p_stick;
+        assert_true(fabs(p - p_expected(d, v)) <= 1e-12);
+        pmin = fmin(pmin, p);
+        pmax = fmax(pmax, p);
+    }
+    assert_true(pmin < 0.1 && pmax > 0.9);
+    /* the centre of a cell: the mean of its corners */
+    assert_true(fabs(decide(m, sqrt(PD[0] * PD[1]), sqrt(PV[1] * PV[2]), 0, 0, 0.5).p_stick
+                     - 0.25 * (0.90 + 0.60 + 0.55 + 0.20)) <= 1e-12);
+    /* outside the span: the interface's sharp decision (d_crit(1 m/s) = 30 um) */
+    const double outside[][2] = { { 4.9e-6, 1.0 }, { 1e-6, 3.0 }, { 8.1e-5, 1.0 }, { 2e-4, 0.6 },
+                                  { 2e-5, 0.49 }, { 2e-5, 0.1 }, { 2e-5, 4.01 }, { 2e-5, 30.0 },
+                                  { 1e-3, 0.0 }, { 1e-7, 50.0 }, { 1e-3, 1e-3 } };
+    for (size_t k = 0; k < sizeof outside / sizeof *outside; k++) {
+        const double d = outside[k][0], v = outside[k][1];
+        const sww_outcome o = decide(m, d, v, 0.0, 0.0, 0.5), r = decide(sharp, d, v, 0.0, 0.0, 0.5);
+        assert_true(o.p_stick == (d <= sww_dcrit(sharp, v) ? 1.0 : 0.0));
+        assert_true(same_outcome(&o, &r));
+    }
+    /* the random number decides: u < p sticks, u >= p bounces by the criterion */
+    const double d = 1.3e-5, v = 2.2, p = p_expected(d, v);
+    assert_true(p > 0.3 && p < 0.7);
+    assert_int_equal(decide(m, d, v, 0, 0, nextafter(p, 0.0)).fate, SWW_STICK);
+    sww_outcome o = decide(m, d, v, 0, 0, p);
+    assert_int_equal(o.fate, SWW_BOUNCE);
+    assert_int_equal(o.reason, SWW_BY_CRITERION);
+    ASSERT_REL(o.e_n, swp_cor_thornton(VY / v), 1e-14);
+    assert_true(o.e_t == 1.0);
+    /* the stick fraction over 20000 uniform u is p within 4 binomial sigma */
+    const int n = 20000;
+    long sticks = 0;
+    srand48(2026);
+    for (int k = 0; k < n; k++)
+        sticks += decide(m, d, v, 0, 0, drand48()).fate == SWW_STICK;
+    const double sigma = sqrt(n * p * (1 - p));
+    if (fabs(sticks - n * p) > 4 * sigma)
+        fail_msg("%ld sticks of %d, expected %.1f +- 4 x %.1f", sticks, n, n * p, sigma);
+    /* the gates still act on a stick candidate of the table: d = 20 um at
+     * v_n 4 m/s sticks with p 0.2 although d > d_crit(4) = 4.2 um */
+    assert_true(sww_dcrit(m, 4.0) < 2e-5);
+    assert_int_equal(decide(m, 2e-5, 4.0, 0.3, 0, 0.1).fate, SWW_STICK);
+    assert_int_equal(sww_set_tangential_gate(m, 0.2, 5e-5, 0.0), SWW_OK);
+    o = decide(m, 2e-5, 4.0, 0.3, 0, 0.1);
+    assert_int_equal(o.fate, SWW_BOUNCE);
+    assert_int_equal(o.reason, SWW_BY_TANGENTIAL);
+    assert_true(o.p_stick == 0.2);
+    sww_set_tangential_off(m);
+    assert_int_equal(sww_set_shear_gate_constant(m, 1.0), SWW_OK);
+    assert_int_equal(decide(m, 2e-5, 4.0, 0.0, 1.0, 0.1).fate, SWW_RIPOFF);
+    assert_int_equal(decide(m, 2e-5, 4.0, 0.0, 1.0, 0.3).fate, SWW_BOUNCE);
+    sww_set_shear_off(m);
+    /* the log line says so; a map without the table says nothing new */
+    char buf[800];
+    sww_describe(m, buf, sizeof buf);
+    assert_non_null(strstr(buf, "stick probability table 3 x 3 (d 5e-06..8e-05 m, v_n 0.5..4 m/s"));
+    sww_describe(sharp, buf, sizeof buf);
+    assert_null(strstr(buf, "probability"));
+    /* from code: the same model as the file */
+    sww_model *c = load_fixture();
+    assert_int_equal(sww_regime_list(c, "probabilityD", PD, 3), SWW_OK);
+    assert_int_equal(sww_regime_list(c, "probabilityVn", PV, 3), SWW_OK);
+    assert_int_equal(sww_regime_list(c, "probabilityStick", PP, 9), SWW_OK);
+    assert_false(sww_probability_table(c, NULL, NULL));  /* not before the commit */
+    assert_int_equal(sww_regime_commit(c, "code"), SWW_OK);
+    for (int k = 0; k < 2000; k++) {
+        const double dd = exp(log(1e-6) + log(200.0) * drand48()), vv = exp(-3.0 + 6.0 * drand48());
+        const double u = drand48();
+        const sww_outcome a = decide(c, dd, vv, 0, 0, u), b = decide(m, dd, vv, 0, 0, u);
+        assert_true(same_outcome(&a, &b));
+    }
+    /* a new regime without the table: back to the sharp map */
+    sww_regime_clear(c);
+    assert_int_equal(sww_regime_load(c, FIXTURE), SWW_OK);
+    assert_false(sww_probability_table(c, NULL, NULL));
+    assert_true(decide(c, 2e-5, 4.0, 0, 0, 0.1).fate == SWW_BOUNCE);
+    sww_free(c);
+    sww_free(m);
+    sww_free(sharp);
+}
+
+/* The blend with probabilities: the bare wall is rough (table), the covered
+ * regime the sharp fixture; p = (1 - w) p_bare + w p_covered. */
+static void blend_probabilities(void **s)
+{
+    (void)s;
+    sww_model *bare = load_rough(), *cov = load_fixture();
+    assert_int_equal(sww_regime_number(cov, "reboundNormal", 0.3), SWW_OK);
+    assert_int_equal(sww_regime_commit(cov, "covered"), SWW_OK);
+    const double d = 1.3e-5, v = 2.2, pb = decide(bare, d, v, 0, 0, 0).p_stick;
+    assert_true(fabs(pb - p_expected(d, v)) <= 1e-12 && pb > 0.3 && pb < 0.7);
+    assert_true(d > sww_dcrit(cov, v));   /* the covered wall bounces it: p_covered 0 */
+    sww_impact in = { .d = d, .vn = v, .u = 0.0 };
+    sww_outcome o;
+    for (double w = 0.0; w <= 1.0; w += 0.125) {
+        const double p = (1.0 - w) * pb;
+        long n = 0, want = 0;
+        for (int k = 0; k < 1000; k++) {
+            in.u = (k + 0.5) / 1000.0;
+            assert_int_equal(sww_decide_blend(bare, cov, w, &in, &o), SWW_OK);
+            assert_true(fabs(o.p_stick - p) <= 1e-15);
+            n += o.fate == SWW_STICK;
+            want += in.u < p;
+            if (o.fate != SWW_STICK && w > 0.0)
+                ASSERT_REL(o.e_n, 0.3, 1e-15);    /* the covered regime's bounce */
+        }
+        assert_int_equal(n, want);
+    }
+    /* both regimes between 0 and 1: the covered one a second rough wall with a
+     * constant rebound; a particle that does not stick bounces by the
+     * criterion with the rebound of the regime less likely to stick */
+    sww_model *cov2 = load_rough();
+    assert_int_equal(sww_regime_number(cov2, "reboundNormal", 0.3), SWW_OK);
+    const double Pc[] = { 1, 1, 1, 1, 1, 1, 1, 1, 1 };
+    assert_int_equal(sww_regime_list(cov2, "probabilityStick", Pc, 9), SWW_OK);
+    assert_int_equal(sww_regime_commit(cov2, "covered 2"), SWW_OK);
+    const double w = 0.25, p = (1.0 - w) * pb + w * 1.0;
+    in.u = nextafter(p, 0.0);
+    assert_int_equal(sww_decide_blend(bare, cov2, w, &in, &o), SWW_OK);
+    assert_int_equal(o.fate, SWW_STICK);
+    assert_true(fabs(o.p_stick - p) <= 1e-15);
+    in.u = p;
+    assert_int_equal(sww_decide_blend(bare, cov2, w, &in, &o), SWW_OK);
+    assert_int_equal(o.fate, SWW_BOUNCE);
+    assert_int_equal(o.reason, SWW_BY_CRITERION);
+    ASSERT_REL(o.e_n, swp_cor_thornton(VY / v), 1e-14);  /* the bare, rough wall's */
+    /* swapped: the bare wall sticks surely, the covered one with pb */
+    assert_int_equal(sww_decide_blend(cov2, bare, 0.75, &in, &o), SWW_OK);
+    assert_int_equal(o.fate, SWW_BOUNCE);
+    ASSERT_REL(o.e_n, swp_cor_thornton(VY / v), 1e-14);
+    /* a gate that stops the covered regime's stick gives it p = 0 */
+    assert_int_equal(sww_set_tangential_gate(cov2, 0.1, 5e-5, 0.0), SWW_OK);
+    in.vt = 0.5;
+    in.u = 0.0;
+    assert_int_equal(sww_decide_blend(bare, cov2, w, &in, &o), SWW_OK);
+    assert_true(fabs(o.p_stick - 0.75 * pb) <= 1e-15);
+    in.u = 0.75 * pb;
+    assert_int_equal(sww_decide_blend(bare, cov2, w, &in, &o), SWW_OK);
+    assert_int_equal(o.fate, SWW_BOUNCE);
+    assert_int_equal(o.reason, SWW_BY_TANGENTIAL);        /* the covered regime's gate */
+    ASSERT_REL(o.e_n, 0.3, 1e-15);
+    sww_free(cov2);
+    sww_free(bare);
+    sww_free(cov);
+}
+
 static void detach_physics(void **s)
 {
     (void)s;
@@ -591,10 +819,17 @@ static void *worker(void *arg)
     return NULL;
 }
 
+static void threads_agree(sww_model *m);
+
 static void thread_safe(void **s)
 {
     (void)s;
-    sww_model *m = load_fixture();
+    threads_agree(load_fixture());
+    threads_agree(load_rough());
+}
+
+static void threads_agree(sww_model *m)
+{
     assert_int_equal(sww_set_tangential_gate(m, 2.0, 5e-5, -0.3), SWW_OK);
     assert_int_equal(sww_set_shear_gate_adhesion(m, 0.01), SWW_OK);
     int counts[3] = { 0, 0, 0 };
@@ -723,6 +958,48 @@ static void loader_errors(void **s)
         { NULL, "regime { representation polynomial; basis linear; coeffs (1e-5 -1e-5); "
                 "vnMin 0.2; vnMax 6; slopeLow -1; slopeHigh -1; }", SWW_EINVAL, "key 'coeffs'",
                 "not a finite positive diameter" },
+        /* the stick-probability table (rough wall) */
+        { "vnMax", "vnMax 6.0; probabilityVn (0.1 10); probabilityStick (0.3 0.3 0.3 0.3);",
+          SWW_EMISSING, "missing 'probabilityD'", NULL },
+        { "vnMax", "vnMax 6.0; probabilityD (1e-6 1e-4); probabilityStick (0.3 0.3 0.3 0.3);",
+          SWW_EMISSING, "missing 'probabilityVn'", NULL },
+        { "vnMax", "vnMax 6.0; probabilityD (1e-6 1e-4); probabilityVn (0.1 10);",
+          SWW_EMISSING, "missing 'probabilityStick'", NULL },
+        { "vnMax", "vnMax 6.0; probabilityD (1e-6 1e-4); probabilityVn (0.1 1 10); "
+          "probabilityStick (0.3 0.3 0.3 0.3 0.3);", SWW_EINVAL, "key 'probabilityStick'",
+          "5 values, but probabilityD x probabilityVn = 2 x 3 = 6" },
+        { "vnMax", "vnMax 6.0; probabilityD (1e-6 1e-4); probabilityVn (0.1 10); "
+          "probabilityStick (0.3 1.5 0.3 0.3);", SWW_EINVAL, "key 'probabilityStick'",
+          "value 1.5 (entry 1) is not a probability in [0, 1]" },
+        { "vnMax", "vnMax 6.0; probabilityD (1e-6 1e-4); probabilityVn (0.1 10); "
+          "probabilityStick (0.3 0.3 -0.01 0.3);", SWW_EINVAL, "key 'probabilityStick'",
+          "value -0.01 (entry 2)" },
+        { "vnMax", "vnMax 6.0; probabilityD (1e-6 1e-4); probabilityVn (0.1 10); "
+          "probabilityStick (0.3 0.3 0.3 nan);", SWW_EINVAL, "key 'probabilityStick'",
+          "value nan (entry 3) is not a finite number" },
+        { "vnMax", "vnMax 6.0; probabilityD (1e-6 1e-4 1e-4); probabilityVn (0.1 10); "
+          "probabilityStick (0.3 0.3 0.3 0.3 0.3 0.3);", SWW_EINVAL, "key 'probabilityD'",
+          "value 0.0001 (entry 2) is not larger than 0.0001" },
+        { "vnMax", "vnMax 6.0; probabilityD (1e-6 1e-4); probabilityVn (10 0.1); "
+          "probabilityStick (0.3 0.3 0.3 0.3);", SWW_EINVAL, "key 'probabilityVn'",
+          "value 0.1 (entry 1) is not larger than 10" },
+        { "vnMax", "vnMax 6.0; probabilityD (0 1e-4); probabilityVn (0.1 10); "
+          "probabilityStick (0.3 0.3 0.3 0.3);", SWW_EINVAL, "key 'probabilityD'",
+          "value 0 (entry 0) must be > 0" },
+        { "vnMax", "vnMax 6.0; probabilityD (1e-6 1e-4); probabilityVn (0.1 inf); "
+          "probabilityStick (0.3 0.3 0.3 0.3);", SWW_EINVAL, "key 'probabilityVn'",
+          "value inf (entry 1) is not a finite number" },
+        { "vnMax", "vnMax 6.0; probabilityD (1e-6 1e-4); probabilityVn (0.1); "
+          "probabilityStick (0.3 0.3);", SWW_EINVAL, "key 'probabilityVn'", "1 values, expected 2" },
+        { "vnMax", "vnMax 6.0; probabilityD (1e-6 1e-4); probabilityVn (0.1 10); "
+          "probabilityStick 0.3;", SWW_EINVAL, "key 'probabilityStick'", "expects a list" },
+        { "vnMax", "vnMax 6.0; probabilityD (1e-6 1e-4); probabilityVn (0.1 10); "
+          "probabilityStick (0.3 0.3 0.3 0.3); probabilityPoints 0;", SWW_EINVAL,
+          "key 'probabilityPoints'", "value 0 is not a whole number >= 1" },
+        { "vnMax", "vnMax 6.0; probabilityPoints 2.5;", SWW_EINVAL, "key 'probabilityPoints'",
+          "value 2.5" },
+        { "vnMax", "vnMax 6.0; probabilityPoints (64);", SWW_EINVAL, "key 'probabilityPoints'",
+          "expects one number" },
     };
     char path[256];
     for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
@@ -736,8 +1013,26 @@ static void loader_errors(void **s)
         assert_false(sww_ready(m));
         sww_free(m);
     }
-    /* the good text loads, with a line number in a later parse error */
+    /* a table of more than 4096 values per list: the file and from code */
+    static char big[60000];
+    static double many[SWW_TEST_MAX + 1];
+    size_t len = (size_t)snprintf(big, sizeof big, "regime { representation polynomial; coeffs "
+                                  "(-10 -1); vnMin 0.2; vnMax 6; slopeLow -1; slopeHigh -1;\n"
+                                  "probabilityD (1e-6 1e-4); probabilityVn (");
+    for (int i = 0; i <= SWW_TEST_MAX; i++) {
+        many[i] = 0.1 + 1e-3 * i;
+        len += (size_t)snprintf(big + len, sizeof big - len, "%.6g ", many[i]);
+    }
+    snprintf(big + len, sizeof big - len, ");\nprobabilityStick (0.3 0.3 0.3 0.3); }\n");
     sww_model *m;
+    assert_int_equal(load_text(big, path, &m), SWW_EPARSE);
+    assert_non_null(strstr(sww_errmsg(m), "key 'probabilityVn': more than 4096 values"));
+    assert_non_null(strstr(sww_errmsg(m), path));
+    assert_int_equal(sww_regime_list(m, "probabilityVn", many, SWW_TEST_MAX + 1), SWW_EINVAL);
+    assert_non_null(strstr(sww_errmsg(m), "key 'probabilityVn': 4097 values, expected 2 to 4096"));
+    assert_int_equal(sww_regime_list(m, "probabilityVn", many, SWW_TEST_MAX), SWW_OK);
+    sww_free(m);
+    /* the good text loads, with a line number in a later parse error */
     assert_int_equal(load_text(GOOD, path, &m), SWW_OK);
     sww_free(m);
     assert_int_equal(load_text(edit(GOOD, "vnMax", "vnMax 6.0 ;;"), path, &m), SWW_EPARSE);
@@ -759,6 +1054,8 @@ int main(void)
         cmocka_unit_test(tangential_gate),
         cmocka_unit_test(oblique_gate),
         cmocka_unit_test(buildup_blend),
+        cmocka_unit_test(probability_table),
+        cmocka_unit_test(blend_probabilities),
         cmocka_unit_test(detach_physics),
         cmocka_unit_test(shear_gate),
         cmocka_unit_test(probability_hook_and_bad_impacts),

@@ -12,14 +12,16 @@
 static const char *const num_keys[K_NNUM] = {
     "version", "degree", "vnMin", "vnMax", "dMin", "dMax", "slopeLow", "slopeHigh",
     "rmsResidual", "maxResidual", "yieldVelocity", "reboundNormal", "gamma", "Estar",
-    "rhoParticle", "mu", "obliqueSlide"
+    "rhoParticle", "mu", "obliqueSlide", "probabilityPoints"
 };
 
 /* list keys */
 static int is_list_key(const char *key)
 {
     return !strcmp(key, "coeffs") || !strcmp(key, "vn") || !strcmp(key, "dCrit")
-        || !strcmp(key, "obliqueVt") || !strcmp(key, "obliqueVn") || !strcmp(key, "obliqueDCrit");
+        || !strcmp(key, "obliqueVt") || !strcmp(key, "obliqueVn") || !strcmp(key, "obliqueDCrit")
+        || !strcmp(key, "probabilityD") || !strcmp(key, "probabilityVn")
+        || !strcmp(key, "probabilityStick");
 }
 
 int sww_fail(sww_model *m, int code, const char *fmt, ...)
@@ -56,12 +58,23 @@ static void oblique_clear(sww_model *m)
     m->ob_ready = 0;
 }
 
+static void probability_clear(sww_model *m)
+{
+    free(m->pr_lnd);
+    free(m->pr_lnv);
+    free(m->pr_p);
+    m->pr_lnd = m->pr_lnv = m->pr_p = NULL;
+    m->pr_nd = m->pr_nvn = m->pr_np = 0;
+    m->pr_ready = 0;
+}
+
 void sww_regime_clear(sww_model *m)
 {
     free(m->tab_lnv);
     free(m->tab_lnd);
     m->tab_lnv = m->tab_lnd = NULL;
     oblique_clear(m);
+    probability_clear(m);
     memset(m->num, 0, sizeof m->num);
     memset(m->has, 0, sizeof m->has);
     m->representation = m->basis = 0;
@@ -174,6 +187,41 @@ static int set_oblique_part(sww_model *m, const char *key, const double *v, size
     return SWW_OK;
 }
 
+/* The stick-probability table's lists (checked together at commit):
+ * probabilityD and probabilityVn strictly increasing and > 0, kept as their
+ * logarithms; probabilityStick in [0, 1] as given. */
+static int set_probability_part(sww_model *m, const char *key, const double *v, size_t n)
+{
+    const int which = !strcmp(key, "probabilityD") ? 0 : !strcmp(key, "probabilityVn") ? 1 : 2;
+    const size_t nmin = which == 2 ? 4u : 2u;
+    if (n < nmin || n > SWW_MAX_TABLE)
+        return sww_fail(m, SWW_EINVAL, "key '%s': %zu values, expected %zu to %d", key, n, nmin,
+                        SWW_MAX_TABLE);
+    for (size_t i = 0; i < n; i++) {
+        if (which == 2 && !(v[i] >= 0.0 && v[i] <= 1.0))
+            return sww_fail(m, SWW_EINVAL, "key '%s': value %g (entry %zu) is not a probability "
+                            "in [0, 1]", key, v[i], i);
+        if (which < 2 && !(v[i] > 0.0))
+            return sww_fail(m, SWW_EINVAL, "key '%s': value %g (entry %zu) must be > 0", key, v[i],
+                            i);
+        if (which < 2 && i > 0 && !(v[i] > v[i - 1]))
+            return sww_fail(m, SWW_EINVAL, "key '%s': value %g (entry %zu) is not larger than %g: "
+                            "the list must be strictly increasing", key, v[i], i, v[i - 1]);
+    }
+    double *p = malloc(n * sizeof *p);
+    if (!p)
+        return sww_fail(m, SWW_ENOMEM, "key '%s': out of memory", key);
+    for (size_t i = 0; i < n; i++)
+        p[i] = which == 2 ? v[i] : log(v[i]);
+    double **dst = which == 0 ? &m->pr_lnd : which == 1 ? &m->pr_lnv : &m->pr_p;
+    size_t *cnt = which == 0 ? &m->pr_nd : which == 1 ? &m->pr_nvn : &m->pr_np;
+    free(*dst);
+    *dst = p;
+    *cnt = n;
+    m->pr_ready = 0;
+    return SWW_OK;
+}
+
 int sww_regime_list(sww_model *m, const char *key, const double *v, size_t n)
 {
     for (size_t i = 0; i < n; i++)
@@ -195,6 +243,9 @@ int sww_regime_list(sww_model *m, const char *key, const double *v, size_t n)
         return set_table_part(m, key, v, n, 1);
     if (!strcmp(key, "obliqueVt") || !strcmp(key, "obliqueVn") || !strcmp(key, "obliqueDCrit"))
         return set_oblique_part(m, key, v, n);
+    if (!strcmp(key, "probabilityD") || !strcmp(key, "probabilityVn")
+        || !strcmp(key, "probabilityStick"))
+        return set_probability_part(m, key, v, n);
     for (int k = 0; k < K_NNUM; k++)
         if (!strcmp(key, num_keys[k]))
             return sww_fail(m, SWW_EINVAL, "key '%s': expects one number, got a list of %zu", key, n);
@@ -358,6 +409,33 @@ static int oblique_commit(sww_model *m, const char *o)
     return SWW_OK;
 }
 
+/* The stick-probability table at commit: all three lists or none, M x N
+ * values; probabilityPoints (informative) a whole number >= 1. */
+static int probability_commit(sww_model *m, const char *o)
+{
+    m->pr_ready = 0;
+    if (m->has[K_PRPOINTS]) {
+        const double np = m->num[K_PRPOINTS];
+        if (!(np >= 1.0) || np != floor(np))
+            return sww_fail(m, SWW_EINVAL, "%s: key 'probabilityPoints': value %g is not a whole "
+                            "number >= 1 (impact points per cell)", o, np);
+    }
+    const int n_given = (m->pr_nd > 0) + (m->pr_nvn > 0) + (m->pr_np > 0);
+    if (n_given == 0)
+        return SWW_OK;
+    if (n_given < 3)
+        return sww_fail(m, SWW_EMISSING, "%s: the stick-probability table needs probabilityD, "
+                        "probabilityVn and probabilityStick together (missing '%s')", o,
+                        !m->pr_nd ? "probabilityD" : !m->pr_nvn ? "probabilityVn"
+                        : "probabilityStick");
+    if (m->pr_np != m->pr_nd * m->pr_nvn)
+        return sww_fail(m, SWW_EINVAL, "%s: key 'probabilityStick': %zu values, but probabilityD "
+                        "x probabilityVn = %zu x %zu = %zu", o, m->pr_np, m->pr_nd, m->pr_nvn,
+                        m->pr_nd * m->pr_nvn);
+    m->pr_ready = 1;
+    return SWW_OK;
+}
+
 int sww_regime_commit(sww_model *m, const char *origin)
 {
     const char *o = origin ? origin : "regime";
@@ -438,6 +516,9 @@ int sww_regime_commit(sww_model *m, const char *origin)
     const int rc_ob = oblique_commit(m, o);
     if (rc_ob != SWW_OK)
         return rc_ob;
+    const int rc_pr = probability_commit(m, o);
+    if (rc_pr != SWW_OK)
+        return rc_pr;
     if (m->vt_on == 2 && !m->ob_ready) {
         m->vt_on = 0;
         return sww_fail(m, SWW_EMISSING, "%s: the regime tangential gate needs the oblique table "
@@ -559,6 +640,15 @@ int sww_oblique_table(const sww_model *m, size_t *nvt, size_t *nvn)
     return m->ob_ready;
 }
 
+int sww_probability_table(const sww_model *m, size_t *nd, size_t *nvn)
+{
+    if (nd)
+        *nd = m->pr_ready ? m->pr_nd : 0;
+    if (nvn)
+        *nvn = m->pr_ready ? m->pr_nvn : 0;
+    return m->pr_ready;
+}
+
 void sww_set_tangential_off(sww_model *m)
 {
     m->vt_on = 0;
@@ -678,20 +768,39 @@ void sww_describe(const sww_model *m, char *buf, size_t n)
                  sww_tau_crit(m, 5e-5));
     else
         snprintf(sh, sizeof sh, "off");
+    char pr[192] = "";
+    if (m->pr_ready)
+        snprintf(pr, sizeof pr, "; stick probability table %zu x %zu (d %g..%g m, v_n %g..%g m/s; "
+                 "outside: the interface)", m->pr_nd, m->pr_nvn, exp(m->pr_lnd[0]),
+                 exp(m->pr_lnd[m->pr_nd - 1]), exp(m->pr_lnv[0]), exp(m->pr_lnv[m->pr_nvn - 1]));
     snprintf(buf, n, "'%s' %s, vn [%g, %g] m/s, d_crit(vnMin) %.4g m, d_crit(vnMax) %.4g m, "
-             "slopes %g/%g; %s, e_t %g; tangential gate %s; shear gate %s",
+             "slopes %g/%g; %s, e_t %g; tangential gate %s; shear gate %s%s",
              m->label, m->representation == 2 ? "table" : (m->basis == 2 ? "polynomial(linear)"
              : "polynomial(log)"), m->num[K_VNMIN], m->num[K_VNMAX], m->d_lo, m->d_hi,
-             m->num[K_SLOPELOW], m->num[K_SLOPEHIGH], reb, m->e_t, vt, sh);
+             m->num[K_SLOPELOW], m->num[K_SLOPEHIGH], reb, m->e_t, vt, sh, pr);
 }
 
 /* ---------------------------------------------------------------- decide */
 
-/* The stick-probability hook: a sharp map gives 0 or 1. A rough-wall map will
- * return a probability in between here; callers already pass the random number. */
-static double stick_probability(const sww_model *m, double d, double d_crit)
+/* The stick probability: with a rough wall's table (probabilityStick), inside
+ * its span [d_1, d_M] x [v_1, v_N] bilinear in (ln d, ln v_n), exact at the
+ * nodes; elsewhere, and without a table, the interface's sharp decision
+ * (1 for d <= d_crit(v_n), else 0). Reads the model only, allocates nothing. */
+static double stick_probability(const sww_model *m, double d, double vn, double d_crit)
 {
-    (void)m;
+    if (m->pr_ready && vn > 0.0) {
+        const size_t M = m->pr_nd, N = m->pr_nvn;
+        const double *X = m->pr_lnd, *Y = m->pr_lnv;
+        const double x = log(d), y = log(vn);
+        if (x >= X[0] && x <= X[M - 1] && y >= Y[0] && y <= Y[N - 1]) {
+            const size_t i = cell_of(X, 0, M - 1, x), j = cell_of(Y, 0, N - 1, y);
+            const double tx = (x - X[i]) / (X[i + 1] - X[i]), ty = (y - Y[j]) / (Y[j + 1] - Y[j]);
+            const double *P0 = m->pr_p + i * N + j, *P1 = P0 + N;
+            const double p = (1.0 - tx) * ((1.0 - ty) * P0[0] + ty * P0[1])
+                           + tx * ((1.0 - ty) * P1[0] + ty * P1[1]);
+            return p < 0.0 ? 0.0 : (p > 1.0 ? 1.0 : p);
+        }
+    }
     return d <= d_crit ? 1.0 : 0.0;
 }
 
@@ -705,7 +814,7 @@ int sww_decide(const sww_model *m, const sww_impact *in, sww_outcome *out)
     const double dc = sww_dcrit(m, in->vn);
     out->d_crit = dc;
     out->range = in->vn < m->num[K_VNMIN] ? -1 : (in->vn > m->num[K_VNMAX] ? 1 : 0);
-    out->p_stick = stick_probability(m, in->d, dc);
+    out->p_stick = stick_probability(m, in->d, in->vn, dc);
     out->reason = SWW_BY_CRITERION;
     int stick = in->u < out->p_stick;
     if (stick && m->vt_on == 1 && in->vt > sww_vt_max(m, in->d)) {
@@ -713,7 +822,8 @@ int sww_decide(const sww_model *m, const sww_impact *in, sww_outcome *out)
         out->reason = SWW_BY_TANGENTIAL;
     } else if (stick && m->vt_on == 2 && in->vt > 0.0 && in->vn > 0.0
                && (isinf(in->vt) || log(in->d) > oblique_lndt(m, in->vn, in->vt))) {
-        /* d <= d_crit(v_n) already: the tangential limit decides */
+        /* a stick candidate (d <= d_crit(v_n), or by the rough wall's
+         * probability): the tangential limit decides */
         stick = 0;
         out->reason = SWW_BY_TANGENTIAL;
     }
@@ -769,7 +879,9 @@ int sww_decide_blend(const sww_model *bare, const sww_model *covered, double w,
         return sww_decide(bare, in, out);
     if (w == 1.0)
         return sww_decide(covered, in, out);
-    /* each regime's own outcome (with its gates), the random number aside */
+    /* each regime's own stick probability with its gates, the random number
+     * aside: with u = 0 a regime sticks whenever its p_stick > 0 and no gate
+     * stops it; a gated-off stick candidate has p = 0 */
     sww_impact in0 = *in;
     in0.u = 0.0;
     sww_outcome ob, oc;
@@ -781,16 +893,24 @@ int sww_decide_blend(const sww_model *bare, const sww_model *covered, double w,
         return rc;
     if (!(in->u >= 0.0 && in->u < 1.0))
         return SWW_EINVAL;
-    const double pb = ob.fate == SWW_STICK ? 1.0 : 0.0, pc = oc.fate == SWW_STICK ? 1.0 : 0.0;
+    const double pb = ob.fate == SWW_STICK ? ob.p_stick : 0.0;
+    const double pc = oc.fate == SWW_STICK ? oc.p_stick : 0.0;
     const double p = (1.0 - w) * pb + w * pc;
-    /* sticks with the blended probability; otherwise the outcome of a regime
-     * that does not stick (the covered one when neither does and w >= 1/2) */
-    const sww_outcome *o;
-    if (in->u < p)
-        o = pc > pb ? &oc : (pb > pc ? &ob : (w >= 0.5 ? &oc : &ob));
-    else
-        o = pc < pb ? &oc : (pb < pc ? &ob : (w >= 0.5 ? &oc : &ob));
-    *out = *o;
+    /* sticks with the blended probability, with the outcome of the regime more
+     * likely to stick; otherwise the outcome of the regime less likely to
+     * stick (ties: the covered one when w >= 1/2), a bounce by the criterion
+     * when that regime would have stuck at u = 0 */
+    const int stick = in->u < p;
+    const int use_cov = stick ? (pc > pb ? 1 : (pb > pc ? 0 : w >= 0.5))
+                              : (pc < pb ? 1 : (pb < pc ? 0 : w >= 0.5));
+    *out = use_cov ? oc : ob;
+    if (!stick && out->fate == SWW_STICK) {
+        const sww_model *r = use_cov ? covered : bare;
+        out->fate = SWW_BOUNCE;
+        out->reason = SWW_BY_CRITERION;
+        out->e_n = sww_rebound_normal(r, in->vn);
+        out->e_t = r->e_t;
+    }
     out->p_stick = p;
     out->d_crit = (1.0 - w) * ob.d_crit + w * oc.d_crit;
     return SWW_OK;

@@ -48,16 +48,21 @@ typedef struct {
     double vt;     /* tangential impact speed magnitude [m/s], >= 0                */
     double tau_w;  /* wall shear stress magnitude [Pa], >= 0 (read only when the
                       shear gate is on)                                            */
-    double u;      /* caller's uniform random number in [0, 1): the stick
-                      probability hook (with today's sharp map p_stick is 0 or 1,
-                      so any u gives the same answer)                              */
+    double u;      /* caller's uniform random number in [0, 1), a new one per
+                      impact: a stick candidate needs u < p_stick. With a rough
+                      wall's probability table (probabilityStick) p_stick lies
+                      between 0 and 1 and u decides; with a sharp map (no table,
+                      or outside the table's span) p_stick is 0 or 1 and any u
+                      gives the same answer                                        */
 } sww_impact;
 
 typedef struct {
     sww_fate fate;
     sww_reason reason;
     double d_crit;   /* d_crit(v_n) [m] (INFINITY for v_n = 0)                       */
-    double p_stick;  /* stick probability used (0 or 1 for a sharp map)             */
+    double p_stick;  /* stick probability used (0 or 1 for a sharp map; the table's
+                        interpolated value inside a probability table's span;
+                        before the gates)                                            */
     double e_n;      /* bounce / rip-off: v_n' = e_n v_n (1 for a stick)            */
     double e_t;      /* bounce / rip-off: v_t' = e_t v_t (1 for a stick)            */
     int range;       /* where v_n lies: 0 inside [vnMin, vnMax] (the fit), -1 below,
@@ -77,7 +82,9 @@ int sww_regime_load(sww_model *m, const char *path);
 /* Or set the same keys from code (the keys of the regime dictionary), then commit.
  * number keys: version degree vnMin vnMax dMin dMax slopeLow slopeHigh rmsResidual
  *   maxResidual yieldVelocity reboundNormal gamma Estar rhoParticle mu obliqueSlide
- * list keys: coeffs vn dCrit obliqueVt obliqueVn obliqueDCrit;
+ *   probabilityPoints
+ * list keys: coeffs vn dCrit obliqueVt obliqueVn obliqueDCrit probabilityD
+ *   probabilityVn probabilityStick;
  * word keys: representation basis label
  * Unknown keys are accepted and ignored (forward compatibility). Setting any key
  * makes the model not ready until the next successful sww_regime_commit. */
@@ -108,9 +115,12 @@ void sww_set_shear_off(sww_model *m);
 int sww_set_rebound_tangential(sww_model *m, double e_t);
 
 /* ---- use ------------------------------------------------------------------ */
-/* Decide one impact. Returns SWW_OK, SWW_EINVAL (bad impact: NaN, d <= 0,
- * negative speed, u outside [0,1), tau_w bad while the shear gate is on) or
- * SWW_ENOTREADY. Thread-safe, allocates nothing, writes no message. */
+/* Decide one impact: p_stick from the map (the rough wall's probability table
+ * inside its span, bilinear in ln d and ln v_n; else 1 for d <= d_crit(v_n),
+ * 0 otherwise); a stick candidate (u < p_stick) then passes the tangential
+ * and shear gates or bounces / is ripped off. Returns SWW_OK, SWW_EINVAL
+ * (bad impact: NaN, d <= 0, negative speed, u outside [0,1), tau_w bad while
+ * the shear gate is on) or SWW_ENOTREADY. Thread-safe, allocates nothing, writes no message. */
 int sww_decide(const sww_model *m, const sww_impact *in, sww_outcome *out);
 
 /* ---- build-up feedback: a face covered by snow (issue 12) -------------------
@@ -118,10 +128,13 @@ int sww_decide(const sww_model *m, const sww_impact *in, sww_outcome *out);
  * covered from the covering mass m_c on, in between a blend of the stick
  * probabilities with the covered fraction w = min(1, m / m_c):
  *     p_stick = (1 - w) p_bare + w p_covered,
- * p of each regime its own decision with its own gates (0 or 1 for a sharp
- * map). The particle sticks if u < p_stick; otherwise it leaves with the
- * outcome (reason, rebound, rip-off) of a regime that does not stick there (the
- * covered one when neither does and w >= 1/2). out->d_crit is the blend
+ * p of each regime its own stick probability with its own gates (out.p_stick
+ * of sww_decide with u = 0, and 0 when a gate stops the stick; 0 or 1 for a
+ * sharp map). The particle sticks if u < p_stick (with the outcome of the
+ * regime more likely to stick); otherwise it leaves with the outcome (reason,
+ * rebound, rip-off) of the regime less likely to stick there (the covered one
+ * on a tie and w >= 1/2; a bounce by the criterion when that regime's own
+ * p > 0). out->d_crit is the blend
  * (1 - w) d_bare + w d_covered, out->p_stick the blended probability.
  * w = 0 and w = 1 are exactly sww_decide of the bare / covered regime.
  * Returns SWW_EINVAL for w outside [0, 1] (or a bad impact). */
@@ -155,6 +168,10 @@ double sww_dcrit_oblique(const sww_model *m, double vn, double vt);
 double sww_oblique_slide(const sww_model *m);
 /* 1 when the regime has an oblique table (sizes into *nvt, *nvn; may be NULL). */
 int sww_oblique_table(const sww_model *m, size_t *nvt, size_t *nvn);
+/* 1 when the regime has a stick-probability table (probabilityD, probabilityVn,
+ * probabilityStick: a rough wall); its sizes M (diameters) and N (speeds)
+ * into *nd, *nvn (may be NULL; 0 without a table). */
+int sww_probability_table(const sww_model *m, size_t *nd, size_t *nvn);
 /* Normal rebound factor e_n(v_n) (Thornton with yieldVelocity, or the constant). */
 double sww_rebound_normal(const sww_model *m, double vn);
 /* Tangential limit vtMax(d) [m/s] of the constant gate (INFINITY when that

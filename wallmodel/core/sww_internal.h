@@ -12,7 +12,8 @@
 /* numeric keys of the regime dictionary, in this order */
 enum {
     K_VERSION, K_DEGREE, K_VNMIN, K_VNMAX, K_DMIN, K_DMAX, K_SLOPELOW, K_SLOPEHIGH,
-    K_RMS, K_MAXRES, K_YIELD, K_REBOUND, K_GAMMA, K_ESTAR, K_RHO, K_MU, K_OBSLIDE, K_NNUM
+    K_RMS, K_MAXRES, K_YIELD, K_REBOUND, K_GAMMA, K_ESTAR, K_RHO, K_MU, K_OBSLIDE, K_PRPOINTS,
+    K_NNUM
 };
 
 struct sww_model {
@@ -34,6 +35,11 @@ struct sww_model {
     double ob_dx_inv;                 /* 1 / ln-v_n spacing when uniform, else 0 */
     size_t ob_nvt, ob_nvn, ob_nd;
     int ob_ready;                  /* the table passed the commit checks */
+    /* stick-probability table of a rough wall: probabilityD, probabilityVn,
+     * probabilityStick (M x N, rows by d) */
+    double *pr_lnd, *pr_lnv, *pr_p;   /* ln d, ln v_n, p_stick in [0, 1] */
+    size_t pr_nd, pr_nvn, pr_np;
+    int pr_ready;                  /* the table passed the commit checks */
     /* derived at commit */
     int ready;
     double d_lo, d_hi;             /* d_crit at vnMin, vnMax */
