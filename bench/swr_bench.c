@@ -58,7 +58,7 @@ static double time_collisions(const swr_model *m, const double *d, const double 
         do {
             for (int i = 0; i < nd; i++)
                 for (int k = 0; k < 4; k++) {
-                    swr_impact in = { d[i], f[k] * vc[i], 0.0, 0.0 };
+                    swr_impact in = { d[i], f[k] * vc[i], 0.0, 0.0, 0.0, 0.0 };
                     swr_result res;
                     swr_collide(m, &in, &res, NULL);
                     if (r == 0 && n < 4 * nd) { steps += res.steps; ncoll++; }

@@ -38,6 +38,8 @@ int sr_opt(sr_args *a, const char *name, const char **val);
 int sr_flag(sr_args *a, const char *name);
 /* Handles --config/--set/--threads at argv[i]: 1 taken, 0 not, -1 error (a->err). */
 int sr_settings_opt(sr_args *a, sr_settings *s);
+/* --points N, --seed S, --level P (rough walls) into o: 1 taken, 0 not, -1 error. */
+int sr_rough_opt(sr_args *a, swt_vcrit_opts *o);
 /* defaults + config + sets + validate; -1 with message on error */
 int sr_settings_apply(const sr_settings *s, swr_params *p, char *err, size_t errlen);
 /* Usage error: prints "snowregime CMD: MSG" and returns SR_EXIT_USAGE. */

@@ -87,7 +87,7 @@ int sr_cmd_collide(int argc, char **argv)
     const char *cmd = "collide";
     sr_args a = { argc, argv, 1, cmd, "" };
     sr_settings s = { 0 };
-    swr_impact in = { 0.0, 0.0, 0.0, 0.0 };
+    swr_impact in = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
     int have_d = 0, have_vn = 0;
     long stride = 1;
     const char *csv = NULL, *vtk = NULL, *v;
@@ -109,6 +109,12 @@ int sr_cmd_collide(int argc, char **argv)
                 return sr_usage_error(cmd, a.err);
         } else if (sr_opt(&a, "--omega", &v)) {
             if (!v || swt_parse_double("--omega", v, -1e12, 1e12, &in.omega, a.err, sizeof a.err))
+                return sr_usage_error(cmd, a.err);
+        } else if (sr_opt(&a, "--x", &v)) {
+            if (!v || swt_parse_double("--x", v, -1.0, 1.0, &in.x, a.err, sizeof a.err))
+                return sr_usage_error(cmd, a.err);
+        } else if (sr_opt(&a, "--y", &v)) {
+            if (!v || swt_parse_double("--y", v, -1.0, 1.0, &in.y, a.err, sizeof a.err))
                 return sr_usage_error(cmd, a.err);
         } else if (sr_opt(&a, "--stride", &v)) {
             if (!v || swt_parse_int("--stride", v, 1, 1000000000L, &stride, a.err, sizeof a.err))
@@ -175,6 +181,8 @@ int sr_cmd_collide(int argc, char **argv)
     else printf("e_t: none (no tangential rebound: vt = 0 or contact kept)\n");
     printf("t_contact: %.9g\ndelta_max: %.9g\ne_target: %.9g\n", r.t_contact, r.delta_max, r.e_target);
     printf("t_rest: %.9g\ns_rest: %.9g\n", r.t_rest, r.s_rest);
+    if (p.wall == SWR_WALL_KIND_LATTICE)
+        printf("x: %.9g\ny: %.9g\ncontacts: %ld\n", in.x, in.y, r.contacts);
     printf("dt: %.9g\nsteps: %ld\nmax_steps: %ld\n", r.dt, r.steps, r.max_steps);
     printf("status: %s\n", st == SWR_OK ? "ok (decided by a physical criterion)"
                                         : "step-bound (outcome is the best estimate)");

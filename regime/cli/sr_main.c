@@ -365,6 +365,28 @@ int sr_settings_apply(const sr_settings *s, swr_params *p, char *err, size_t err
     return 0;
 }
 
+int sr_rough_opt(sr_args *a, swt_vcrit_opts *o)
+{
+    const char *v;
+    long n;
+    if (sr_opt(a, "--points", &v)) {
+        if (!v || swt_parse_int("--points", v, 1, 100000, &n, a->err, sizeof a->err) != 0) return -1;
+        o->points = (int)n;
+        return 1;
+    }
+    if (sr_opt(a, "--seed", &v)) {
+        if (!v || swt_parse_int("--seed", v, 0, 4294967295L, &n, a->err, sizeof a->err) != 0) return -1;
+        o->seed = (unsigned long)n;
+        return 1;
+    }
+    if (sr_opt(a, "--level", &v)) {
+        if (!v || swt_parse_double("--level", v, 1e-6, 1.0, &o->level, a->err, sizeof a->err) != 0)
+            return -1;
+        return 1;
+    }
+    return 0;
+}
+
 const char *sr_outcome_text(const swt_vcrit_opts *o, char *buf, size_t n)
 {
     if (o->max_slide > 0.0)

@@ -34,6 +34,7 @@ int sr_cmd_vcrit(int argc, char **argv)
     int rc = 0;
     for (; a.i < argc; a.i++) {
         int r = sr_settings_opt(&a, &s);
+        if (r == 0) r = sr_rough_opt(&a, &o);
         if (r < 0) { rc = sr_usage_error(cmd, a.err); goto out; }
         if (r > 0) continue;
         if (sr_flag(&a, "--help") || sr_flag(&a, "-h")) { sr_help(cmd); goto out; }
@@ -96,6 +97,9 @@ int sr_cmd_vcrit(int argc, char **argv)
                sr_outcome_text(&o, oc, sizeof oc));
         printf("# search: v in [%g, %g] m/s, scan ratio %g, bisection to v_hi/v_lo <= 1 + %g\n",
                o.vmin, o.vmax, o.scan_ratio, o.rtol);
+        if (swr_model_rough(m))
+            printf("# rough wall: v_crit is where the stick fraction over %d impact points "
+                   "(seed %lu) falls below %g\n", o.points, o.seed, o.level);
         if (have_angle) printf("# impact angle %g deg from the normal (vt = vn tan angle)\n", angle);
         else printf("# vt %g m/s, omega %g rad/s\n", o.vt, o.omega);
         swr_params_print(&p, "# setting ", stdout);
@@ -121,7 +125,9 @@ int sr_cmd_vcrit(int argc, char **argv)
                        d[k], r->changes, r->v_restick > 0 ? ", sticks again at " : "",
                        r->v_restick > 0 ? r->v_restick : 0.0);
             if (r->step_bound)
-                printf("# warning: d %.6g: %ld collisions ended on the step bound\n", d[k], r->step_bound);
+                printf("# %s: d %.6g: %ld collisions ended on the step bound%s\n",
+                       swr_model_rough(m) ? "note" : "warning", d[k], r->step_bound,
+                       swr_model_rough(m) ? " (still held after rough_hold contact times: counted as stick)" : "");
             if (r->msg[0]) printf("# warning: d %.6g: %s\n", d[k], r->msg);
             if (r->status != SWT_VCRIT_FOUND) {
                 fprintf(stderr, "snowregime vcrit: d %g m: no v_crit in [%g, %g] m/s (%s)\n", d[k],

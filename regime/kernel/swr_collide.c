@@ -58,7 +58,7 @@ swr_model *swr_model_alloc(const swr_params *p, char *err, size_t errlen)
         return NULL;
     }
     m->p = *p;
-    m->wall.type = SWR_WALL_FLAT;
+    swr_wall_init(&m->wall, p);
     m->Estar = swp_effective_modulus(p->E, p->nu, p->E_wall, p->nu_wall);
     m->Gstar = swp_effective_shear_modulus(p->E, p->nu, p->E_wall, p->nu_wall);
     m->adhesive = p->adhesion == SWR_ADHESION_JKR && p->gamma > 0.0;
@@ -75,6 +75,16 @@ void swr_model_free(swr_model *m)
 const swr_params *swr_model_params(const swr_model *m)
 {
     return &m->p;
+}
+
+int swr_model_rough(const swr_model *m)
+{
+    return m->wall.type == SWR_WALL_LATTICE;
+}
+
+void swr_model_sample_area(const swr_model *m, double *lx, double *ly)
+{
+    swr_wall_sample_area(&m->wall, lx, ly);
 }
 
 double swr_model_tabor(const swr_model *m, double d, int *jkr_ok)
@@ -173,6 +183,13 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
         return bad_input(r, "vt", in->vt);
     if (!(fabs(in->omega) <= SWR_V_MAX / (0.5 * in->d)))
         return bad_input(r, "omega", in->omega);
+    if (!(fabs(in->x) <= 1.0))
+        return bad_input(r, "x", in->x);
+    if (!(fabs(in->y) <= 1.0))
+        return bad_input(r, "y", in->y);
+    r->contacts = 1;
+    if (m->wall.type == SWR_WALL_LATTICE)
+        return swr_collide_rough(m, in, r, trace);
 
     const swr_params *p = &m->p;
     /* --- physical quantities of this impact (SI) --- */

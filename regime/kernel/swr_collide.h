@@ -30,13 +30,17 @@ typedef struct swr_model swr_model;
 
 /* One impact. Velocities are of the particle relative to the wall, at first
  * contact: vn > 0 is the approach speed along the wall normal, vt >= 0 the
- * tangential speed, omega the initial spin about the axis that makes the
- * contact point slide along vt (rad/s, sign as in swr_collide.c). */
+ * tangential speed (along +x), omega the initial spin about the axis that
+ * makes the contact point slide along vt (rad/s, sign as in swr_collide.c).
+ * On a rough wall (wall lattice) x, y is the impact point: where the sphere
+ * centre is when its lowest point crosses the plane of the asperity tops
+ * (swr_wall.h); a flat wall ignores it. */
 typedef struct {
     double d;      /* particle diameter [m] */
     double vn;     /* normal approach speed [m/s], > 0 */
     double vt;     /* tangential speed [m/s], >= 0 */
     double omega;  /* initial angular velocity [rad/s] */
+    double x, y;   /* impact point on a rough wall [m] (finite, |x|, |y| <= 1 m) */
 } swr_impact;
 
 typedef enum {
@@ -68,6 +72,11 @@ typedef struct {
      * they never stop (mu = 0 with slip). 0 for bounces and head-on impacts. */
     double t_rest;       /* [s] */
     double s_rest;       /* [m] */
+    /* Rough wall: contacts made (asperities and the base plane, counted once
+     * per touch); the outcome is then decided by energy (doc/kernel.md: stick
+     * = the sphere can never leave), t_rest and s_rest are not predicted (0).
+     * 1 on a flat wall. */
+    long contacts;
 } swr_result;
 
 /* Optional trajectory sink: called every `stride` steps with time, overlap,
@@ -91,6 +100,12 @@ const swr_params *swr_model_params(const swr_model *m);
 /* Run one impact. Returns r->status. Never NaN, never past r->max_steps. */
 swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
                        const swr_trace *trace);
+
+/* 1 when the wall is rough (wall lattice), 0 flat. */
+int swr_model_rough(const swr_model *m);
+/* The rectangle [0, lx) x [0, ly) of impact points that covers every impact
+ * on the wall (swr_wall_sample_area; 0 x 0 for a flat wall). */
+void swr_model_sample_area(const swr_model *m, double *lx, double *ly);
 
 /* Tabor parameter of diameter d; sets *jkr_ok = lambda > SWP_TABOR_JKR_MIN. */
 double swr_model_tabor(const swr_model *m, double d, int *jkr_ok);

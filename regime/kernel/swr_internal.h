@@ -8,6 +8,10 @@
 /* Step bound: this many contact times t_c (swr_collide.c) */
 #define SWR_CONTACT_TIMES_MAX 24.0
 
+/* Rough wall (swr_rough.c): bound on the free flights between contacts of
+ * one impact (the time in contact is bounded by the key rough_hold). */
+#define SWR_ROUGH_FLIGHTS_MAX 10000L
+
 struct swr_model {
     swr_params p;
     swr_wall wall;
@@ -17,5 +21,9 @@ struct swr_model {
     double alpha_const;  /* dashpot alpha of a constant COR (root-found) */
     double e_min;        /* smallest COR of the dashpot table */
 };
+
+/* The impact on a rough wall (wall lattice); swr_collide dispatches to it. */
+swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_result *r,
+                             const swr_trace *trace);
 
 #endif

@@ -37,8 +37,19 @@ static const num_key num_keys[] = {
     NK(xi_crit,  1.0e-12, 1.0e-6, "critical rolling displacement [m]"),
     NK(accuracy, 10.0,   1.0e5,  "steps per Hertz contact time [-]"),
 };
+/* The rough-wall keys: set and validated like the others, printed only for
+ * wall lattice (a flat-wall output lists no wall keys, as before). */
+static const num_key wall_keys[] = {
+    NK(asperity_r,       1.0e-9, 1.0,  "asperity radius [m]"),
+    NK(asperity_spacing, 1.0e-9, 10.0, "asperity spacing [m]"),
+    NK(asperity_jitter,  0.0,    0.5,  "random lateral offset of an asperity / spacing [-]"),
+    NK(asperity_dz,      0.0,    1.0,  "random sinking depth of an asperity [m]"),
+    NK(wall_seed,        0.0,    9.007199254740992e15, "seed of the random wall (integer)"),
+    NK(rough_hold,       1.0,    1.0e5, "contact times in contact before a held sphere counts as stuck [-]"),
+};
 #undef NK
 #define N_NUM (sizeof num_keys / sizeof num_keys[0])
+#define N_WALL (sizeof wall_keys / sizeof wall_keys[0])
 
 /* Accepted range of a constant coefficient of restitution. */
 #define COR_MIN 1.0e-3
@@ -74,6 +85,14 @@ void swr_params_default(swr_params *p)
     p->mu = 0.05;
     p->xi_crit = 1.0e-9;
     p->accuracy = 60.0;
+    p->wall = SWR_WALL_KIND_FLAT;
+    p->lattice = SWR_LATTICE_SQUARE;
+    p->asperity_r = 1.0e-6;
+    p->asperity_spacing = 2.0e-6;
+    p->asperity_jitter = 0.0;
+    p->asperity_dz = 0.0;
+    p->wall_seed = 1.0;
+    p->rough_hold = 100.0;
 }
 
 /* Strict number: the whole text (surrounding blanks allowed), finite. */
@@ -102,6 +121,9 @@ static const num_key *find_num(const char *key)
     for (size_t i = 0; i < N_NUM; i++)
         if (strcmp(num_keys[i].key, key) == 0)
             return &num_keys[i];
+    for (size_t i = 0; i < N_WALL; i++)
+        if (strcmp(wall_keys[i].key, key) == 0)
+            return &wall_keys[i];
     return NULL;
 }
 
@@ -117,7 +139,27 @@ int swr_params_set(swr_params *p, const char *key, const char *value, char *err,
         if (!(v >= k->lo && v <= k->hi))
             return fail(err, errlen, "%s: %s is out of range [%g, %g] (%s)", key, value,
                         k->lo, k->hi, k->what);
+        if (k->off == offsetof(swr_params, wall_seed) && v != floor(v))
+            return fail(err, errlen, "%s: %s is not an integer (%s)", key, value, k->what);
         *field(p, k) = v;
+        return 0;
+    }
+    if (strcmp(key, "wall") == 0) {
+        if (strcmp(value, "flat") == 0)
+            p->wall = SWR_WALL_KIND_FLAT;
+        else if (strcmp(value, "lattice") == 0)
+            p->wall = SWR_WALL_KIND_LATTICE;
+        else
+            return fail(err, errlen, "wall: '%s' is neither flat nor lattice", value);
+        return 0;
+    }
+    if (strcmp(key, "lattice") == 0) {
+        if (strcmp(value, "square") == 0)
+            p->lattice = SWR_LATTICE_SQUARE;
+        else if (strcmp(value, "hex") == 0)
+            p->lattice = SWR_LATTICE_HEX;
+        else
+            return fail(err, errlen, "lattice: '%s' is neither square nor hex", value);
         return 0;
     }
     if (strcmp(key, "cor") == 0) {
@@ -266,6 +308,19 @@ int swr_params_validate(const swr_params *p, char *err, size_t errlen)
         return fail(err, errlen, "dashpot: invalid value %d", (int)p->dashpot);
     if (p->adhesion != SWR_ADHESION_JKR && p->adhesion != SWR_ADHESION_NONE)
         return fail(err, errlen, "adhesion: invalid value %d", (int)p->adhesion);
+    if (p->wall != SWR_WALL_KIND_FLAT && p->wall != SWR_WALL_KIND_LATTICE)
+        return fail(err, errlen, "wall: invalid value %d", (int)p->wall);
+    if (p->lattice != SWR_LATTICE_SQUARE && p->lattice != SWR_LATTICE_HEX)
+        return fail(err, errlen, "lattice: invalid value %d", (int)p->lattice);
+    for (size_t i = 0; i < N_WALL; i++) {
+        const double v = *(const double *)((const char *)p + wall_keys[i].off);
+        if (!(v >= wall_keys[i].lo && v <= wall_keys[i].hi))
+            return fail(err, errlen, "%s: %g is out of range [%g, %g] (%s)", wall_keys[i].key, v,
+                        wall_keys[i].lo, wall_keys[i].hi, wall_keys[i].what);
+    }
+    if (p->wall == SWR_WALL_KIND_LATTICE && p->cor == SWR_COR_THORNTON_NING)
+        return fail(err, errlen, "cor: thornton-ning is not available on a rough wall (wall lattice): "
+                                 "its contact history is kept for one contact only; use thornton");
     return 0;
 }
 
@@ -286,4 +341,12 @@ void swr_params_print(const swr_params *p, const char *prefix, FILE *stream)
     }
     fprintf(stream, "%scor_pair %s\n", pre, p->cor_pair == SWR_PAIR_PARTICLE ? "particle" : "wall");
     fprintf(stream, "%sdashpot %s\n", pre, p->dashpot == SWR_DASHPOT_BOTH ? "both" : "loading");
+    if (p->wall == SWR_WALL_KIND_LATTICE) {
+        fprintf(stream, "%swall lattice\n%slattice %s\n", pre, pre,
+                p->lattice == SWR_LATTICE_HEX ? "hex" : "square");
+        for (size_t i = 0; i < N_WALL; i++) {
+            const double v = *(const double *)((const char *)p + wall_keys[i].off);
+            fprintf(stream, "%s%s %.17g\n", pre, wall_keys[i].key, v);
+        }
+    }
 }

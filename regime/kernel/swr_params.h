@@ -39,6 +39,11 @@ typedef enum {
                                      DEM codes do; for comparison (doc/kernel.md) */
 } swr_dashpot;
 
+/* Key `wall`: wall geometry (swr_wall.h). */
+typedef enum { SWR_WALL_KIND_FLAT = 0, SWR_WALL_KIND_LATTICE } swr_wall_kind;
+/* Key `lattice`: arrangement of the asperities of a lattice wall. */
+typedef enum { SWR_LATTICE_SQUARE = 0, SWR_LATTICE_HEX } swr_lattice;
+
 /* Key `adhesion`: normal contact law. */
 typedef enum { SWR_ADHESION_JKR = 0, SWR_ADHESION_NONE } swr_adhesion;
 
@@ -62,6 +67,17 @@ typedef struct {
     swr_dashpot dashpot; /* `dashpot` loading | both                     loading  */
     double mu;         /* `mu`       sliding friction coefficient [-] 0.05    */
     double xi_crit;    /* `xi_crit`  critical rolling displacement [m] (Dominik & Tielens) 1e-9 */
+    /* wall geometry (swr_wall.h); printed only for wall lattice */
+    swr_wall_kind wall; /* `wall`     flat | lattice                  flat     */
+    swr_lattice lattice; /* `lattice` square | hex                    square   */
+    double asperity_r;   /* `asperity_r` asperity radius [m]           1e-6     */
+    double asperity_spacing; /* `asperity_spacing` nearest-neighbour distance [m] 2e-6 */
+    double asperity_jitter;  /* `asperity_jitter` random lateral offset / spacing [-] 0 */
+    double asperity_dz;  /* `asperity_dz` random sinking depth [m]     0        */
+    double wall_seed;    /* `wall_seed` seed of the random offsets (integer) 1    */
+    double rough_hold;   /* `rough_hold` contact times t_c (flat wall, impact speed) a
+                            sphere may spend in contact before, still held, it counts
+                            as stuck (swr_rough.c)                     100      */
     /* numerics */
     double accuracy;   /* `accuracy` steps per Hertz contact time (the one accuracy knob) 60 */
 } swr_params;

@@ -3,7 +3,10 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+
+#include <gsl/gsl_rng.h>
 
 void swt_vcrit_opts_default(swt_vcrit_opts *o)
 {
@@ -16,6 +19,9 @@ void swt_vcrit_opts_default(swt_vcrit_opts *o)
     o->tan_angle = 0.0;
     o->omega = 0.0;
     o->max_slide = 0.0;
+    o->points = 64;
+    o->seed = 1;
+    o->level = 0.5;
 }
 
 int swt_outcome(const swt_vcrit_opts *o, const swr_result *res)
@@ -24,9 +30,67 @@ int swt_outcome(const swt_vcrit_opts *o, const swr_result *res)
     return o->full_stick ? (res->stick != 0) : (res->contact_kept != 0);
 }
 
+static void count(swt_vcrit_result *r, swr_status st, const swr_result *res)
+{
+    r->collisions++;
+    r->steps += res->steps;
+    if (st == SWR_STEP_BOUND) r->step_bound++;
+    if (r->dt_min == 0.0 || res->dt < r->dt_min) r->dt_min = res->dt;
+    if (res->dt > r->dt_max) r->dt_max = res->dt;
+}
+
+int swt_stick_fraction(const swr_model *m, double d, double vn, const swt_vcrit_opts *o,
+                       swt_fraction *f, swt_vcrit_result *r, char *msg, size_t msglen)
+{
+    memset(f, 0, sizeof *f);
+    double lx, ly;
+    swr_model_sample_area(m, &lx, &ly);
+    gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
+    if (!g) {
+        if (msg) snprintf(msg, msglen, "out of memory");
+        return -1;
+    }
+    gsl_rng_set(g, o->seed);
+    int nb = 0;
+    for (int k = 0; k < o->points; k++) {
+        swr_impact in = { .d = d, .vn = vn, .vt = o->tan_angle > 0.0 ? vn * o->tan_angle : o->vt,
+                          .omega = o->omega };
+        in.x = lx * gsl_rng_uniform(g);
+        in.y = ly * gsl_rng_uniform(g);
+        swr_result res;
+        memset(&res, 0, sizeof res);
+        const swr_status st = swr_collide(m, &in, &res, NULL);
+        if (st == SWR_EINVAL) {
+            if (msg) snprintf(msg, msglen, "%s", res.msg);
+            gsl_rng_free(g);
+            return -1;
+        }
+        if (r) count(r, st, &res);
+        if (msg && res.msg[0] && !msg[0]) snprintf(msg, msglen, "%s", res.msg);
+        f->points++;
+        f->steps += res.steps;
+        f->contacts += res.contacts;
+        if (st == SWR_STEP_BOUND) f->bound++;
+        if (swt_outcome(o, &res)) {
+            f->sticks++;
+        } else if (!res.contact_kept) {
+            f->e_n += res.e_n;
+            nb++;
+        }
+    }
+    if (nb) f->e_n /= nb;
+    gsl_rng_free(g);
+    return 0;
+}
+
 int swt_sticks(const swr_model *m, double d, double vn, const swt_vcrit_opts *o,
                swt_vcrit_result *r, char *msg, size_t msglen)
 {
+    if (swr_model_rough(m)) {
+        swt_fraction f;
+        if (swt_stick_fraction(m, d, vn, o, &f, r, msg, msglen) != 0) return -1;
+        return f.sticks >= o->level * f.points;
+    }
     swr_impact in = { .d = d, .vn = vn, .vt = o->tan_angle > 0.0 ? vn * o->tan_angle : o->vt,
                       .omega = o->omega };
     swr_result res;
@@ -36,13 +100,7 @@ int swt_sticks(const swr_model *m, double d, double vn, const swt_vcrit_opts *o,
         if (msg) snprintf(msg, msglen, "%s", res.msg);
         return -1;
     }
-    if (r) {
-        r->collisions++;
-        r->steps += res.steps;
-        if (st == SWR_STEP_BOUND) r->step_bound++;
-        if (r->dt_min == 0.0 || res.dt < r->dt_min) r->dt_min = res.dt;
-        if (res.dt > r->dt_max) r->dt_max = res.dt;
-    }
+    if (r) count(r, st, &res);
     if (msg && res.msg[0] && !msg[0]) snprintf(msg, msglen, "%s", res.msg);
     return swt_outcome(o, &res);
 }

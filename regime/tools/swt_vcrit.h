@@ -27,7 +27,24 @@ typedef struct {
     double omega;         /* initial spin [rad/s] */
     double max_slide;     /* > 0: "sticks" = full stick AND the predicted travel along the
                              wall until rest (swr_result.s_rest) <= max_slide [m]; 0: off */
+    /* rough wall (wall lattice): "sticks" at (d, v_n) = the stick fraction over
+     * `points` impact points is >= level. The points are uniform over the
+     * wall's sample area (swr_model_sample_area), drawn by GSL's mt19937 from
+     * `seed`: the same points at every (d, v_n) (common random numbers, so the
+     * fraction changes only where an impact point's outcome does). */
+    int points;           /* impact points per (d, v_n) (default 64) */
+    unsigned long seed;   /* seed of the impact points (default 1) */
+    double level;         /* stick probability of the interface (default 0.5) */
 } swt_vcrit_opts;
+
+/* Stick fraction of one (d, v_n) on a rough wall. */
+typedef struct {
+    int points, sticks;   /* impact points, and how many stick */
+    int bound;            /* impacts that ended on a bound (status SWR_STEP_BOUND) */
+    double e_n;           /* mean normal COR of the bounces (0: none) */
+    long steps;           /* integration steps */
+    long contacts;        /* contacts made */
+} swt_fraction;
 
 typedef enum {
     SWT_VCRIT_FOUND = 0,     /* bracketed and bisected */
@@ -56,6 +73,10 @@ int swt_outcome(const swt_vcrit_opts *o, const swr_result *res);
  * error (message copied to msg). Accumulates counters into r when not NULL. */
 int swt_sticks(const swr_model *m, double d, double vn, const swt_vcrit_opts *o,
                swt_vcrit_result *r, char *msg, size_t msglen);
+/* Rough wall: the stick fraction at (d, vn) over o->points impact points.
+ * 0, or -1 on a kernel error (message in msg). Accumulates r's counters. */
+int swt_stick_fraction(const swr_model *m, double d, double vn, const swt_vcrit_opts *o,
+                       swt_fraction *f, swt_vcrit_result *r, char *msg, size_t msglen);
 /* The search for diameter d with the kernel. Returns r->status. */
 swt_vcrit_status swt_vcrit(const swr_model *m, double d, const swt_vcrit_opts *o,
                            swt_vcrit_result *r);

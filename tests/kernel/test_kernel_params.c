@@ -190,10 +190,11 @@ static void model_alloc(void **s)
     swr_params_default(&p);
     m = swr_model_alloc(&p, err, sizeof err);
     swr_result r;
-    const swr_impact bad[] = { { NAN, 1.0, 0.0, 0.0 }, { 50e-6, 0.0, 0.0, 0.0 },
-                               { 50e-6, -1.0, 0.0, 0.0 }, { 50e-6, 1.0, -1.0, 0.0 },
-                               { 50e-6, INFINITY, 0.0, 0.0 }, { 50e-6, 1.0, 0.0, NAN },
-                               { 1.0, 1.0, 0.0, 0.0 } };
+    const swr_impact bad[] = { { NAN, 1.0, 0.0, 0.0, 0.0, 0.0 }, { 50e-6, 0.0, 0.0, 0.0, 0.0, 0.0 },
+                               { 50e-6, -1.0, 0.0, 0.0, 0.0, 0.0 }, { 50e-6, 1.0, -1.0, 0.0, 0.0, 0.0 },
+                               { 50e-6, INFINITY, 0.0, 0.0, 0.0, 0.0 }, { 50e-6, 1.0, 0.0, NAN, 0.0, 0.0 },
+                               { 1.0, 1.0, 0.0, 0.0, 0.0, 0.0 }, { 50e-6, 1.0, 0.0, 0.0, NAN, 0.0 },
+                               { 50e-6, 1.0, 0.0, 0.0, 0.0, 2.0 } };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         assert_int_equal(swr_collide(m, &bad[i], &r, NULL), SWR_EINVAL);
         assert_int_equal(r.status, SWR_EINVAL);

@@ -62,7 +62,7 @@ static void collide_ok(const swr_model *m, double d, double vn, double vt, doubl
 {
     long calls = 0;
     const swr_trace tr = { 1 << 30, count_cb, &calls };
-    const swr_impact in = { d, vn, vt, omega };
+    const swr_impact in = { d, vn, vt, omega, 0.0, 0.0 };
     const swr_status st = swr_collide(m, &in, r, stepped ? &tr : NULL);
     if (st != SWR_OK)
         fail_msg("d %g vn %g vt %g: status %d (%s)", d, vn, vt, (int)st, r->msg);
@@ -428,7 +428,7 @@ static void extreme_grid(void **s)
                     for (int iv = 0; iv < 6; iv++) {
                         const double vt = (iv % 2) ? 0.5 * vs[iv] : 0.0;
                         swr_result r, r2;
-                        const swr_impact in = { ds[id], vs[iv], vt, 0.0 };
+                        const swr_impact in = { ds[id], vs[iv], vt, 0.0, 0.0, 0.0 };
                         assert_true(swr_collide(m, &in, &r, NULL) != SWR_EINVAL);
                         assert_true(swr_collide(m2, &in, &r2, NULL) != SWR_EINVAL);
                         const swr_result *rs[2] = { &r, &r2 };
@@ -532,7 +532,7 @@ static void *run_job(void *arg)
 {
     job *j = arg;
     for (int i = 0; i < 64; i++) {
-        const swr_impact in = { 10e-6 + 1.5e-6 * i, 0.2 + 0.15 * i, 0.1 * (i % 3), 0.0 };
+        const swr_impact in = { 10e-6 + 1.5e-6 * i, 0.2 + 0.15 * i, 0.1 * (i % 3), 0.0, 0.0, 0.0 };
         swr_result r;
         swr_collide(j->m, &in, &r, NULL);
         j->e_n[i] = r.e_n;
@@ -620,7 +620,7 @@ static void random_inputs(void **s)
             fail_msg("%s", err);
         for (int j = 0; j < 20; j++) {
             swr_impact in = { logu(1e-7, 0.1), logu(1e-4, 1e3), drand48() < 0.5 ? 0.0 : logu(1e-4, 1e3),
-                              drand48() < 0.7 ? 0.0 : uni(-1, 1) * logu(1, 1e6) };
+                              drand48() < 0.7 ? 0.0 : uni(-1, 1) * logu(1, 1e6), 0.0, 0.0 };
             if (fabs(in.omega) > SWR_V_MAX / (0.5 * in.d))
                 in.omega = 0.0;
             swr_result r;

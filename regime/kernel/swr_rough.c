@@ -1,0 +1,713 @@
+/* swr_rough.c - one ice sphere hitting a rough wall (wall lattice): the 3-D
+ * multi-contact integrator (swr_wall.h has the geometry, doc/kernel.md the
+ * physics and numerics).
+ *
+ * The sphere (position C, velocity v, spin w, all 3-D) meets hemispherical
+ * asperities of radius r and the base plane between them. Every contact it
+ * makes carries the whole contact model of the flat wall, with its own
+ * history: the normal law (Hertz or JKR with jump-in and snap-off,
+ * swr_normal.h) about its own R* and normal, the COR dashpot set from that
+ * contact's own approach speed (swr_damping.h; Thornton's e_p with the yield
+ * velocity of a sphere of R* and the particle's mass), the Mindlin spring with
+ * its Coulomb limit (swr_tangential.h, here as a 3-D spring kept in the
+ * contact's tangent plane) and the rolling resistance (swr_rolling.h, 3-D).
+ *
+ * Outcome, by energy. With E_esc = kinetic energy + sum over the contacts of
+ * (U_k - U_c,k) + the energy held by their springs, E_esc never grows: the
+ * damping and the sliding only remove energy, a contact that breaks leaves at
+ * U_k = U_c,k, and a contact that forms adds -U_c,k (the adhesive hysteresis).
+ * A free sphere has E_esc = its kinetic energy >= 0. So E_esc < 0 means the
+ * sphere can never leave: it sticks (it may still roll or settle among the
+ * asperities). It bounces when no contact holds it, it moves away from the
+ * base plane and its lowest point clears the highest asperity top.
+ *
+ * Numerics: velocity Verlet in units of the particle mass, the reference
+ * speed max(vn, v_adh) and the flat-wall Hertz contact time at that speed (the
+ * stiffest single contact); step 1/accuracy, divided by sqrt(n) while n
+ * contacts act together (their stiffnesses add). The dashpot impulse over a
+ * step is exact, as in swr_collide.c. Between contacts the sphere flies
+ * straight: the next touch (or the exit from the asperity layer) is found in
+ * closed form, so free flight costs no steps. Bounded by
+ * p->rough_hold contact times spent in contact and
+ * SWR_ROUGH_FLIGHTS_MAX free flights (swr_internal.h): a sphere still held
+ * then (skidding over the asperities with E_esc > 0) counts as a stick, with
+ * status SWR_STEP_BOUND.
+ */
+#include <float.h>
+#include <limits.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "swp_contact.h"
+#include "swp_cor.h"
+#include "swp_jkr.h"
+#include "swp_time.h"
+#include "swr_damping.h"
+#include "swr_internal.h"
+#include "swr_normal.h"
+#include "swr_rolling.h"
+#include "swr_wall.h"
+
+/* contacts held at once (a 100 um sphere pressed into 1 um asperities holds a few tens) */
+#define RC_MAX 256
+/* marks the base plane in a contact's index */
+#define PLANE_ID INT_MIN
+
+typedef struct {
+    int i, j;             /* asperity index, or i = PLANE_ID */
+    double a[3];          /* asperity centre (scaled) */
+    const swr_normal *nm; /* normal law of this contact */
+    double kd;            /* dashpot stiffness factor sqrt(2 E* sqrt(R*)) */
+    double alpha;         /* dashpot alpha from this contact's approach speed */
+    double x;             /* sqrt of the contact radius */
+    double delta, phi;    /* overlap and dashpot potential at the last step */
+    double dnew;          /* overlap after this step's drift */
+    double fd;            /* dashpot force at the end of the last step */
+    double fne;           /* elastic normal force */
+    double n[3];          /* unit normal (wall into sphere) */
+    double xi[3];         /* tangential spring displacement */
+    double xr[3];         /* rolling displacement */
+    double ft[3];         /* tangential force */
+    double mr[3];         /* rolling moment */
+} rc_contact;
+
+typedef struct {
+    const swr_model *m;
+    const swr_wall *w;
+    double R, r, L;         /* particle radius, asperity radius (scaled), length unit [m] */
+    double reach_a;         /* R + r: centre distance at first touch of an asperity */
+    swr_normal na, npl;     /* asperity and plane normal laws */
+    double kda, kdp;        /* dashpot factors */
+    double Is;              /* moment of inertia */
+    double Gs, mu, xic;     /* scaled G*, friction, critical rolling displacement */
+    double V, T, mass;      /* scales */
+    double margin;          /* extra search distance of new_contacts */
+    double guard;           /* no new contact before the sphere has moved this far */
+    double moved;           /* distance moved since the last search */
+    rc_contact c[RC_MAX];
+    int nc;
+} rc_state;
+
+static double dot(const double a[3], const double b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static void cross(const double a[3], const double b[3], double o[3])
+{
+    o[0] = a[1] * b[2] - a[2] * b[1];
+    o[1] = a[2] * b[0] - a[0] * b[2];
+    o[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* Asperity centre in scaled units. */
+static void asp(const rc_state *s, int i, int j, double a[3])
+{
+    swr_wall_asperity(s->w, i, j, a);
+    a[0] /= s->L;
+    a[1] /= s->L;
+    a[2] /= s->L;
+}
+
+/* Overlap and normal of the contact with the asperity centred at a (NULL:
+ * the base plane) for the sphere at C. */
+static double geometry(const rc_state *s, const double *a, const double C[3], double n[3])
+{
+    if (!a) {
+        n[0] = n[1] = 0.0;
+        n[2] = 1.0;
+        return s->R - C[2];
+    }
+    const double d[3] = { C[0] - a[0], C[1] - a[1], C[2] - a[2] };
+    const double D = sqrt(dot(d, d));
+    if (D > 0.0) {
+        const double inv = 1.0 / D;
+        n[0] = d[0] * inv;
+        n[1] = d[1] * inv;
+        n[2] = d[2] * inv;
+    } else {
+        n[0] = n[1] = 0.0;
+        n[2] = 1.0;
+    }
+    return s->reach_a - D;
+}
+
+static int find(const rc_state *s, int i, int j)
+{
+    for (int k = 0; k < s->nc; k++)
+        if (s->c[k].i == i && s->c[k].j == j)
+            return k;
+    return -1;
+}
+
+/* Plastic COR of one contact: Thornton's e_p with the yield velocity of a
+ * sphere of this R* and the particle's mass (the flat wall's V_y at R* = R). */
+static double contact_target(const rc_state *s, double Rc_si, double vi_si)
+{
+    const swr_params *p = &s->m->p;
+    if ((p->cor == SWR_COR_THORNTON || p->cor == SWR_COR_THORNTON_ASYMPTOTE)
+        && p->cor_pair == SWR_PAIR_WALL && Rc_si < s->R * s->L) {
+        const double vy = swp_yield_velocity_pp(swp_limiting_pressure(p->sigma_y), s->m->Estar,
+                                                Rc_si, s->mass);
+        return p->cor == SWR_COR_THORNTON ? swp_cor_thornton(vy / vi_si)
+                                          : swp_cor_thornton_pp_asymptote(vy / vi_si);
+    }
+    return swr_damping_target(p, s->m->Estar, s->R * s->L, s->mass, vi_si);
+}
+
+/* Open a contact at its first touch (delta >= 0): JKR jumps in to a_jump. */
+static int open_contact(rc_state *s, int i, int j, const double *a, const double v[3],
+                        double delta, const double n[3])
+{
+    if (s->nc >= RC_MAX)
+        return -1;
+    rc_contact *c = &s->c[s->nc++];
+    memset(c, 0, sizeof *c);
+    c->i = i;
+    c->j = j;
+    if (a)
+        memcpy(c->a, a, sizeof c->a);
+    c->nm = i == PLANE_ID ? &s->npl : &s->na;
+    c->kd = i == PLANE_ID ? s->kdp : s->kda;
+    memcpy(c->n, n, sizeof c->n);
+    c->delta = delta;
+    c->x = delta > 0.0 ? swr_normal_x(c->nm, delta, 0.0) : c->nm->xj;
+    if (c->nm->gamma > 0.0 && c->x < c->nm->xj)
+        c->x = c->nm->xj;
+    const double un = -dot(v, n) * s->V; /* approach speed [m/s] */
+    const swr_params *p = &s->m->p;
+    if (un > 0.0 && p->cor != SWR_COR_ELASTIC) {
+        const double e = contact_target(s, c->nm->R * s->L, un);
+        c->alpha = p->dashpot == SWR_DASHPOT_BOTH ? swr_damping_alpha_both(e)
+                 : p->cor == SWR_COR_CONSTANT ? s->m->alpha_const : swr_damping_alpha(e);
+    }
+    c->phi = delta > 0.0 ? 0.8 * c->alpha * c->kd * delta * sqrt(sqrt(delta)) : 0.0;
+    return 0;
+}
+
+/* Elastic energy of a contact relative to its jump-in, and what it takes to
+ * break it (U_c - U). */
+static double contact_energy(const rc_contact *c)
+{
+    return swr_normal_energy(c->nm, c->x);
+}
+
+/* Closed-form free flight from C with velocity v: the time to the first touch
+ * of an asperity or the base plane (*hit_i, *hit_j), or to the exit from the
+ * asperity layer (returns the time with *hit_i = INT_MAX). INFINITY when
+ * neither happens (moving parallel inside the layer without meeting anything
+ * within SWR_ROUGH_FLIGHT_CELLS spacings). */
+#define SWR_ROUGH_FLIGHT_CELLS 4096
+static double free_flight(const rc_state *s, const double C[3], const double v[3], int *hit_i,
+                          int *hit_j)
+{
+    const double top = swr_wall_top(s->w) / s->L;
+    const double zc = C[2];
+    double t_exit = INFINITY, t_plane = INFINITY;
+    if (v[2] > 0.0)
+        t_exit = (top + s->R - zc) / v[2];
+    else if (v[2] < 0.0)
+        t_plane = (zc - s->R) / -v[2];
+    if (t_exit < 0.0)
+        t_exit = 0.0;
+    if (t_plane < 0.0)
+        t_plane = 0.0;
+    double t_end = t_exit < t_plane ? t_exit : t_plane;
+    *hit_i = v[2] > 0.0 ? INT_MAX : PLANE_ID;
+    *hit_j = 0;
+    const double vh = hypot(v[0], v[1]);
+    const double sp = s->w->s / s->L;
+    /* chunks of one spacing of horizontal travel */
+    const double tchunk = vh > 0.0 ? sp / vh : t_end;
+    double best = t_end;
+    double t0 = 0.0;
+    for (long k = 0; k < SWR_ROUGH_FLIGHT_CELLS; k++) {
+        if (!(t0 < best))
+            break;
+        double t1 = t0 + tchunk;
+        if (!(t1 < best))
+            t1 = best;
+        if (!isfinite(t1))
+            t1 = t0 + (isfinite(tchunk) ? tchunk : 0.0);
+        /* lowest centre height over the chunk sets how far sideways it reaches */
+        const double zlo = fmin(zc + v[2] * t0, zc + v[2] * t1);
+        const double hz = zlo; /* asperity centres lie at z <= 0 */
+        const double reach2 = s->reach_a * s->reach_a - (hz > 0.0 ? hz * hz : 0.0);
+        if (reach2 > 0.0) {
+            const double rh = sqrt(reach2);
+            const double xa = C[0] + v[0] * t0, xb = C[0] + v[0] * t1;
+            const double ya = C[1] + v[1] * t0, yb = C[1] + v[1] * t1;
+            const double xlo = fmin(xa, xb) - rh, xhi = fmax(xa, xb) + rh;
+            const double ylo = fmin(ya, yb) - rh, yhi = fmax(ya, yb) + rh;
+            int j0, j1;
+            swr_wall_rows(s->w, ylo * s->L, yhi * s->L, &j0, &j1);
+            for (int j = j0; j <= j1; j++) {
+                int i0, i1;
+                swr_wall_row_range(s->w, j, xlo * s->L, xhi * s->L, &i0, &i1);
+                for (int i = i0; i <= i1; i++) {
+                    if (find(s, i, j) >= 0)
+                        continue;
+                    double a[3];
+                    asp(s, i, j, a);
+                    /* |C + v t - a| = reach: a t^2 + 2 b t + c = 0 */
+                    const double d[3] = { C[0] - a[0], C[1] - a[1], C[2] - a[2] };
+                    const double qa = dot(v, v), qb = dot(d, v);
+                    const double qc = dot(d, d) - s->reach_a * s->reach_a;
+                    if (qc <= 0.0) {
+                        /* already touching (e.g. at the start on a sunken lattice) */
+                        if (qb < 0.0 && 0.0 < best) {
+                            best = 0.0;
+                            *hit_i = i;
+                            *hit_j = j;
+                        }
+                        continue;
+                    }
+                    const double disc = qb * qb - qa * qc;
+                    if (!(qa > 0.0) || disc < 0.0 || qb >= 0.0)
+                        continue;
+                    const double t = qc / (-qb + sqrt(disc)); /* smaller root, stable form */
+                    if (t < best) {
+                        best = t;
+                        *hit_i = i;
+                        *hit_j = j;
+                    }
+                }
+            }
+        }
+        t0 = t1;
+        if (!isfinite(t_end) && k + 1 == SWR_ROUGH_FLIGHT_CELLS && !isfinite(best))
+            return INFINITY;
+    }
+    return best;
+}
+
+/* Collect every asperity that touches now (delta >= 0) and is not a contact
+ * yet, and the plane; open them. The search also notes the smallest gap to
+ * any other surface within s->margin: until the sphere has moved that far no
+ * new contact can form, and the next searches are skipped (new_contacts_due).
+ * Returns -1 when RC_MAX is exceeded. */
+static int new_contacts(rc_state *s, const double C[3], const double v[3])
+{
+    const double far = s->reach_a + s->margin;
+    double guard = s->margin;
+    const double hz = C[2];
+    const double reach2 = far * far - (hz > 0.0 ? hz * hz : 0.0);
+    if (reach2 > 0.0) {
+        const double rh = sqrt(reach2);
+        int j0, j1;
+        swr_wall_rows(s->w, (C[1] - rh) * s->L, (C[1] + rh) * s->L, &j0, &j1);
+        for (int j = j0; j <= j1; j++) {
+            int i0, i1;
+            swr_wall_row_range(s->w, j, (C[0] - rh) * s->L, (C[0] + rh) * s->L, &i0, &i1);
+            for (int i = i0; i <= i1; i++) {
+                double a[3], n[3];
+                asp(s, i, j, a);
+                const double d[3] = { C[0] - a[0], C[1] - a[1], C[2] - a[2] };
+                if (dot(d, d) > far * far)
+                    continue;
+                const double dl = geometry(s, a, C, n);
+                if (find(s, i, j) >= 0)
+                    continue;
+                if (dl >= 0.0) {
+                    if (open_contact(s, i, j, a, v, dl, n) != 0)
+                        return -1;
+                } else if (-dl < guard) {
+                    guard = -dl;
+                }
+            }
+        }
+    }
+    if (find(s, PLANE_ID, 0) < 0) {
+        double n[3];
+        const double dl = geometry(s, NULL, C, n);
+        if (dl >= 0.0) {
+            if (open_contact(s, PLANE_ID, 0, NULL, v, dl, n) != 0)
+                return -1;
+        } else if (-dl < guard) {
+            guard = -dl;
+        }
+    }
+    s->guard = guard;
+    s->moved = 0.0;
+    return 0;
+}
+
+/* Rotate a spring vector into the tangent plane of n, keeping its length. */
+static void to_plane(double xi[3], const double n[3])
+{
+    const double l0 = sqrt(dot(xi, xi));
+    if (!(l0 > 0.0))
+        return;
+    const double p = dot(xi, n);
+    for (int k = 0; k < 3; k++)
+        xi[k] -= p * n[k];
+    const double l1 = sqrt(dot(xi, xi));
+    const double f = l1 > 0.0 ? l0 / l1 : 0.0;
+    for (int k = 0; k < 3; k++)
+        xi[k] *= f;
+}
+
+static void add_msg(swr_result *r, const char *text)
+{
+    const size_t len = strlen(r->msg);
+    if (len + 3 >= sizeof r->msg)
+        return;
+    snprintf(r->msg + len, sizeof r->msg - len, "%s%s", len ? "; " : "", text);
+}
+
+/* Energies of the current state: kinetic + contact potentials + springs. */
+static double state_energy(const rc_state *s, const double v[3], const double w[3],
+                           double *esc)
+{
+    double e = 0.5 * dot(v, v) + 0.5 * s->Is * dot(w, w), below = 0.0;
+    for (int k = 0; k < s->nc; k++) {
+        const rc_contact *c = &s->c[k];
+        const double a = c->x * c->x;
+        double sp = 0.5 * 8.0 * s->Gs * a * dot(c->xi, c->xi);
+        if (c->nm->Fc > 0.0) {
+            const double ra = a / c->nm->a0;
+            sp += 0.5 * 4.0 * c->nm->Fc * ra * sqrt(ra) * dot(c->xr, c->xr) / s->R;
+        }
+        e += contact_energy(c) + sp;
+        below += c->nm->Uc;
+    }
+    *esc = e - below;
+    return e;
+}
+
+swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_result *r,
+                             const swr_trace *trace)
+{
+    const swr_params *p = &m->p;
+    static const rc_state zero;
+    rc_state st = zero, *s = &st;
+    s->m = m;
+    s->w = &m->wall;
+    const double R_si = 0.5 * in->d, r_si = m->wall.r;
+    const double mass = p->rho * (4.0 / 3.0) * M_PI * R_si * R_si * R_si;
+    const double Ra_si = swr_wall_rstar(&m->wall, R_si);
+    const double gam = m->adhesive ? p->gamma : 0.0;
+    /* adhesive speed scale: the flat contact's separation energy */
+    const double Uc_si = m->adhesive ? swp_jkr_separation_energy(gam, m->Estar, R_si) : 0.0;
+    const double v_adh = sqrt(2.0 * Uc_si / mass);
+    const double V = in->vn > v_adh ? in->vn : v_adh;
+    const double T = swp_hertz_contact_time(mass, R_si, m->Estar, V);
+    const double L = V * T;
+    const double sE = L * T * T / mass;
+    s->V = V;
+    s->T = T;
+    s->L = L;
+    s->mass = mass;
+    s->R = R_si / L;
+    s->r = r_si / L;
+    s->reach_a = s->R + s->r;
+    swr_normal_init(&s->na, Ra_si / L, m->Estar * sE, gam * T * T / mass);
+    swr_normal_init(&s->npl, s->R, m->Estar * sE, gam * T * T / mass);
+    s->kda = sqrt(2.0 * m->Estar * sE * sqrt(s->na.R));
+    s->kdp = sqrt(2.0 * m->Estar * sE * sqrt(s->npl.R));
+    s->Is = 0.4 * s->R * s->R;
+    s->Gs = m->Gstar * sE;
+    s->mu = p->mu;
+    s->xic = p->xi_crit / L;
+    s->margin = 0.5 * (s->r < s->R ? s->r : s->R);
+
+    r->e_target = contact_target(s, Ra_si, in->vn);
+    if (m->adhesive) {
+        const double lam = swp_tabor(gam, m->Estar, Ra_si, p->z0);
+        if (!(lam > SWP_TABOR_JKR_MIN)) {
+            char wmsg[96];
+            snprintf(wmsg, sizeof wmsg, "Tabor parameter %.3g < %g: JKR outside its range (DMT/Maugis)",
+                     lam, SWP_TABOR_JKR_MIN);
+            add_msg(r, wmsg);
+        }
+    }
+
+    /* step: 1/accuracy of the contact time, shortened by the damping's
+     * loading-time factor at the impact's own COR, as on the flat wall */
+    const double alpha0 = p->cor == SWR_COR_ELASTIC ? 0.0
+                        : p->dashpot == SWR_DASHPOT_BOTH ? swr_damping_alpha_both(r->e_target)
+                        : p->cor == SWR_COR_CONSTANT ? m->alpha_const
+                                                     : swr_damping_alpha(r->e_target);
+    const double h0 = swr_damping_time_factor(alpha0) / p->accuracy;
+    double h_min = h0;
+    /* the step shrinks to h0/16 with RC_MAX contacts */
+    r->max_steps = (long)ceil(p->rough_hold * 16.0 / h0) + 16;
+    double t_in = 0.0;     /* time in contact */
+
+    /* --- start: lowest point on the plane of the highest tops, centre above (x, y) --- */
+    double C[3] = { in->x / L, in->y / L, (swr_wall_top(s->w) + R_si) / L };
+    double v[3] = { in->vt / V, 0.0, -in->vn / V };
+    /* spin about the axis that makes the contact point slide along +x */
+    double w[3] = { 0.0, -in->omega * T, 0.0 };
+    double esc;
+    const double E0 = state_energy(s, v, w, &esc);
+    double eref = E0;
+    double w_diss = 0.0;   /* dashpot, sliding, rolling work and the energy left at breaking */
+    double err = 0.0, dmax = 0.0, t = 0.0, t_first = -1.0;
+    long n = 0, flights = 0, contacts = 0;
+    enum { OPEN, BOUNCE, STICK } outcome = OPEN;
+    const int stride = trace && trace->fn && trace->stride > 0 ? trace->stride : 0;
+    int overflow = 0;
+
+    while (outcome == OPEN) {
+        if (s->nc == 0) {
+            /* --- free flight to the next touch or out of the layer --- */
+            if (++flights > SWR_ROUGH_FLIGHTS_MAX)
+                break;
+            int hi, hj;
+            const double tf = free_flight(s, C, v, &hi, &hj);
+            if (!isfinite(tf)) {
+                outcome = BOUNCE;
+                add_msg(r, "left parallel to the wall inside the asperity layer");
+                break;
+            }
+            for (int q = 0; q < 3; q++)
+                C[q] += v[q] * tf;
+            t += tf;
+            if (hi == INT_MAX) {
+                outcome = BOUNCE;
+                break;
+            }
+            double nn[3], ah[3];
+            if (hi != PLANE_ID)
+                asp(s, hi, hj, ah);
+            const double *ap = hi == PLANE_ID ? NULL : ah;
+            const double dl = geometry(s, ap, C, nn);
+            if (open_contact(s, hi, hj, ap, v, dl > 0.0 ? dl : 0.0, nn) != 0
+                || new_contacts(s, C, v) != 0) {
+                overflow = 1;
+                break;
+            }
+            contacts += s->nc;
+            if (t_first < 0.0)
+                t_first = t;
+            for (int k = 0; k < s->nc; k++)
+                s->c[k].fne = swr_normal_force(s->c[k].nm, s->c[k].x);
+            state_energy(s, v, w, &esc);
+            if (esc < 0.0) {
+                outcome = STICK;
+                break;
+            }
+        }
+        if (t_in >= p->rough_hold || n >= r->max_steps)
+            break;
+        const double h = h0 / sqrt((double)s->nc);
+        const double h2 = 0.5 * h;
+        if (h < h_min)
+            h_min = h;
+        /* --- opening half kick with the forces of the last step --- */
+        double F[3] = { 0.0, 0.0, 0.0 }, M[3] = { 0.0, 0.0, 0.0 };
+        for (int k = 0; k < s->nc; k++) {
+            const rc_contact *c = &s->c[k];
+            const double fn = c->fne + c->fd;
+            const double arm[3] = { -s->R * c->n[0], -s->R * c->n[1], -s->R * c->n[2] };
+            double tq[3];
+            cross(arm, c->ft, tq);
+            for (int q = 0; q < 3; q++) {
+                F[q] += fn * c->n[q] + c->ft[q];
+                M[q] += tq[q] + c->mr[q];
+            }
+        }
+        double vh[3], wh[3];
+        for (int q = 0; q < 3; q++) {
+            vh[q] = v[q] + h2 * F[q];
+            wh[q] = w[q] + h2 * M[q] / s->Is;
+        }
+        /* --- drift --- */
+        for (int q = 0; q < 3; q++)
+            C[q] += h * vh[q];
+        t += h;
+        t_in += h;
+        n++;
+        /* --- contacts at the new position: breaking, then the laws --- */
+        int kk = 0;
+        double u_start[RC_MAX];
+        for (int k = 0; k < s->nc; k++) {
+            rc_contact *c = &s->c[k];
+            double nn[3];
+            const double dl = geometry(s, c->i == PLANE_ID ? NULL : c->a, C, nn);
+            const int broken = c->nm->gamma > 0.0 ? dl < c->nm->delta_c : dl <= 0.0;
+            if (broken) {
+                /* the contact's stored energy (U_c for JKR) and its springs are lost */
+                const double a = c->x * c->x;
+                double e_sp = 0.5 * 8.0 * s->Gs * a * dot(c->xi, c->xi);
+                if (c->nm->Fc > 0.0) {
+                    const double ra = a / c->nm->a0;
+                    e_sp += 0.5 * 4.0 * c->nm->Fc * ra * sqrt(ra) * dot(c->xr, c->xr) / s->R;
+                }
+                w_diss += contact_energy(c) + e_sp;
+                s->guard = 0.0; /* it may touch again: search from the next step */
+                if (c->fd != 0.0) /* undo the opening kick's dashpot part */
+                    for (int q = 0; q < 3; q++)
+                        vh[q] -= h2 * c->fd * c->n[q];
+                continue;
+            }
+            u_start[kk] = -dot(v, nn);  /* approach speed at the step's start */
+            if (kk != k)
+                s->c[kk] = *c;
+            c = &s->c[kk++];
+            memcpy(c->n, nn, sizeof c->n);
+            c->dnew = dl;
+            to_plane(c->xi, nn);
+            to_plane(c->xr, nn);
+            c->x = swr_normal_x(c->nm, dl, c->x);
+            c->fne = swr_normal_force(c->nm, c->x);
+            /* tangential spring: slip of the contact point at mid-step */
+            const double arm[3] = { -s->R * nn[0], -s->R * nn[1], -s->R * nn[2] };
+            double vc[3];
+            cross(wh, arm, vc);
+            for (int q = 0; q < 3; q++)
+                vc[q] += vh[q];
+            const double vcn = dot(vc, nn);
+            const double a = c->x * c->x;
+            const double kt = 8.0 * s->Gs * a;
+            for (int q = 0; q < 3; q++)
+                c->xi[q] += h * (vc[q] - vcn * nn[q]);
+            const double flim = s->mu * fabs(c->fne + c->fd + 2.0 * c->nm->Fc);
+            const double x2 = dot(c->xi, c->xi);
+            if (kt * kt * x2 > flim * flim) {
+                const double f = flim / (kt * sqrt(x2));
+                w_diss += 0.5 * kt * x2 * (1.0 - f * f);
+                for (int q = 0; q < 3; q++)
+                    c->xi[q] *= f;
+            }
+            for (int q = 0; q < 3; q++)
+                c->ft[q] = -kt * c->xi[q];
+            /* rolling resistance (adhesive contacts): v_r = R (w x n) */
+            if (c->nm->Fc > 0.0) {
+                double vr[3];
+                cross(wh, nn, vr);
+                const double vrn = dot(vr, nn);
+                for (int q = 0; q < 3; q++)
+                    c->xr[q] += h * s->R * (vr[q] - vrn * nn[q]);
+                const double ra = a / c->nm->a0;
+                const double kr = 4.0 * c->nm->Fc * ra * sqrt(ra);
+                const double r2 = dot(c->xr, c->xr);
+                if (r2 > s->xic * s->xic) {
+                    const double f = s->xic / sqrt(r2);
+                    w_diss += 0.5 * kr * r2 * (1.0 - f * f) / s->R;
+                    for (int q = 0; q < 3; q++)
+                        c->xr[q] *= f;
+                }
+                double nx[3];
+                cross(nn, c->xr, nx);
+                for (int q = 0; q < 3; q++)
+                    c->mr[q] = -kr * nx[q];
+            }
+            if (dl > dmax)
+                dmax = dl;
+        }
+        s->nc = kk;
+        /* --- closing half kick with the new elastic and tangential forces --- */
+        for (int q = 0; q < 3; q++) {
+            F[q] = 0.0;
+            M[q] = 0.0;
+        }
+        for (int k = 0; k < s->nc; k++) {
+            const rc_contact *c = &s->c[k];
+            const double arm[3] = { -s->R * c->n[0], -s->R * c->n[1], -s->R * c->n[2] };
+            double tq[3];
+            cross(arm, c->ft, tq);
+            for (int q = 0; q < 3; q++) {
+                F[q] += c->fne * c->n[q] + c->ft[q];
+                M[q] += tq[q] + c->mr[q];
+            }
+        }
+        for (int q = 0; q < 3; q++) {
+            v[q] = vh[q] + h2 * F[q];
+            w[q] = wh[q] + h2 * M[q] / s->Is;
+        }
+        /* --- dashpots: each contact's impulse over the step is exact,
+         * int c(delta) u dt = Phi(delta1) - Phi(delta0), Phi = (4/5) alpha kd
+         * delta^(5/4); the opening kick took h/2 F_d(old), the rest is here --- */
+        double wd_step = 0.0;
+        for (int k = 0; k < s->nc; k++) {
+            rc_contact *c = &s->c[k];
+            const double dl = c->dnew;
+            const double phi = dl > 0.0 ? 0.8 * c->alpha * c->kd * dl * sqrt(sqrt(dl)) : 0.0;
+            const double uh = -dot(vh, c->n);   /* approach speed at mid-step */
+            const double fd_old = c->fd;
+            c->fd = 0.0;
+            if (c->alpha > 0.0
+                && (uh > 0.0 || (p->dashpot == SWR_DASHPOT_BOTH && (dl > 0.0 || c->delta > 0.0)))) {
+                const double ue = -dot(v, c->n);
+                const double imp = phi - c->phi - h2 * fd_old;
+                double u = ue - imp;
+                if (ue > 0.0 ? u < 0.0 : (ue < 0.0 && u > 0.0))
+                    u = 0.0; /* the dashpot stops the motion, it never reverses it */
+                for (int q = 0; q < 3; q++)
+                    v[q] += (ue - u) * c->n[q];
+                wd_step += (phi - c->phi) * 0.5 * (u_start[k] + (ue > 0.0 ? fmax(u, 0.0) : fmin(u, 0.0)));
+                if ((u > 0.0 || p->dashpot == SWR_DASHPOT_BOTH) && dl > 0.0)
+                    c->fd = c->alpha * c->kd * sqrt(sqrt(dl)) * u;
+            } else if (fd_old != 0.0) {
+                /* loading ended: undo the opening kick's dashpot part */
+                for (int q = 0; q < 3; q++)
+                    v[q] -= h2 * fd_old * c->n[q];
+            }
+            c->phi = phi;
+            c->delta = dl;
+        }
+        w_diss += wd_step;
+        /* --- contacts that form now (searched once the sphere may have
+         * closed the smallest gap seen at the last search) --- */
+        const int before = s->nc;
+        s->moved += h * sqrt(dot(vh, vh));
+        if (s->moved >= s->guard && new_contacts(s, C, v) != 0) {
+            overflow = 1;
+            break;
+        }
+        for (int k = before; k < s->nc; k++)
+            s->c[k].fne = swr_normal_force(s->c[k].nm, s->c[k].x);
+        contacts += s->nc - before;
+        /* --- energy balance and the decision --- */
+        const double e = state_energy(s, v, w, &esc);
+        const double ke = 0.5 * dot(v, v) + 0.5 * s->Is * dot(w, w);
+        if (ke > eref)
+            eref = ke;
+        for (int k = before; k < s->nc; k++)
+            if (s->c[k].nm->Uc > eref)
+                eref = s->c[k].nm->Uc;
+        const double e_err = fabs(e + w_diss - E0) / eref;
+        if (e_err > err)
+            err = e_err;
+        if (stride && n % stride == 0) {
+            double fz = 0.0, amax = 0.0, dm = 0.0;
+            for (int k = 0; k < s->nc; k++) {
+                fz += (s->c[k].fne + s->c[k].fd) * s->c[k].n[2] + s->c[k].ft[2];
+                amax = fmax(amax, s->c[k].x * s->c[k].x);
+                dm = fmax(dm, s->c[k].delta);
+            }
+            trace->fn(trace->ctx, t * T, dm * L, -v[2] * V, fz * mass * L / (T * T), amax * L,
+                      v[0] * V, -w[1] / T);
+        }
+        if (s->nc > 0 && esc < 0.0)
+            outcome = STICK;
+    }
+
+    r->status = SWR_OK;
+    if (overflow) {
+        r->status = SWR_STEP_BOUND;
+        add_msg(r, "more than 256 asperity contacts at once: outcome is the best estimate");
+    } else if (outcome == OPEN) {
+        r->status = SWR_STEP_BOUND;
+        add_msg(r, outcome == OPEN && s->nc > 0
+                       ? "time bound (rough_hold contact times in contact) reached: still held, counted as stick"
+                       : "bound on free flights reached: outcome is the best estimate");
+    }
+    if (outcome == OPEN)
+        outcome = s->nc > 0 ? STICK : BOUNCE;
+    r->steps = n;
+    r->dt = h_min * T;
+    r->contacts = contacts;
+    r->contact_kept = r->stick = outcome == STICK;
+    r->e_n = outcome == BOUNCE ? fmax(v[2], 0.0) * V / in->vn : 0.0;
+    if (in->vt > 0.0 && outcome == BOUNCE)
+        r->e_t = v[0] * V / in->vt;
+    r->t_contact = t_first >= 0.0 ? (t - t_first) * T : 0.0;
+    r->delta_max = dmax * L;
+    r->energy_err = err;
+    r->t_rest = r->s_rest = 0.0;
+    return r->status;
+}
