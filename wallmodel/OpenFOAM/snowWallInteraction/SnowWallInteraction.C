@@ -20,7 +20,7 @@ void Foam::SnowWallInteraction<CloudType>::check
     if (rc != SWW_OK)
     {
         FatalIOErrorInFunction(dict)
-            << "snowWallInteraction: " << sww_errmsg(m)
+            << "snowWallInteraction: " << context_.c_str() << sww_errmsg(m)
             << exit(FatalIOError);
     }
 }
@@ -185,6 +185,112 @@ void Foam::SnowWallInteraction<CloudType>::applyGates
             rhoAir_ = g.lookupOrDefault<scalar>("rhoAir", -1.0);
         }
     }
+}
+
+
+template<class CloudType>
+void Foam::SnowWallInteraction<CloudType>::setupWallRegimes
+(
+    const dictionary& cd
+)
+{
+    // Every snow patch decides with the main regime unless a wallRegimes
+    // entry selects it: that entry's regime, read and gated exactly as the
+    // main one (readRegime, applyGates)
+    const label n = snowPatches_.size();
+    slotModel_.setSize(n, model_);
+    if (!cd.found("wallRegimes"))
+    {
+        return;
+    }
+    const polyBoundaryMesh& bm = this->owner().mesh().boundaryMesh();
+    const dictionary& wr = cd.subDict("wallRegimes");
+    labelList owner(n, -1);
+    for (const entry& e : wr)
+    {
+        const word name(e.keyword());
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(wr)
+                << "snowWallInteraction: wallRegimes entry '" << name
+                << "' is not a sub-dictionary { patches (...); #include "
+                << "\"regime-....coeffs\" }" << exit(FatalIOError);
+        }
+        const dictionary& ed = e.dict();
+        if (!ed.found("patches"))
+        {
+            FatalIOErrorInFunction(ed)
+                << "snowWallInteraction: wallRegimes entry '" << name
+                << "': missing 'patches' (the snow patches it applies to)"
+                << exit(FatalIOError);
+        }
+        if (!ed.isDict("regime"))
+        {
+            FatalIOErrorInFunction(ed)
+                << "snowWallInteraction: wallRegimes entry '" << name
+                << "': missing sub-dictionary 'regime': add  #include "
+                << "\"regime-....coeffs\"  (written by snowregime map)"
+                << exit(FatalIOError);
+        }
+        const wordRes sel(ed.get<wordRes>("patches"));
+
+        const label k = patchModels_.size();
+        sww_model* m = sww_alloc();
+        if (!m)
+        {
+            FatalErrorInFunction << "out of memory" << exit(FatalError);
+        }
+        patchModels_.append(m);
+        patchModelNames_.append(name);
+        context_ = "wallRegimes " + name + ": ";
+        readRegime(m, ed.subDict("regime"));
+        applyGates(m, cd);
+        context_.clear();
+
+        forAll(sel, j)
+        {
+            bool hit = false;
+            forAll(snowPatches_, si)
+            {
+                if (sel[j].match(bm[snowPatches_[si]].name())) hit = true;
+            }
+            if (!hit)
+            {
+                FatalIOErrorInFunction(ed)
+                    << "snowWallInteraction: wallRegimes entry '" << name
+                    << "': patch pattern '" << sel[j] << "' matches no snow "
+                    << "patch" << exit(FatalIOError);
+            }
+        }
+        Info<< "    snowWallInteraction: wallRegimes " << name << ": patches";
+        forAll(snowPatches_, si)
+        {
+            const word& pn = bm[snowPatches_[si]].name();
+            if (!sel.match(pn)) continue;
+            if (owner[si] >= 0)
+            {
+                FatalIOErrorInFunction(wr)
+                    << "snowWallInteraction: snow patch " << pn << " is "
+                    << "matched by two wallRegimes entries, '"
+                    << patchModelNames_[owner[si]] << "' and '" << name
+                    << "': a patch takes one regime" << exit(FatalIOError);
+            }
+            owner[si] = k;
+            slotModel_[si] = m;
+            Info<< ' ' << pn;
+        }
+        char desc[1024];
+        sww_describe(m, desc, sizeof desc);
+        Info<< "; " << (sww_probability_table(m, nullptr, nullptr)
+            ? "stick probability table (rough wall); " : "")
+            << "regime " << desc << endl;
+    }
+    Info<< "    snowWallInteraction: main regime on the snow patches";
+    forAll(snowPatches_, si)
+    {
+        if (owner[si] < 0) Info<< ' ' << bm[snowPatches_[si]].name();
+    }
+    Info<< endl;
 }
 
 
@@ -364,6 +470,7 @@ void Foam::SnowWallInteraction<CloudType>::setup()
         }
         Info<< endl;
     }
+    setupWallRegimes(cd);
     nImpact_.setSize(n, 0);
     nStick_.setSize(n, 0);
     nBounce_.setSize(n, 0);
@@ -514,6 +621,10 @@ Foam::SnowWallInteraction<CloudType>::SnowWallInteraction
     patchData_(cloud.mesh(), this->coeffDict()),
     groupType_(),
     model_(nullptr),
+    patchModels_(),
+    patchModelNames_(),
+    slotModel_(),
+    context_(),
     covered_(nullptr),
     coverMass_(-1),
     removeStuck_(true),
@@ -541,6 +652,10 @@ Foam::SnowWallInteraction<CloudType>::SnowWallInteraction
     patchData_(pim.patchData_),
     groupType_(),
     model_(nullptr),
+    patchModels_(),
+    patchModelNames_(),
+    slotModel_(),
+    context_(),
     covered_(nullptr),
     coverMass_(-1),
     removeStuck_(true),
@@ -592,6 +707,10 @@ template<class CloudType>
 Foam::SnowWallInteraction<CloudType>::~SnowWallInteraction()
 {
     sww_free(model_);
+    for (sww_model* m : patchModels_)
+    {
+        sww_free(m);
+    }
     sww_free(covered_);
 }
 
@@ -699,6 +818,8 @@ bool Foam::SnowWallInteraction<CloudType>::correct
     in.u = rnd_.sample01<scalar>();
     if (in.u >= 1) in.u = 0;
 
+    // the patch's own bare-wall regime (the main one or a wallRegimes entry's)
+    const sww_model* bare = slotModel_[s];
     sww_outcome out;
     int rc;
     if (covered_ && buildUpOn_[s])
@@ -708,11 +829,11 @@ bool Foam::SnowWallInteraction<CloudType>::correct
         (
             deposit().boundaryField()[pp.index()][facei], coverMass_
         );
-        rc = sww_decide_blend(model_, covered_, w, &in, &out);
+        rc = sww_decide_blend(bare, covered_, w, &in, &out);
     }
     else
     {
-        rc = sww_decide(model_, &in, &out);
+        rc = sww_decide(bare, &in, &out);
     }
     if (rc != SWW_OK)
     {
