@@ -8,7 +8,11 @@
  * constant tangential gate, with the adhesion shear gate, and, when the file
  * has the oblique table (snowregime map --vt 0,...), the regime tangential
  * gate alone; and sww_decide_blend with a half-covered face (the file as both
- * regimes). Exit 2 on bad input.
+ * regimes). When the file has no stick-probability table (rough wall), the
+ * same map with a synthetic one of snowregime map's default grid (46
+ * diameters 10-100 um linear x 50 speeds 0.1-10 m/s log; p a logistic step
+ * across the file's interface) against the sharp map, gates off: over the
+ * impacts above and over impacts all inside the table. Exit 2 on bad input.
  */
 #include "sww.h"
 
@@ -66,8 +70,10 @@ int main(int argc, char **argv)
             puts("Usage: sww_bench [--help] [--calls N] [--repeats R] REGIME_FILE\n\n"
                  "Median time per sww_decide call [ns] for N impacts (default 1000000),\n"
                  "R repeats (default 7, at most 63): gates off, tangential gate on,\n"
-                 "both gates on (adhesion shear gate), and the regime tangential gate\n"
-                 "when the file has the oblique table. Exit status 2 on bad input.");
+                 "both gates on (adhesion shear gate), the regime tangential gate\n"
+                 "when the file has the oblique table, the build-up blend, and a\n"
+                 "synthetic stick-probability table (46 x 50) against the sharp map\n"
+                 "when the file has none. Exit status 2 on bad input.");
             return 0;
         }
         if ((!strcmp(argv[i], "--calls") || !strcmp(argv[i], "--repeats")) && i + 1 < argc) {
@@ -135,6 +141,56 @@ int main(int argc, char **argv)
                f[0], f[1], f[2]);
     }
     sww_free(c);
+    /* the rough wall's probability table against the sharp map */
+    size_t pnd, pnv;
+    if (sww_probability_table(m, &pnd, &pnv)) {
+        printf("(the file has a stick-probability table %zu x %zu: every line above uses it)\n",
+               pnd, pnv);
+    } else {
+        enum { ND = 46, NV = 50 };
+        static double pd[ND], pv[NV], pp[ND * NV];
+        for (int i = 0; i < ND; i++)
+            pd[i] = 10e-6 + 90e-6 * i / (ND - 1);
+        for (int j = 0; j < NV; j++)
+            pv[j] = 0.1 * pow(100.0, (double)j / (NV - 1));
+        for (int i = 0; i < ND; i++)
+            for (int j = 0; j < NV; j++)
+                pp[i * NV + j] = 1.0 / (1.0 + exp(log(pd[i] / sww_dcrit(m, pv[j])) / 0.3));
+        sww_model *r = sww_alloc();
+        if (r && sww_regime_load(r, path) == SWW_OK
+            && sww_regime_list(r, "probabilityD", pd, ND) == SWW_OK
+            && sww_regime_list(r, "probabilityVn", pv, NV) == SWW_OK
+            && sww_regime_list(r, "probabilityStick", pp, ND * NV) == SWW_OK
+            && sww_regime_commit(r, "sww_bench") == SWW_OK) {
+            sww_set_tangential_off(m);
+            sww_set_shear_off(m);
+            long inside = 0;
+            for (long i = 0; i < n; i++)
+                inside += in[i].d >= pd[0] && in[i].d <= pd[ND - 1] && in[i].vn >= pv[0]
+                          && in[i].vn <= pv[NV - 1];
+            long fs[3], fr[3];
+            const double ts = run(m, in, n, reps, fs), tr = run(r, in, n, reps, fr);
+            printf("probability table %d x %d, gates off: sharp %6.1f ns/call, table %6.1f ns/call "
+                   "(%.0f %% of the impacts inside; stick %ld / %ld)\n", ND, NV, ts, tr,
+                   100.0 * inside / n, fs[0], fr[0]);
+            /* the same number of impacts, every one inside the table */
+            sww_impact *ins = malloc(n * sizeof *ins);
+            if (ins) {
+                for (long i = 0; i < n; i++) {
+                    ins[i] = in[i];
+                    ins[i].d = pd[0] * pow(pd[ND - 1] / pd[0], in[i].u);
+                    ins[i].vn = pv[0] * pow(pv[NV - 1] / pv[0], in[(i + 1) % n].u);
+                }
+                const double ts2 = run(m, ins, n, reps, fs), tr2 = run(r, ins, n, reps, fr);
+                printf("probability table %d x %d, gates off: sharp %6.1f ns/call, table %6.1f ns/call "
+                       "(every impact inside; stick %ld / %ld)\n", ND, NV, ts2, tr2, fs[0], fr[0]);
+                free(ins);
+            }
+        } else {
+            fprintf(stderr, "sww_bench: synthetic probability table: %s\n", r ? sww_errmsg(r) : "out of memory");
+        }
+        sww_free(r);
+    }
     size_t nvt, nvn;
     if (sww_oblique_table(m, &nvt, &nvn)) {
         sww_set_shear_off(m);

@@ -607,6 +607,77 @@ static void probability_table(void **s)
     sww_free(sharp);
 }
 
+/* Bilinear in (ln d, ln v_n) over any axes, by a linear scan (independent
+ * of the core's direct indexing on uniform axes and its bisection). */
+static double p_ref(const double *D, size_t nd, const double *V, size_t nv, const double *P,
+                    double d, double v)
+{
+    size_t i = 0, j = 0;
+    while (i + 2 < nd && d > D[i + 1])
+        i++;
+    while (j + 2 < nv && v > V[j + 1])
+        j++;
+    const double a = log(d / D[i]) / log(D[i + 1] / D[i]);
+    const double b = log(v / V[j]) / log(V[j + 1] / V[j]);
+    return P[i * nv + j] * (1 - a) * (1 - b) + P[i * nv + j + 1] * (1 - a) * b
+         + P[(i + 1) * nv + j] * a * (1 - b) + P[(i + 1) * nv + j + 1] * a * b;
+}
+
+/* The cell search on each kind of axis: uniform in ln (snowregime's speeds),
+ * uniform in the value (snowregime's diameters), irregular, and uniform in ln
+ * to within the core's 1e-9 of a cell (nodes moved by +-5e-10 of a cell: the
+ * direct index lands next to the right cell near a node). */
+static void probability_axes(void **s)
+{
+    (void)s;
+    enum { ND = 46, NV = 50 };
+    double D[4][ND], V[4][NV], P[ND * NV];
+    for (int i = 0; i < ND; i++) {
+        D[0][i] = 1e-5 * pow(10.0, i / (ND - 1.0));
+        D[1][i] = 1e-5 + 9e-5 * i / (ND - 1.0);
+        D[2][i] = 1e-5 * pow(10.0, pow(i / (ND - 1.0), 1.7));
+        D[3][i] = D[0][i] * (i > 0 && i < ND - 1 ? exp((i % 2 ? 5e-10 : -5e-10) * log(10.0) / (ND - 1)) : 1.0);
+    }
+    for (int j = 0; j < NV; j++) {
+        V[0][j] = 0.1 * pow(100.0, j / (NV - 1.0));
+        V[1][j] = 0.1 + 9.9 * j / (NV - 1.0);
+        V[2][j] = 0.1 * pow(100.0, pow(j / (NV - 1.0), 0.6));
+        V[3][j] = V[0][j] * (j > 0 && j < NV - 1 ? exp((j % 2 ? -5e-10 : 5e-10) * log(100.0) / (NV - 1)) : 1.0);
+    }
+    for (int i = 0; i < ND; i++)   /* steep in both directions: 0, 0.5, 1 */
+        for (int j = 0; j < NV; j++)
+            P[i * NV + j] = ((i + 2 * j) % 3) / 2.0;
+    srand48(5);
+    for (int a = 0; a < 4; a++)
+        for (int b = 0; b < 4; b++) {
+            sww_model *m = load_fixture();
+            assert_int_equal(sww_regime_list(m, "probabilityD", D[a], ND), SWW_OK);
+            assert_int_equal(sww_regime_list(m, "probabilityVn", V[b], NV), SWW_OK);
+            assert_int_equal(sww_regime_list(m, "probabilityStick", P, ND * NV), SWW_OK);
+            assert_int_equal(sww_regime_commit(m, "code"), SWW_OK);
+            for (int i = 0; i < ND; i++)
+                for (int j = 0; j < NV; j += 7)
+                    assert_true(decide(m, D[a][i], V[b][j], 0, 0, 0.5).p_stick == P[i * NV + j]);
+            for (int k = 0; k < 5000; k++) {
+                /* random points, and points next to a node (rounding) */
+                double d = D[a][0] * pow(D[a][ND - 1] / D[a][0], drand48());
+                double v = V[b][0] * pow(V[b][NV - 1] / V[b][0], drand48());
+                if (k % 2) {
+                    const double e = 1e-11 * (k % 4 == 1 ? -1.0 : 1.0);
+                    d = D[a][(k / 2) % ND] * (1.0 + e);
+                    v = V[b][(k / 3) % NV] * (1.0 - e);
+                    if (d < D[a][0] || d > D[a][ND - 1] || v < V[b][0] || v > V[b][NV - 1])
+                        continue;
+                }
+                const double p = decide(m, d, v, 0, 0, 0.5).p_stick;
+                if (!(fabs(p - p_ref(D[a], ND, V[b], NV, P, d, v)) <= 1e-12))
+                    fail_msg("axes %d/%d: d %.17g v %.17g: p %.17g, expected %.17g", a, b, d, v,
+                             p, p_ref(D[a], ND, V[b], NV, P, d, v));
+            }
+            sww_free(m);
+        }
+}
+
 /* The blend with probabilities: the bare wall is rough (table), the covered
  * regime the sharp fixture; p = (1 - w) p_bare + w p_covered. */
 static void blend_probabilities(void **s)
@@ -1055,6 +1126,7 @@ int main(void)
         cmocka_unit_test(oblique_gate),
         cmocka_unit_test(buildup_blend),
         cmocka_unit_test(probability_table),
+        cmocka_unit_test(probability_axes),
         cmocka_unit_test(blend_probabilities),
         cmocka_unit_test(detach_physics),
         cmocka_unit_test(shear_gate),

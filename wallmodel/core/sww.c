@@ -213,6 +213,10 @@ static int set_probability_part(sww_model *m, const char *key, const double *v, 
         return sww_fail(m, SWW_ENOMEM, "key '%s': out of memory", key);
     for (size_t i = 0; i < n; i++)
         p[i] = which == 2 ? v[i] : log(v[i]);
+    if (which < 2) {
+        m->pr_lo[which] = v[0];
+        m->pr_hi[which] = v[n - 1];
+    }
     double **dst = which == 0 ? &m->pr_lnd : which == 1 ? &m->pr_lnv : &m->pr_p;
     size_t *cnt = which == 0 ? &m->pr_nd : which == 1 ? &m->pr_nvn : &m->pr_np;
     free(*dst);
@@ -432,6 +436,24 @@ static int probability_commit(sww_model *m, const char *o)
         return sww_fail(m, SWW_EINVAL, "%s: key 'probabilityStick': %zu values, but probabilityD "
                         "x probabilityVn = %zu x %zu = %zu", o, m->pr_np, m->pr_nd, m->pr_nvn,
                         m->pr_nd * m->pr_nvn);
+    /* uniform axes (to 1e-9 of a cell): the cell directly, no search */
+    for (int a = 0; a < 2; a++) {
+        const double *X = a == 0 ? m->pr_lnd : m->pr_lnv;
+        const size_t n = a == 0 ? m->pr_nd : m->pr_nvn;
+        m->pr_mode[a] = 0;
+        for (int mode = 1; mode <= 2 && !m->pr_mode[a]; mode++) {
+            const double x0 = mode == 1 ? X[0] : exp(X[0]);
+            const double dx = ((mode == 1 ? X[n - 1] : exp(X[n - 1])) - x0) / (double)(n - 1);
+            int uniform = 1;
+            for (size_t j = 0; j < n && uniform; j++)
+                uniform = fabs((mode == 1 ? X[j] : exp(X[j])) - (x0 + (double)j * dx)) <= 1e-9 * dx;
+            if (uniform) {
+                m->pr_mode[a] = mode;
+                m->pr_x0[a] = x0;
+                m->pr_inv[a] = 1.0 / dx;
+            }
+        }
+    }
     m->pr_ready = 1;
     return SWW_OK;
 }
@@ -782,24 +804,39 @@ void sww_describe(const sww_model *m, char *buf, size_t n)
 
 /* ---------------------------------------------------------------- decide */
 
+/* The cell [i, i + 1] of the probability table's axis a that holds x (the
+ * stored ln value, inside the axis' span; xv the value itself): directly on
+ * a uniform axis (a rounding step at a node corrected), else by bisection. */
+static size_t prob_cell(const sww_model *m, int a, const double *X, size_t n, double x, double xv)
+{
+    if (!m->pr_mode[a])
+        return cell_of(X, 0, n - 1, x);
+    const double f = ((m->pr_mode[a] == 1 ? x : xv) - m->pr_x0[a]) * m->pr_inv[a];
+    size_t i = f > 0.0 ? (f < (double)(n - 2) ? (size_t)f : n - 2) : 0;
+    while (i > 0 && x < X[i])
+        i--;
+    while (i < n - 2 && x > X[i + 1])
+        i++;
+    return i;
+}
+
 /* The stick probability: with a rough wall's table (probabilityStick), inside
  * its span [d_1, d_M] x [v_1, v_N] bilinear in (ln d, ln v_n), exact at the
  * nodes; elsewhere, and without a table, the interface's sharp decision
  * (1 for d <= d_crit(v_n), else 0). Reads the model only, allocates nothing. */
 static double stick_probability(const sww_model *m, double d, double vn, double d_crit)
 {
-    if (m->pr_ready && vn > 0.0) {
+    if (m->pr_ready && d >= m->pr_lo[0] && d <= m->pr_hi[0] && vn >= m->pr_lo[1]
+        && vn <= m->pr_hi[1]) {
         const size_t M = m->pr_nd, N = m->pr_nvn;
         const double *X = m->pr_lnd, *Y = m->pr_lnv;
         const double x = log(d), y = log(vn);
-        if (x >= X[0] && x <= X[M - 1] && y >= Y[0] && y <= Y[N - 1]) {
-            const size_t i = cell_of(X, 0, M - 1, x), j = cell_of(Y, 0, N - 1, y);
-            const double tx = (x - X[i]) / (X[i + 1] - X[i]), ty = (y - Y[j]) / (Y[j + 1] - Y[j]);
-            const double *P0 = m->pr_p + i * N + j, *P1 = P0 + N;
-            const double p = (1.0 - tx) * ((1.0 - ty) * P0[0] + ty * P0[1])
-                           + tx * ((1.0 - ty) * P1[0] + ty * P1[1]);
-            return p < 0.0 ? 0.0 : (p > 1.0 ? 1.0 : p);
-        }
+        const size_t i = prob_cell(m, 0, X, M, x, d), j = prob_cell(m, 1, Y, N, y, vn);
+        const double tx = (x - X[i]) / (X[i + 1] - X[i]), ty = (y - Y[j]) / (Y[j + 1] - Y[j]);
+        const double *P0 = m->pr_p + i * N + j, *P1 = P0 + N;
+        const double p = (1.0 - tx) * ((1.0 - ty) * P0[0] + ty * P0[1])
+                       + tx * ((1.0 - ty) * P1[0] + ty * P1[1]);
+        return p < 0.0 ? 0.0 : (p > 1.0 ? 1.0 : p);
     }
     return d <= d_crit ? 1.0 : 0.0;
 }

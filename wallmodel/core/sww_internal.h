@@ -39,6 +39,12 @@ struct sww_model {
      * probabilityStick (M x N, rows by d) */
     double *pr_lnd, *pr_lnv, *pr_p;   /* ln d, ln v_n, p_stick in [0, 1] */
     size_t pr_nd, pr_nvn, pr_np;
+    /* per axis (0 d, 1 v_n), set at commit: nodes uniform in ln (1) or in the
+     * value itself (2: snowregime's linear diameters), else 0 (bisection);
+     * the first node and 1 / spacing in that coordinate */
+    int pr_mode[2];
+    double pr_x0[2], pr_inv[2];
+    double pr_lo[2], pr_hi[2];     /* the span of each axis as given [m], [m/s] */
     int pr_ready;                  /* the table passed the commit checks */
     /* derived at commit */
     int ready;
