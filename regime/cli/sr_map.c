@@ -77,9 +77,15 @@ static int mapopt_check(sr_mapopt *m, char *err, size_t errlen)
 }
 
 /* One computed map with its interface and fit. */
+/* Rough wall: the p = 0.1 and 0.9 contours beside the map's p = 0.5 interface. */
+typedef struct {
+    swt_interface lo, hi;   /* p = 0.1, p = 0.9 */
+} sr_contours;
+
 typedef struct {
     swt_map *mp;
     swt_interface it;
+    sr_contours *contours;  /* rough wall only, else NULL */
     swt_fit fit;
     int fit_ok;
     char fit_err[300];
@@ -90,8 +96,16 @@ static void mapres_free(sr_mapres *r)
 {
     swt_map_free(r->mp);
     swt_interface_free(&r->it);
+    if (r->contours) {
+        swt_interface_free(&r->contours->lo);
+        swt_interface_free(&r->contours->hi);
+        free(r->contours);
+    }
     memset(r, 0, sizeof *r);
 }
+
+static int rough_contours(const swr_model *m, const sr_mapres *r, const swt_vcrit_opts *o,
+                          int threads, sr_contours *c, char *err, size_t errlen);
 
 static int compute_map(const swr_model *m, const sr_mapopt *mo, const swt_vcrit_opts *o,
                        int threads, sr_mapres *r, char *err, size_t errlen)
@@ -103,6 +117,11 @@ static int compute_map(const swr_model *m, const sr_mapopt *mo, const swt_vcrit_
     if (swt_map_run(r->mp, m, o, threads, err, errlen) != 0) return -1;
     if (swt_interface_extract(r->mp, m, o, mo->refine, threads, &r->it, err, errlen) != 0) return -1;
     r->fit_ok = swt_fit_interface(&r->it, mo->degree, &r->fit, r->fit_err, sizeof r->fit_err) == 0;
+    if (r->mp->points > 0) {
+        r->contours = calloc(1, sizeof *r->contours);
+        if (!r->contours) { snprintf(err, errlen, "out of memory"); return -1; }
+        if (rough_contours(m, r, o, threads, r->contours, err, errlen) != 0) return -1;
+    }
     r->seconds_total = swt_now() - t0;
     return 0;
 }
@@ -116,12 +135,25 @@ static void write_map_csv(FILE *f, const sr_mapres *r, const swr_params *p, cons
     fprintf(f, "# stick: 1 sticks (outcome of the map), contact_kept: normal contact kept, "
                "status: 0 ok, 1 step bound\n");
     swr_params_print(p, "# setting ", f);
-    fprintf(f, "d_m,vn_m_s,stick,contact_kept,e_n,e_t,status\n");
+    if (mp->points > 0) {
+        fprintf(f, "# rough wall: p_stick = fraction of the %d impact points that stick, p_err its "
+                   "binomial standard error sqrt(p (1 - p) / points); stick = p_stick >= 0.5; e_n the "
+                   "mean over the bounces; status 1: some impact still held at the time bound "
+                   "(rough_hold), counted as stick\n", mp->points);
+        fprintf(f, "d_m,vn_m_s,stick,contact_kept,e_n,e_t,status,p_stick,p_err,points\n");
+    } else {
+        fprintf(f, "d_m,vn_m_s,stick,contact_kept,e_n,e_t,status\n");
+    }
     for (int i = 0; i < mp->g.nd; i++)
         for (int j = 0; j < mp->g.nv; j++) {
             size_t k = (size_t)i * mp->g.nv + j;
-            fprintf(f, "%.9g,%.9g,%d,%d,%.6g,%.6g,%d\n", mp->d[i], mp->v[j], mp->stick[k],
+            fprintf(f, "%.9g,%.9g,%d,%d,%.6g,%.6g,%d", mp->d[i], mp->v[j], mp->stick[k],
                     mp->kept[k], mp->e_n[k], mp->e_t[k], mp->status[k]);
+            if (mp->points > 0) {
+                const double pk = mp->p[k];
+                fprintf(f, ",%.6g,%.4g,%d", pk, sqrt(pk * (1.0 - pk) / mp->points), mp->points);
+            }
+            fprintf(f, "\n");
         }
 }
 
@@ -197,6 +229,70 @@ static int write_map_plot(swt_outset *os, const char *sfx, const sr_mapres *r, c
     return swt_gnuplot_finish(&g, err, errlen);
 }
 
+static int rough_contours(const swr_model *m, const sr_mapres *r, const swt_vcrit_opts *o,
+                          int threads, sr_contours *c, char *err, size_t errlen)
+{
+    memset(c, 0, sizeof *c);
+    swt_vcrit_opts o1 = *o, o9 = *o;
+    o1.level = 0.1;
+    o9.level = 0.9;
+    /* the grid's stick flags are p >= 0.5: the contours read mp->p instead */
+    swt_map *mp = r->mp;
+    const size_t n = (size_t)mp->g.nd * mp->g.nv;
+    unsigned char *keep = malloc(n);
+    if (!keep) { snprintf(err, errlen, "out of memory"); return -1; }
+    memcpy(keep, mp->stick, n);
+    int rc = 0;
+    for (int k = 0; k < 2 && rc == 0; k++) {
+        const swt_vcrit_opts *ok = k ? &o9 : &o1;
+        for (size_t q = 0; q < n; q++)
+            mp->stick[q] = mp->p[q] >= ok->level * (1.0 - 1e-12);
+        rc = swt_interface_extract(mp, m, ok, 1, threads, k ? &c->hi : &c->lo, err, errlen);
+    }
+    memcpy(mp->stick, keep, n);
+    free(keep);
+    return rc;
+}
+
+static void write_contours_csv(FILE *f, const sr_mapres *r, const sr_contours *c)
+{
+    fprintf(f, "# contours of the stick probability p(d, v_n) on the rough wall: in each speed "
+               "column the first p >= level -> p < level change along d, bisected in ln d\n");
+    fprintf(f, "level,vn_m_s,dcrit_m\n");
+    const swt_interface *its[3] = { &c->lo, &r->it, &c->hi };
+    const double lv[3] = { 0.1, 0.5, 0.9 };
+    for (int k = 0; k < 3; k++)
+        for (int q = 0; q < its[k]->n; q++)
+            fprintf(f, "%g,%.9g,%.9g\n", lv[k], its[k]->vn[q], its[k]->dcrit[q]);
+}
+
+static int write_rough_plot(swt_outset *os, const sr_mapres *r, const char *title, char *err,
+                            size_t errlen)
+{
+    const char *png = swt_outset_add(os, "map.png", err, errlen);
+    const char *tcsv = swt_outset_add(os, "map.csv", err, errlen);
+    const char *tcon = swt_outset_add(os, "contours.csv", err, errlen);
+    if (!png || !tcsv || !tcon) return -1;
+    swt_gnuplot g;
+    if (swt_gnuplot_open(&g, png, 820, 700, err, errlen) != 0) return -1;
+    FILE *f = g.f;
+    fprintf(f, "set datafile separator ','\nset key outside below horizontal\nset format x '%%g'\nset mxtics 10\n");
+    if (r->mp->g.vlog) fprintf(f, "set logscale x\n");
+    fprintf(f, "set xrange [%.10g:%.10g]\nset yrange [%.10g:%.10g]\n",
+            r->mp->g.vmin / (r->mp->g.vlog ? 1.05 : 1.0), r->mp->g.vmax * 1.05,
+            r->mp->g.dmin * 1e6 - 2, r->mp->g.dmax * 1e6 + 2);
+    fprintf(f, "set xlabel 'normal impact speed v_n [m/s]'\nset ylabel 'particle diameter d [um]'\n");
+    fprintf(f, "set cblabel 'stick probability'\nset cbrange [0:1]\n"
+               "set palette defined (0 '#e08070', 0.5 '#f4f0e8', 1 '#3070d0')\n");
+    fprintf(f, "set title \"%s\" noenhanced\n", title);
+    fprintf(f, "plot '%s' skip 1 using 2:($1*1e6):8 with points pt 5 ps 1.3 palette notitle, \\\n"
+               "     '%s' skip 2 using ($1==0.1 ? $2 : 1/0):($3*1e6) with linespoints pt 7 ps 0.5 lw 2 lc rgb '#804000' title 'p = 0.1', \\\n"
+               "     '%s' skip 2 using ($1==0.5 ? $2 : 1/0):($3*1e6) with linespoints pt 7 ps 0.5 lw 2 lc rgb 'black' title 'p = 0.5', \\\n"
+               "     '%s' skip 2 using ($1==0.9 ? $2 : 1/0):($3*1e6) with linespoints pt 7 ps 0.5 lw 2 lc rgb '#004080' title 'p = 0.9'\n",
+            tcsv, tcon, tcon, tcon);
+    return swt_gnuplot_finish(&g, err, errlen);
+}
+
 /* Writes one map's files into the set. */
 static int write_map_files(swt_outset *os, const char *sfx, const sr_mapres *r, const swr_params *p,
                            const char *what, int plot, int threads, char *err, size_t errlen)
@@ -217,9 +313,22 @@ static int write_map_files(swt_outset *os, const char *sfx, const sr_mapres *r, 
     if (r->fit_ok) {
         snprintf(name, sizeof name, "regime%s.coeffs", sfx);
         if (!(f = swt_outset_open(os, name, err, errlen))) return -1;
-        swt_coeffs_write(f, &r->fit, p, r->mp->g.dmin, r->mp->g.dmax, label);
+        if (r->mp->points > 0)
+            swt_coeffs_write_rough(f, &r->fit, p, r->mp, label);
+        else
+            swt_coeffs_write(f, &r->fit, p, r->mp->g.dmin, r->mp->g.dmax, label);
     }
-    if (plot) {
+    if (r->contours) {
+        if (!(f = swt_outset_open(os, "contours.csv", err, errlen))) return -1;
+        write_contours_csv(f, r, r->contours);
+    }
+    if (plot && r->mp->points > 0) {
+        fflush(NULL);
+        char title[300];
+        snprintf(title, sizeof title, "snowregime map: stick probability on a rough wall (%s, "
+                 "%d points per cell), gamma %g J/m2", what, r->mp->points, p->gamma);
+        if (write_rough_plot(os, r, title, err, errlen) != 0) return -1;
+    } else if (plot) {
         /* data must be on disk before gnuplot reads the temporaries */
         fflush(NULL);
         char title[300];
@@ -244,6 +353,11 @@ int sr_cmd_map(int argc, char **argv)
     for (; a.i < argc; a.i++) {
         int r = sr_settings_opt(&a, &s);
         if (r == 0) r = mapopt_parse(&a, &mo);
+        if (r == 0 && strncmp(argv[a.i], "--level", 7) == 0) {
+            snprintf(a.err, sizeof a.err, "--level: not for map (it draws the p = 0.1, 0.5 and 0.9 contours)");
+            r = -1;
+        }
+        if (r == 0) r = sr_rough_opt(&a, &mo.o);
         if (r < 0) { rc = sr_usage_error(cmd, a.err); goto out; }
         if (r > 0) continue;
         if (sr_flag(&a, "--help") || sr_flag(&a, "-h")) { sr_help(cmd); goto out; }
@@ -276,6 +390,27 @@ int sr_cmd_map(int argc, char **argv)
     if (sr_settings_apply(&s, &p, err, sizeof err) != 0) { rc = sr_usage_error(cmd, err); goto out; }
     swr_model *m = swr_model_alloc(&p, err, sizeof err);
     if (!m) { rc = sr_usage_error(cmd, err); goto out; }
+    if (swr_model_rough(m) && axis) {
+        if (axis_angle || naxis > 1) {
+            swr_model_free(m);
+            rc = sr_usage_error(cmd, axis_angle ? "--angle: not with a rough wall (wall lattice): "
+                                                  "give the map's tangential speed with --vt V"
+                                                : "--vt: one value with a rough wall (wall lattice): "
+                                                  "maps over a v_t list need the flat wall");
+            goto out;
+        }
+        mo.o.vt = axis[0];   /* one value: a single map at that v_t */
+        free(axis);
+        axis = NULL;
+        naxis = 0;
+    }
+    if (swr_model_rough(m) && (long)mo.g.nd * mo.g.nv > SWW_TABLE_MAX) {
+        swr_model_free(m);
+        snprintf(err, sizeof err, "--nd x --nv: %d x %d cells exceed the %d values of the stick-"
+                 "probability table in regime.coeffs (rough wall)", mo.g.nd, mo.g.nv, SWW_TABLE_MAX);
+        rc = sr_usage_error(cmd, err);
+        goto out;
+    }
 
     if (axis) mo.o.full_stick = 1;
     int nmaps = axis ? naxis : 1;
@@ -328,6 +463,10 @@ int sr_cmd_map(int argc, char **argv)
             o.vt = axis[k];
             snprintf(sfx, sizeof sfx, "-vt%g", axis[k]);
             snprintf(what, sizeof what, "%s, vt %g m/s", outc, axis[k]);
+        } else if (swr_model_rough(m)) {
+            snprintf(what, sizeof what, "%s, rough wall (%s lattice, asperity r %g m, spacing %g m%s)",
+                     outc, p.lattice == SWR_LATTICE_HEX ? "hex" : "square", p.asperity_r,
+                     p.asperity_spacing, p.asperity_jitter > 0.0 || p.asperity_dz > 0.0 ? ", random" : "");
         } else {
             snprintf(what, sizeof what, "%s", outc);
         }
@@ -347,10 +486,19 @@ int sr_cmd_map(int argc, char **argv)
             }
             printf("  grid %d x %d: d %.4g..%.4g m, vn %.4g..%.4g m/s (%s)\n", r.mp->g.nd, r.mp->g.nv,
                    r.mp->g.dmin, r.mp->g.dmax, r.mp->g.vmin, r.mp->g.vmax, r.mp->g.vlog ? "log" : "linear");
-            printf("  sticking points %ld of %ld, step-bound points %ld\n", r.mp->nstick,
-                   r.mp->collisions, r.mp->step_bound);
+            if (r.mp->points > 0)
+                printf("  cells with p_stick >= 0.5: %ld of %d; %ld impacts, %ld held at the time "
+                       "bound (counted as stick)\n", r.mp->nstick, r.mp->g.nd * r.mp->g.nv,
+                       r.mp->collisions, r.mp->step_bound);
+            else
+                printf("  sticking points %ld of %ld, step-bound points %ld\n", r.mp->nstick,
+                       r.mp->collisions, r.mp->step_bound);
             printf("  interface points %d (columns all stick %d, all bounce %d, non-monotone %d)\n",
                    r.it.n, r.it.cols_all_stick, r.it.cols_all_bounce, r.it.cols_nonmono);
+            if (r.contours)
+                printf("  rough wall: %d impact points per cell (seed %lu); contour points p = 0.1: %d, "
+                       "p = 0.5: %d, p = 0.9: %d\n", r.mp->points, mo.o.seed, r.contours->lo.n,
+                       r.it.n, r.contours->hi.n);
             if (r.fit_ok) {
                 printf("  fit degree %d%s%s: coeffs", F->degree, F->note[0] ? " - " : "", F->note);
                 for (int i = 0; i <= F->degree; i++) printf(" %.6g", F->c[i]);

@@ -114,6 +114,9 @@ double swr_model_tabor(const swr_model *m, double d, int *jkr_ok);
 #define SWR_D_MIN 1.0e-7   /* diameter [m] */
 #define SWR_D_MAX 1.0e-1
 #define SWR_V_MAX 1.0e3    /* normal and tangential speed [m/s] */
+/* On a rough wall d is at most this many asperity radii (beyond it a sphere
+ * holds hundreds of asperity contacts at once; use the flat wall there). */
+#define SWR_ROUGH_D_OVER_R_MAX 2000.0
 
 /* Critical normal sticking velocity of diameter d (head-on, vt = omega = 0):
  * the largest vn at which the contact is kept, by bisection in ln vn to the

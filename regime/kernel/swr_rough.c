@@ -380,6 +380,14 @@ swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_resul
                              const swr_trace *trace)
 {
     const swr_params *p = &m->p;
+    if (in->d > SWR_ROUGH_D_OVER_R_MAX * m->wall.r) {
+        r->status = SWR_EINVAL;
+        snprintf(r->msg, sizeof r->msg,
+                 "d = %g m is more than %g asperity radii (asperity_r = %g m): too many contacts "
+                 "at once for the rough wall; use the flat wall", in->d, SWR_ROUGH_D_OVER_R_MAX,
+                 m->wall.r);
+        return SWR_EINVAL;
+    }
     static const rc_state zero;
     rc_state st = zero, *s = &st;
     s->m = m;
@@ -431,8 +439,9 @@ swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_resul
                                                      : swr_damping_alpha(r->e_target);
     const double h0 = swr_damping_time_factor(alpha0) / p->accuracy;
     double h_min = h0;
-    /* the step shrinks to h0/16 with RC_MAX contacts */
-    r->max_steps = (long)ceil(p->rough_hold * 16.0 / h0) + 16;
+    /* steps: the time bound at the step of 16 contacts at once (h0/4); more
+     * contacts than that reach this bound first */
+    r->max_steps = (long)ceil(p->rough_hold * 4.0 / h0) + 16;
     double t_in = 0.0;     /* time in contact */
 
     /* --- start: lowest point on the plane of the highest tops, centre above (x, y) --- */

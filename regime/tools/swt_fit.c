@@ -130,11 +130,38 @@ void swt_coeffs_write(FILE *fp, const swt_fit *f, const swr_params *p, double dm
     swt_coeffs_write_ex(fp, f, p, dmin, dmax, label, NULL);
 }
 
+static void coeffs_write(FILE *fp, const swt_fit *f, const swr_params *p, double dmin,
+                         double dmax, const char *label, const swt_oblique *ob,
+                         const swt_map *mp);
+
 void swt_coeffs_write_ex(FILE *fp, const swt_fit *f, const swr_params *p, double dmin,
                          double dmax, const char *label, const swt_oblique *ob)
 {
+    coeffs_write(fp, f, p, dmin, dmax, label, ob, NULL);
+}
+
+void swt_coeffs_write_rough(FILE *fp, const swt_fit *f, const swr_params *p, const swt_map *mp,
+                            const char *label)
+{
+    coeffs_write(fp, f, p, mp->g.dmin, mp->g.dmax, label, NULL, mp);
+}
+
+static void write_list(FILE *fp, const char *key, const double *x, size_t n)
+{
+    fprintf(fp, "    %-17s (", key);
+    for (size_t k = 0; k < n; k++)
+        fprintf(fp, "%s%.10g", k ? " " : "", x[k]);
+    fprintf(fp, ");\n");
+}
+
+static void coeffs_write(FILE *fp, const swt_fit *f, const swr_params *p, double dmin,
+                         double dmax, const char *label, const swt_oblique *ob,
+                         const swt_map *mp)
+{
     const double Es = swp_effective_modulus(p->E, p->nu, p->E_wall, p->nu_wall);
     fprintf(fp, "// regime.coeffs - stick/bounce interface of snowregime map (snowwall 0.1)\n");
+    if (mp && mp->points > 0)
+        fprintf(fp, "// rough wall: the interface is the p = 0.5 contour of the stick probability\n");
     fprintf(fp, "// format: doc/regime-coeffs.md\n");
     swr_params_print(p, "// material: ", fp);
     fprintf(fp, "regime\n{\n");
@@ -182,5 +209,17 @@ void swt_coeffs_write_ex(FILE *fp, const swt_fit *f, const swr_params *p, double
     fprintf(fp, "    mu              %.10g;\n", p->mu);
     if (ob)
         swt_oblique_write(fp, ob);
+    if (mp && mp->points > 0) {
+        fprintf(fp, "\n    // Stick probability on this rough wall: the fraction of %d impact points\n"
+                    "    // that stick, per diameter (rows) and normal speed (columns); the\n"
+                    "    // interface above is its p = 0.5 contour.\n", mp->points);
+        write_list(fp, "probabilityD", mp->d, (size_t)mp->g.nd);
+        write_list(fp, "probabilityVn", mp->v, (size_t)mp->g.nv);
+        fprintf(fp, "    %-17s (", "probabilityStick");
+        for (size_t k = 0; k < (size_t)mp->g.nd * mp->g.nv; k++)
+            fprintf(fp, "%s%.6g", k ? " " : "", (double)mp->p[k]);
+        fprintf(fp, ");\n");
+        fprintf(fp, "    %-17s %d;\n", "probabilityPoints", mp->points);
+    }
     fprintf(fp, "}\n");
 }

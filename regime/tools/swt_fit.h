@@ -44,6 +44,10 @@ void swt_coeffs_write(FILE *fp, const swt_fit *f, const swr_params *p, double dm
 /* The same with the d_crit(v_n, v_t) table of oblique impacts (ob may be NULL). */
 void swt_coeffs_write_ex(FILE *fp, const swt_fit *f, const swr_params *p, double dmin,
                          double dmax, const char *label, const swt_oblique *ob);
+/* A rough wall's: the fit of the p = 0.5 contour with the stick-probability
+ * table of the map (probabilityD/Vn/Stick/Points, doc/regime-coeffs.md). */
+void swt_coeffs_write_rough(FILE *fp, const swt_fit *f, const swr_params *p, const swt_map *mp,
+                            const char *label);
 
 #ifdef __cplusplus
 }

@@ -68,7 +68,9 @@ swt_map *swt_map_alloc(const swt_grid *g, char *err, size_t errlen)
     mp->status = calloc(n, 1);
     mp->e_n = calloc(n, sizeof *mp->e_n);
     mp->e_t = calloc(n, sizeof *mp->e_t);
-    if (!mp->d || !mp->v || !mp->stick || !mp->kept || !mp->status || !mp->e_n || !mp->e_t) {
+    mp->p = calloc(n, sizeof *mp->p);
+    if (!mp->d || !mp->v || !mp->stick || !mp->kept || !mp->status || !mp->e_n || !mp->e_t
+        || !mp->p) {
         swt_map_free(mp);
         snprintf(err, errlen, "out of memory for a %d x %d map", g->nd, g->nv);
         return NULL;
@@ -85,7 +87,7 @@ void swt_map_free(swt_map *mp)
 {
     if (!mp) return;
     free(mp->d); free(mp->v); free(mp->stick); free(mp->kept); free(mp->status);
-    free(mp->e_n); free(mp->e_t); free(mp);
+    free(mp->e_n); free(mp->e_t); free(mp->p); free(mp);
 }
 
 typedef struct {
@@ -102,6 +104,26 @@ static void map_row(void *p, int i)
     map_ctx *c = p;
     swt_map *mp = c->mp;
     const int nv = mp->g.nv;
+    if (swr_model_rough(c->m)) {
+        for (int j = 0; j < nv; j++) {
+            const size_t k = (size_t)i * nv + j;
+            swt_fraction f;
+            if (swt_stick_fraction(c->m, mp->d[i], mp->v[j], c->o, &f, NULL, c->msg[i],
+                                   sizeof c->msg[i]) != 0) {
+                c->bad[i] = 1;
+                return;
+            }
+            mp->p[k] = (float)((double)f.sticks / f.points);
+            mp->stick[k] = mp->kept[k] = f.sticks >= c->o->level * f.points;
+            mp->status[k] = f.bound > 0;
+            mp->e_n[k] = (float)f.e_n;
+            mp->e_t[k] = 0.0f;
+            c->collisions[i] += f.points;
+            c->steps[i] += f.steps;
+            c->step_bound[i] += f.bound;
+        }
+        return;
+    }
     for (int j = 0; j < nv; j++) {
         double vn = mp->v[j];
         swr_impact in = { .d = mp->d[i], .vn = vn,
@@ -119,6 +141,7 @@ static void map_row(void *p, int i)
         if (r.msg[0] && !c->msg[i][0]) snprintf(c->msg[i], sizeof c->msg[i], "%s", r.msg);
         mp->kept[k] = r.contact_kept != 0;
         mp->stick[k] = (unsigned char)swt_outcome(c->o, &r);
+        mp->p[k] = mp->stick[k];
         mp->status[k] = (unsigned char)st;
         mp->e_n[k] = (float)(isfinite(r.e_n) ? r.e_n : 0.0);
         mp->e_t[k] = (float)(isfinite(r.e_t) ? r.e_t : 0.0);
@@ -141,6 +164,7 @@ int swt_map_run(swt_map *mp, const swr_model *m, const swt_vcrit_opts *o, int th
         rc = -1;
         goto done;
     }
+    mp->points = swr_model_rough(m) ? o->points : 0;
     double t0 = swt_now();
     swt_parallel_for(nd, threads, map_row, &c);
     mp->seconds = swt_now() - t0;

@@ -29,7 +29,11 @@ typedef struct {
     unsigned char *stick;  /* [nd*nv], index i*nv + j (i: diameter, j: speed): outcome */
     unsigned char *kept;   /* normal contact kept */
     unsigned char *status; /* swr_status of the point (0 ok, 1 step bound) */
-    float *e_n, *e_t;      /* rebound CORs (0 when kept; e_t 0 when vt = 0) */
+    float *e_n, *e_t;      /* rebound CORs (0 when kept; e_t 0 when vt = 0); rough wall:
+                              the mean over the bouncing impact points */
+    float *p;              /* rough wall: stick fraction over `points` impact points
+                              (stick = p >= the options' level); flat: stick as 0 / 1 */
+    int points;            /* impact points per grid point (0: flat wall, one impact) */
     long collisions, steps, step_bound;
     long nstick;           /* points that stick */
     double seconds;        /* wall time of swt_map_run */
@@ -53,13 +57,16 @@ int swt_grid_check(const swt_grid *g, char *err, size_t errlen);
 swt_map *swt_map_alloc(const swt_grid *g, char *err, size_t errlen);
 void swt_map_free(swt_map *mp);
 /* Simulate every grid point (outcome as o->full_stick; o->vt / o->tan_angle /
- * o->omega set the tangential motion). 0, or -1 on a kernel error. */
+ * o->omega set the tangential motion); on a rough wall the stick fraction
+ * over o->points impact points (swt_stick_fraction). 0, or -1 on a kernel error. */
 int swt_map_run(swt_map *mp, const swr_model *m, const swt_vcrit_opts *o, int threads,
                 char *err, size_t errlen);
 
 /* Interface: in each speed column, the first stick -> bounce change along d,
  * refined by bisection in ln d to relative width o->rtol (refine = 1) or the
- * geometric midpoint of the two grid cells (refine = 0). */
+ * geometric midpoint of the two grid cells (refine = 0). On a rough wall
+ * "sticks" is p >= o->level, at the grid from mp->p and in the bisection from
+ * the stick fraction at the same impact points: the p = level contour. */
 int swt_interface_extract(const swt_map *mp, const swr_model *m, const swt_vcrit_opts *o,
                           int refine, int threads, swt_interface *it, char *err, size_t errlen);
 void swt_interface_free(swt_interface *it);

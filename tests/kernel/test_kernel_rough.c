@@ -1,0 +1,329 @@
+/* test_kernel_rough.c - the rough wall (wall lattice, issue 9) against closed
+ * forms and its own limits: one asperity hit head-on is a sphere-sphere impact
+ * with R* = R r/(R + r) (elastic JKR sticking velocity V_s within 0.5 %), a
+ * huge asperity is the flat wall (v_crit within 0.5 %), the lattice geometry
+ * and its random variant, reproducible stick fractions that converge as
+ * 1/sqrt(N), and no NaN or runaway on extreme inputs. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "swp_contact.h"
+#include "swp_jkr.h"
+#include "swr_collide.h"
+#include "swr_wall.h"
+#include "swt_vcrit.h"
+
+#define REL(x, ref) (fabs((x) - (ref)) / fabs(ref))
+
+static swr_params params(const char *const *kv)
+{
+    swr_params p;
+    swr_params_default(&p);
+    char err[256];
+    for (; kv && *kv; kv++)
+        if (swr_params_set_kv(&p, *kv, err, sizeof err) != 0)
+            fail_msg("%s", err);
+    return p;
+}
+
+static swr_model *model(const char *const *kv)
+{
+    swr_params p = params(kv);
+    char err[256];
+    swr_model *m = swr_model_alloc(&p, err, sizeof err);
+    if (!m)
+        fail_msg("%s", err);
+    return m;
+}
+
+/* Head-on on top of one asperity, elastic JKR: the sphere sticks iff its
+ * kinetic energy is below the separation energy U_c of the particle-asperity
+ * contact, i.e. below Thornton & Ning's V_s of a sphere of R* and the
+ * particle's mass (the wall's V_s formula with rho scaled by (R/R*)^3). */
+static void one_asperity_vs(void **state)
+{
+    (void)state;
+    const double radii[] = { 0.5e-6, 1e-6, 5e-6 };
+    const double ds[] = { 10e-6, 50e-6 };
+    for (size_t a = 0; a < 3; a++) {
+        char kr[64], ks[64];
+        snprintf(kr, sizeof kr, "asperity_r=%g", radii[a]);
+        snprintf(ks, sizeof ks, "asperity_spacing=%g", 3.0 * radii[a]);
+        const char *kv[] = { "wall=lattice", kr, ks, "cor=elastic", NULL };
+        swr_params p = params(kv);
+        swr_model *m = model(kv);
+        const double Es = swp_effective_modulus(p.E, p.nu, p.E_wall, p.nu_wall);
+        for (size_t k = 0; k < 2; k++) {
+            const double R = 0.5 * ds[k], Rs = R * radii[a] / (R + radii[a]);
+            const double rho_eff = p.rho * pow(R / Rs, 3.0);
+            const double vs = swp_sticking_velocity_tn(p.gamma, rho_eff, Es, Rs);
+            double vc;
+            assert_int_equal(swr_vcrit_normal(m, ds[k], 1e-4, 1e2, 1e-5, &vc), 0);
+            const double e = REL(vc, vs);
+            printf("  r %g um, d %g um: v_crit %.6g, V_s(R*) %.6g, rel %.2e\n", radii[a] * 1e6,
+                   ds[k] * 1e6, vc, vs, e);
+            assert_true(e < 5e-3);
+        }
+        swr_model_free(m);
+    }
+}
+
+/* A huge asperity hit on its top is the flat wall (default contact: JKR with
+ * Thornton's plastic COR dashpot, the stepped integrator in 3-D). */
+static void huge_asperity_is_flat(void **state)
+{
+    (void)state;
+    const char *flat[] = { NULL };
+    const char *big[] = { "wall=lattice", "asperity_r=0.1", "asperity_spacing=0.3", NULL };
+    swr_model *mf = model(flat), *mb = model(big);
+    const double ds[] = { 10e-6, 30e-6, 100e-6 };
+    for (size_t k = 0; k < 3; k++) {
+        double vf, vb;
+        assert_int_equal(swr_vcrit_normal(mf, ds[k], 1e-3, 1e2, 1e-5, &vf), 0);
+        assert_int_equal(swr_vcrit_normal(mb, ds[k], 1e-3, 1e2, 1e-5, &vb), 0);
+        printf("  d %g um: flat %.6g, r = 0.1 m %.6g, rel %.2e\n", ds[k] * 1e6, vf, vb, REL(vb, vf));
+        assert_true(REL(vb, vf) < 5e-3);
+        /* and a bounce's COR */
+        swr_impact in = { ds[k], 2.0 * vf, 0.0, 0.0, 0.0, 0.0 };
+        swr_result rf, rb;
+        assert_int_equal(swr_collide(mf, &in, &rf, NULL), SWR_OK);
+        assert_int_equal(swr_collide(mb, &in, &rb, NULL), SWR_OK);
+        assert_false(rf.contact_kept);
+        assert_false(rb.contact_kept);
+        assert_true(fabs(rb.e_n - rf.e_n) < 5e-3);
+        assert_true(rb.energy_err < 1e-3);
+    }
+    swr_model_free(mf);
+    swr_model_free(mb);
+}
+
+/* Lattice nodes, spacing, the random offsets within their bounds and fixed
+ * by the seed, and the index ranges covering a box. */
+static void lattice_geometry(void **state)
+{
+    (void)state;
+    const char *sq[] = { "wall=lattice", "asperity_r=1e-6", "asperity_spacing=2e-6", NULL };
+    const char *hx[] = { "wall=lattice", "lattice=hex", "asperity_spacing=2e-6", NULL };
+    const char *rn[] = { "wall=lattice", "asperity_spacing=2e-6", "asperity_jitter=0.3",
+                         "asperity_dz=0.5e-6", "wall_seed=7", NULL };
+    const char *rn2[] = { "wall=lattice", "asperity_spacing=2e-6", "asperity_jitter=0.3",
+                          "asperity_dz=0.5e-6", "wall_seed=8", NULL };
+    swr_wall w, h, r, r2;
+    swr_params p;
+    p = params(sq); swr_wall_init(&w, &p);
+    p = params(hx); swr_wall_init(&h, &p);
+    p = params(rn); swr_wall_init(&r, &p);
+    p = params(rn2); swr_wall_init(&r2, &p);
+    double c[3], c2[3];
+    swr_wall_asperity(&w, 3, -2, c);
+    assert_true(fabs(c[0] - 6e-6) < 1e-18 && fabs(c[1] + 4e-6) < 1e-18 && c[2] == 0.0);
+    /* hexagonal: every neighbour of a node at the spacing */
+    swr_wall_asperity(&h, 0, 0, c);
+    const int nb[6][2] = { { 1, 0 }, { -1, 0 }, { 0, 1 }, { -1, 1 }, { 0, -1 }, { -1, -1 } };
+    for (int k = 0; k < 6; k++) {
+        swr_wall_asperity(&h, nb[k][0], nb[k][1], c2);
+        assert_true(fabs(hypot(c2[0] - c[0], c2[1] - c[1]) - 2e-6) < 1e-15);
+    }
+    /* random: bounded offsets, the same for the same seed, different otherwise */
+    int differ = 0;
+    for (int i = -20; i <= 20; i++)
+        for (int j = -20; j <= 20; j++) {
+            swr_wall_asperity(&r, i, j, c);
+            assert_true(fabs(c[0] - i * 2e-6) <= 0.3 * 2e-6 + 1e-18);
+            assert_true(fabs(c[1] - j * 2e-6) <= 0.3 * 2e-6 + 1e-18);
+            assert_true(c[2] <= 0.0 && c[2] >= -0.5e-6);
+            swr_wall_asperity(&r, i, j, c2);
+            assert_memory_equal(c, c2, sizeof c);
+            swr_wall_asperity(&r2, i, j, c2);
+            differ += c[0] != c2[0];
+        }
+    assert_true(differ > 1600);
+    /* the index ranges hold every node in a box */
+    const swr_wall *ws[] = { &w, &h, &r };
+    for (int q = 0; q < 3; q++) {
+        const double xlo = -3.3e-6, xhi = 5.1e-6, ylo = 0.7e-6, yhi = 9.9e-6;
+        int j0, j1, inside = 0, found = 0;
+        for (int i = -30; i <= 30; i++)
+            for (int j = -30; j <= 30; j++) {
+                swr_wall_asperity(ws[q], i, j, c);
+                inside += c[0] >= xlo && c[0] <= xhi && c[1] >= ylo && c[1] <= yhi;
+            }
+        swr_wall_rows(ws[q], ylo, yhi, &j0, &j1);
+        for (int j = j0; j <= j1; j++) {
+            int i0, i1;
+            swr_wall_row_range(ws[q], j, xlo, xhi, &i0, &i1);
+            for (int i = i0; i <= i1; i++) {
+                swr_wall_asperity(ws[q], i, j, c);
+                found += c[0] >= xlo && c[0] <= xhi && c[1] >= ylo && c[1] <= yhi;
+            }
+        }
+        assert_int_equal(found, inside);
+        assert_true(inside > 5);
+    }
+}
+
+/* A stick fraction is a fixed number for a seed and the binomial error of
+ * N points shrinks as 1/sqrt(N): over 24 seeds the spread of the fraction
+ * at N = 8, 32, 128 matches sqrt(p (1 - p) / N) with p from all the points. */
+static void probability_seed_and_convergence(void **state)
+{
+    (void)state;
+    const char *kv[] = { "wall=lattice", NULL };
+    swr_model *m = model(kv);
+    swt_vcrit_opts o;
+    swt_vcrit_opts_default(&o);
+    const double d = 50e-6, vn = 0.5;   /* a cell with p between 0.1 and 0.9 */
+    swt_fraction f1, f2;
+    char msg[200] = "";
+    o.points = 32;
+    o.seed = 5;
+    assert_int_equal(swt_stick_fraction(m, d, vn, &o, &f1, NULL, msg, sizeof msg), 0);
+    assert_int_equal(swt_stick_fraction(m, d, vn, &o, &f2, NULL, msg, sizeof msg), 0);
+    assert_int_equal(f1.sticks, f2.sticks);
+    assert_int_equal(f1.steps, f2.steps);
+    const int ns[] = { 8, 32, 128 };
+    const int nseed = 24;
+    double sd[3], pall = 0.0;
+    long tot = 0, st = 0;
+    double frac[3][24];
+    for (int k = 0; k < 3; k++)
+        for (int s = 0; s < nseed; s++) {
+            o.points = ns[k];
+            o.seed = 100 + 1000 * k + s;
+            assert_int_equal(swt_stick_fraction(m, d, vn, &o, &f1, NULL, msg, sizeof msg), 0);
+            frac[k][s] = (double)f1.sticks / f1.points;
+            st += f1.sticks;
+            tot += f1.points;
+        }
+    pall = (double)st / tot;
+    printf("  p(d 50 um, v_n 0.5 m/s) = %.4f over %ld points\n", pall, tot);
+    assert_true(pall > 0.1 && pall < 0.9);
+    for (int k = 0; k < 3; k++) {
+        double mean = 0.0, var = 0.0;
+        for (int s = 0; s < nseed; s++)
+            mean += frac[k][s] / nseed;
+        for (int s = 0; s < nseed; s++)
+            var += (frac[k][s] - mean) * (frac[k][s] - mean) / (nseed - 1);
+        sd[k] = sqrt(var);
+        const double expect = sqrt(pall * (1.0 - pall) / ns[k]);
+        printf("  N %3d: spread %.4f, binomial %.4f, ratio %.2f\n", ns[k], sd[k], expect,
+               sd[k] / expect);
+        /* 24 samples: the sample sd is within a factor 1.6 of the truth at > 99 % */
+        assert_true(sd[k] / expect > 1.0 / 1.6 && sd[k] / expect < 1.6);
+    }
+    /* 1/sqrt(N): 16 times the points, a quarter of the spread */
+    assert_true(sd[0] / sd[2] > 2.0 && sd[0] / sd[2] < 8.0);
+    swr_model_free(m);
+}
+
+/* Extreme inputs: no NaN, no result outside its range, never past the step
+ * bound, for sizes, speeds, asperity sizes and laws across their ranges. */
+static void extreme_inputs(void **state)
+{
+    (void)state;
+    srand48(11);
+    const char *walls[][7] = {
+        { "wall=lattice", NULL },
+        { "wall=lattice", "lattice=hex", "asperity_r=1e-8", "asperity_spacing=5e-8", NULL },
+        { "wall=lattice", "asperity_r=1e-3", "asperity_spacing=1e-3", "asperity_jitter=0.5",
+          "asperity_dz=5e-4", NULL },
+        { "wall=lattice", "asperity_spacing=1e-5", "adhesion=none", "cor=0.5", NULL },
+        { "wall=lattice", "gamma=10", "E=1e8", "mu=2", "dashpot=both", NULL },
+        { "wall=lattice", "cor=elastic", "gamma=0.01", "asperity_dz=2e-6", "asperity_jitter=0.2", NULL },
+    };
+    long n = 0, bound = 0;
+    for (size_t w = 0; w < sizeof walls / sizeof walls[0]; w++) {
+        swr_model *m = model(walls[w]);
+        double lx, ly;
+        swr_model_sample_area(m, &lx, &ly);
+        assert_true(lx > 0.0 && ly > 0.0);
+        const swr_params *pp = swr_model_params(m);
+        const double dmax = fmin(SWR_D_MAX, SWR_ROUGH_D_OVER_R_MAX * pp->asperity_r);
+        /* beyond d / r = SWR_ROUGH_D_OVER_R_MAX: a named error */
+        if (dmax < SWR_D_MAX) {
+            swr_impact big = { dmax * 1.01, 1.0, 0.0, 0.0, 0.0, 0.0 };
+            swr_result r;
+            assert_int_equal(swr_collide(m, &big, &r, NULL), SWR_EINVAL);
+            assert_non_null(strstr(r.msg, "asperity radii"));
+        }
+        for (int k = 0; k < 40; k++) {
+            swr_impact in = { SWR_D_MIN * pow(dmax / SWR_D_MIN, drand48()), 1e-3 * pow(1e6, drand48()),
+                              drand48() < 0.5 ? 0.0 : 1e-3 * pow(1e5, drand48()), 0.0,
+                              lx * drand48(), ly * drand48() };
+            swr_result r;
+            const swr_status st = swr_collide(m, &in, &r, NULL);
+            assert_true(st == SWR_OK || st == SWR_STEP_BOUND);
+            /* a bounce leaves with at most the impact energy (on a rough wall
+             * tangential speed may turn into normal: e_n > 1 is possible) */
+            const double et = isfinite(r.e_t) ? r.e_t : 0.0;
+            const double e_out = r.e_n * r.e_n * in.vn * in.vn + et * et * in.vt * in.vt;
+            if (!(isfinite(r.e_n) && r.e_n >= 0.0
+                  && e_out <= (in.vn * in.vn + in.vt * in.vt) * (1.0 + 1e-2)))
+                fail_msg("wall %zu: d %g vn %g vt %g x %g y %g: e_n %g e_t %g", w, in.d, in.vn,
+                         in.vt, in.x, in.y, r.e_n, et);
+            assert_true(isfinite(r.t_contact) && r.t_contact >= 0.0);
+            assert_true(isfinite(r.energy_err) && isfinite(r.delta_max));
+            assert_true(r.steps <= r.max_steps);
+            assert_true(r.contacts >= 1);
+            n++;
+            bound += st == SWR_STEP_BOUND;
+        }
+        swr_model_free(m);
+    }
+    printf("  %ld impacts, %ld on a bound\n", n, bound);
+}
+
+/* Settings: every rough-wall key is checked and named; thornton-ning is refused. */
+static void rough_params(void **state)
+{
+    (void)state;
+    swr_params p;
+    char err[256];
+    swr_params_default(&p);
+    assert_int_equal(swr_params_set_kv(&p, "wall=bumpy", err, sizeof err), -1);
+    assert_non_null(strstr(err, "wall"));
+    assert_int_equal(swr_params_set_kv(&p, "lattice=triangle", err, sizeof err), -1);
+    assert_int_equal(swr_params_set_kv(&p, "asperity_r=-1e-6", err, sizeof err), -1);
+    assert_non_null(strstr(err, "asperity_r"));
+    assert_int_equal(swr_params_set_kv(&p, "asperity_jitter=0.7", err, sizeof err), -1);
+    assert_int_equal(swr_params_set_kv(&p, "wall_seed=1.5", err, sizeof err), -1);
+    assert_non_null(strstr(err, "integer"));
+    assert_int_equal(swr_params_set_kv(&p, "rough_hold=nan", err, sizeof err), -1);
+    assert_int_equal(swr_params_set_kv(&p, "wall=lattice", err, sizeof err), 0);
+    assert_int_equal(swr_params_set_kv(&p, "cor=thornton-ning", err, sizeof err), 0);
+    assert_null(swr_model_alloc(&p, err, sizeof err));
+    assert_non_null(strstr(err, "thornton-ning"));
+    /* a flat wall prints no wall keys; a lattice prints them all */
+    swr_params_default(&p);
+    char buf[4096];
+    FILE *f = fmemopen(buf, sizeof buf, "w");
+    swr_params_print(&p, "", f);
+    fclose(f);
+    assert_null(strstr(buf, "asperity"));
+    assert_int_equal(swr_params_set_kv(&p, "wall=lattice", err, sizeof err), 0);
+    f = fmemopen(buf, sizeof buf, "w");
+    swr_params_print(&p, "", f);
+    fclose(f);
+    assert_non_null(strstr(buf, "wall lattice"));
+    assert_non_null(strstr(buf, "asperity_spacing"));
+    assert_non_null(strstr(buf, "rough_hold"));
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(rough_params),
+        cmocka_unit_test(lattice_geometry),
+        cmocka_unit_test(one_asperity_vs),
+        cmocka_unit_test(huge_asperity_is_flat),
+        cmocka_unit_test(probability_seed_and_convergence),
+        cmocka_unit_test(extreme_inputs),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
