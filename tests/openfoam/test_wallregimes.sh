@@ -117,7 +117,7 @@ prep "$tmp/serial"
 (cd "$tmp/serial" && run log.run icoUncoupledKinematicParcelFoam)
 k=$(check "$tmp/serial")
 log="$tmp/serial/log.run"
-grep -q "snowWallInteraction: wallRegimes roughABS: patches wall; stick probability table (rough wall); regime 'rough test wall: p 0.3' .*stick probability table 2 x 2 (d 1e-06..0.0001 m, v_n 0.1..10 m/s" "$log" \
+grep -q "snowWallInteraction: wallRegimes roughABS: patches wall; regime 'rough test wall: p 0.3' .*; stick probability table 2 x 2 (d 1e-06..0.0001 m, v_n 0.1..10 m/s; outside: the interface)$" "$log" \
     || fail "no wallRegimes line for roughABS: $(grep wallRegimes "$log" || true)"
 grep -q "snowWallInteraction: main regime on the snow patches top$" "$log" || fail "no main-regime line"
 grep "snowWallInteraction: regime 'test fixture" "$log" | grep -q "probability" \

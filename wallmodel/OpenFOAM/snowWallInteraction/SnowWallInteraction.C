@@ -279,11 +279,10 @@ void Foam::SnowWallInteraction<CloudType>::setupWallRegimes
             slotModel_[si] = m;
             Info<< ' ' << pn;
         }
+        // the description names a stick-probability table (rough wall)
         char desc[1024];
         sww_describe(m, desc, sizeof desc);
-        Info<< "; " << (sww_probability_table(m, nullptr, nullptr)
-            ? "stick probability table (rough wall); " : "")
-            << "regime " << desc << endl;
+        Info<< "; regime " << desc << endl;
     }
     Info<< "    snowWallInteraction: main regime on the snow patches";
     forAll(snowPatches_, si)
