@@ -284,7 +284,7 @@ static int write_rough_plot(swt_outset *os, const sr_mapres *r, const char *titl
     fprintf(f, "set xlabel 'normal impact speed v_n [m/s]'\nset ylabel 'particle diameter d [um]'\n");
     fprintf(f, "set cblabel 'stick probability'\nset cbrange [0:1]\n"
                "set palette defined (0 '#e08070', 0.5 '#f4f0e8', 1 '#3070d0')\n");
-    fprintf(f, "set title \"%s\" noenhanced\n", title);
+    fprintf(f, "set title \"%s\" noenhanced\n", title);  /* title: no quotes or backslashes but its \\n */
     fprintf(f, "plot '%s' skip 1 using 2:($1*1e6):8 with points pt 5 ps 1.3 palette notitle, \\\n"
                "     '%s' skip 2 using ($1==0.1 ? $2 : 1/0):($3*1e6) with linespoints pt 7 ps 0.5 lw 2 lc rgb '#804000' title 'p = 0.1', \\\n"
                "     '%s' skip 2 using ($1==0.5 ? $2 : 1/0):($3*1e6) with linespoints pt 7 ps 0.5 lw 2 lc rgb 'black' title 'p = 0.5', \\\n"
@@ -325,8 +325,8 @@ static int write_map_files(swt_outset *os, const char *sfx, const sr_mapres *r, 
     if (plot && r->mp->points > 0) {
         fflush(NULL);
         char title[300];
-        snprintf(title, sizeof title, "snowregime map: stick probability on a rough wall (%s, "
-                 "%d points per cell), gamma %g J/m2", what, r->mp->points, p->gamma);
+        snprintf(title, sizeof title, "snowregime map: stick probability, %d impact points per cell, "
+                 "gamma %g J/m2\\n%s", r->mp->points, p->gamma, what);
         if (write_rough_plot(os, r, title, err, errlen) != 0) return -1;
     } else if (plot) {
         /* data must be on disk before gnuplot reads the temporaries */

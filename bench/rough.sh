@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# bench/rough.sh - cost of the rough wall (issue 9) next to the flat wall (prints figures).
+#
+# Usage: bench/rough.sh [--reps N] [--points LIST] [--set KEY=VALUE]... [--help]
+#
+# Runs `snowregime map --no-plot` on the default 46 x 50 grid (10-100 um, the
+# automatic speed range) on 2 threads, N repetitions (default 3), for the flat
+# wall and for a lattice of 1 um asperities (square, spacing 2 um) at each
+# number of impact points per cell in LIST (default 16,64), and prints the
+# medians of
+#   grid     the map's grid (the stick fraction of every cell) [s]
+#   total    grid + the contour bisection (p = 0.1, 0.5, 0.9) + fit [s]
+#   impact   grid wall time x 2 threads / impacts: CPU time per rough impact [us]
+# and the ratios to the flat map. --set KEY=VALUE: a setting for every run
+# (e.g. asperity_r=0.5e-6). Uses bin/snowregime (./Allwmake).
+# Not a test: nothing is asserted.
+set -euo pipefail
+top=$(cd "$(dirname "$0")/.." && pwd)
+sr=${SNOWREGIME:-$top/bin/snowregime}
+reps=3
+plist=16,64
+sets=()
+while [ $# -gt 0 ]; do
+    case "$1" in
+        -h|--help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        --reps) reps=${2:?"--reps needs a number"}; shift ;;
+        --points) plist=${2:?"--points needs a list"}; shift ;;
+        --set) sets+=(--set "${2:?"--set needs KEY=VALUE"}"); shift ;;
+        *) echo "bench/rough.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
+    esac
+    shift
+done
+[[ "$reps" =~ ^[1-9][0-9]*$ ]] || { echo "bench/rough.sh: --reps: '$reps' is not a positive integer" >&2; exit 2; }
+[[ "$plist" =~ ^[1-9][0-9]*(,[1-9][0-9]*)*$ ]] || { echo "bench/rough.sh: --points: '$plist' is not a list of positive integers" >&2; exit 2; }
+[ -x "$sr" ] || { echo "bench/rough.sh: $sr missing: run ./Allwmake" >&2; exit 1; }
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : 0.5 * (v[NR / 2] + v[NR / 2 + 1]) }'; }
+
+# run LABEL ARGS... -> lines "grid total impacts" per repetition in $tmp/LABEL
+run() {
+    local label=$1; shift
+    : >"$tmp/$label"
+    for _ in $(seq "$reps"); do
+        "$sr" map --no-plot --threads 2 --out "$tmp/out" "${sets[@]}" "$@" >"$tmp/log" 2>&1 \
+            || { cat "$tmp/log" >&2; exit 1; }
+        sed -n 's/.*wall time: grid \([0-9.]*\) s (\([0-9]*\) collisions.*total \([0-9.]*\) s.*/\1 \3 \2/p' "$tmp/log" >>"$tmp/$label"
+    done
+}
+col() { awk -v c="$2" '{ print $c }' "$tmp/$1" | median; }
+
+echo "# bench/rough.sh on $(uname -n), $(nproc) cores, $(date -u +%Y-%m-%dT%H:%MZ), $reps repetitions, 46 x 50 grid, 2 threads${sets[*]:+, ${sets[*]}}"
+run flat
+fg=$(col flat 1); ft=$(col flat 2); fn=$(col flat 3)
+printf "%-28s grid %9.4f s  total %9.4f s  impact %9.3f us\n" "flat wall" "$fg" "$ft" \
+    "$(awk -v g="$fg" -v n="$fn" 'BEGIN { print 2e6 * g / n }')"
+IFS=, read -r -a pts <<<"$plist"
+for n in "${pts[@]}"; do
+    run "r$n" --set wall=lattice --points "$n"
+    g=$(col "r$n" 1); t=$(col "r$n" 2); k=$(col "r$n" 3)
+    printf "%-28s grid %9.4f s  total %9.4f s  impact %9.3f us  (grid x%.0f, total x%.0f the flat map)\n" \
+        "lattice 1 um, $n points/cell" "$g" "$t" "$(awk -v g="$g" -v n="$k" 'BEGIN { print 2e6 * g / n }')" \
+        "$(awk -v a="$g" -v b="$fg" 'BEGIN { print a / b }')" "$(awk -v a="$t" -v b="$ft" 'BEGIN { print a / b }')"
+done
