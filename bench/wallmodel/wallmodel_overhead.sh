@@ -3,7 +3,7 @@
 # built-in localInteraction on a case with many wall impacts.
 #
 # Usage: bench/wallmodel/wallmodel_overhead.sh [--help] [--runs N] [--parcels N] [--steps N]
-#                                              [--buildup]
+#                                              [--buildup] [--table]
 #
 # The case (made in a temp folder): a 0.1 m cube, 4x4x4 cells, walls at y = 0 and
 # y = 0.1; N parcels (default 20000) of 100 um ice fly force-free at 10 m/s normal
@@ -20,16 +20,21 @@
 # --buildup: snowWallInteraction with the build-up feedback on (buildUp with the
 # same regime as the covered one, coverMass 1 kg/m2): every impact also reads its
 # face's deposit and the covered fraction (all bounce here, so w stays 0).
+# --table: the regime carries a rough wall's stick-probability table (46 x 50, as
+# snowregime map --set wall=lattice writes it) spanning every impact of the case
+# (d 10-200 um, v_n 1-20 m/s) with p = 0: every decision interpolates the table
+# (and still bounces, so the trajectories stay those of localInteraction).
 # Exit 2 on bad arguments; 77 when OpenFOAM or the library is missing.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 top=$(cd "$here/../.." && pwd)
-runs=5 parcels=20000 steps=100 buildup=
-usage() { sed -n '2,23p' "$0" | sed 's/^# \{0,1\}//'; }
+runs=5 parcels=20000 steps=100 buildup= table=0
+usage() { sed -n '2,27p' "$0" | sed 's/^# \{0,1\}//'; }
 while [ $# -gt 0 ]; do
     case "$1" in
         -h|--help) usage; exit 0 ;;
         --buildup) buildup='buildUp { #include "regime.coeffs" coverMass 1; }' ;;
+        --table) table=1 ;;
         --runs|--parcels|--steps)
             [ $# -ge 2 ] && [[ "$2" =~ ^[1-9][0-9]*$ ]] \
                 || { echo "wallmodel_overhead: $1 needs a positive integer, got '${2:-}'" >&2; exit 2; }
@@ -50,6 +55,19 @@ trap 'rm -rf "$tmp"' EXIT
 base="$tmp/base"
 cp -r "$top/tests/openfoam/box" "$base"
 cp "$here/regime.coeffs" "$base/constant/regime.coeffs"
+if [ "$table" = 1 ]; then
+    # the probability table inside regime { }: before its closing brace
+    awk 'BEGIN { nd = 46; nv = 50 }
+         /^}/ && !done {
+             printf "    probabilityD      (";
+             for (i = 0; i < nd; i++) printf "%s%.6g", (i ? " " : ""), 1e-5 + 1.9e-4 * i / (nd - 1);
+             printf ");\n    probabilityVn     (";
+             for (j = 0; j < nv; j++) printf "%s%.6g", (j ? " " : ""), exp(log(20) * j / (nv - 1));
+             printf ");\n    probabilityStick  (";
+             for (k = 0; k < nd * nv; k++) printf "%s0", (k ? " " : "");
+             printf ");\n    probabilityPoints 64;\n"; done = 1 }
+         { print }' "$here/regime.coeffs" > "$base/constant/regime.coeffs"
+fi
 sed -i 's/top    { type patch;/top    { type wall; /' "$base/system/blockMeshDict"
 sed -i 's/top   { type fixedValue; value uniform (0.2 0 0); }/top   { type fixedValue; value uniform (0 0 0); }/' "$base/0/U"
 sed -i 's/^(0[.0-9e-]* 0 0)$/(0 0 0)/' "$base/0/U"
@@ -122,7 +140,7 @@ one_run() { # MODEL -> prints "cpu impacts"
 }
 median() { sort -g | awk '{ a[NR] = $1 } END { print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2 }'; }
 
-echo "wallmodel_overhead: $parcels parcels, $steps steps of 1 ms, $runs runs per model${buildup:+, build-up feedback on}"
+echo "wallmodel_overhead: $parcels parcels, $steps steps of 1 ms, $runs runs per model${buildup:+, build-up feedback on}$([ "$table" = 1 ] && echo ", stick-probability table (every impact inside)")"
 : > "$tmp/local" ; : > "$tmp/snow"
 for i in $(seq "$runs"); do
     read -r tl _ < <(one_run localInteraction)

@@ -53,6 +53,8 @@
 #define RC_MAX 256
 /* marks the base plane in a contact's index */
 #define PLANE_ID INT_MIN
+/* free_flight: no event within the part of the path it scanned; fly on */
+#define FLY_ON (INT_MIN + 1)
 
 typedef struct {
     int i, j;             /* asperity index, or i = PLANE_ID */
@@ -195,9 +197,11 @@ static double contact_energy(const rc_contact *c)
 
 /* Closed-form free flight from C with velocity v: the time to the first touch
  * of an asperity or the base plane (*hit_i, *hit_j), or to the exit from the
- * asperity layer (returns the time with *hit_i = INT_MAX). INFINITY when
- * neither happens (moving parallel inside the layer without meeting anything
- * within SWR_ROUGH_FLIGHT_CELLS spacings). */
+ * asperity layer (returns the time with *hit_i = INT_MAX). It scans the path in
+ * chunks of one spacing of horizontal travel, at most SWR_ROUGH_FLIGHT_CELLS of
+ * them: with nothing met there it returns the time to the end of the scan with
+ * *hit_i = FLY_ON (the caller flies on and asks again). INFINITY when moving
+ * parallel to the wall inside the layer without meeting anything. */
 #define SWR_ROUGH_FLIGHT_CELLS 4096
 static double free_flight(const rc_state *s, const double C[3], const double v[3], int *hit_i,
                           int *hit_j)
@@ -276,8 +280,13 @@ static double free_flight(const rc_state *s, const double C[3], const double v[3
             }
         }
         t0 = t1;
-        if (!isfinite(t_end) && k + 1 == SWR_ROUGH_FLIGHT_CELLS && !isfinite(best))
+    }
+    if (t0 < best) {
+        /* the scan ended before the event it found (or none): fly on */
+        if (!isfinite(t_end) && !isfinite(best))
             return INFINITY;
+        *hit_i = FLY_ON;
+        return t0;
     }
     return best;
 }
@@ -478,6 +487,8 @@ swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_resul
                 outcome = BOUNCE;
                 break;
             }
+            if (hi == FLY_ON)
+                continue;
             double nn[3], ah[3];
             if (hi != PLANE_ID)
                 asp(s, hi, hj, ah);
@@ -491,6 +502,9 @@ swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_resul
             contacts += s->nc;
             if (t_first < 0.0)
                 t_first = t;
+            for (int k = 0; k < s->nc; k++)
+                if (s->c[k].nm->Uc > eref)
+                    eref = s->c[k].nm->Uc;
             for (int k = 0; k < s->nc; k++)
                 s->c[k].fne = swr_normal_force(s->c[k].nm, s->c[k].x);
             state_energy(s, v, w, &esc);

@@ -277,6 +277,17 @@ static void extreme_inputs(void **state)
         swr_model_free(m);
     }
     printf("  %ld impacts, %ld on a bound\n", n, bound);
+    /* grazing flights across many cells of a sparse lattice (flown in chunks) */
+    const char *sparse[] = { "wall=lattice", "asperity_r=0.2e-6", "asperity_spacing=20e-6", NULL };
+    swr_model *m = model(sparse);
+    for (int k = 0; k < 8; k++) {
+        swr_impact in = { 2e-6, 1e-3, 50.0, 0.0, 3e-6 * k, 1.7e-6 * k };
+        swr_result r;
+        const swr_status st = swr_collide(m, &in, &r, NULL);
+        assert_true(st == SWR_OK || st == SWR_STEP_BOUND);
+        assert_true(r.contacts >= 1 && isfinite(r.e_n) && isfinite(r.t_contact));
+    }
+    swr_model_free(m);
 }
 
 /* Settings: every rough-wall key is checked and named; thornton-ning is refused. */
