@@ -51,4 +51,14 @@ expect2 "--points" vcrit --d 1e-5 $L --points 0
 expect2 "asperity radii" collide --d 0.01 --vn 1 $L
 expect2 "wall" collide --d 1e-5 --vn 1 --set wall=rough
 for k in 1 2 3 4 5; do [ ! -e "$WORK/x$k" ] || fail "error left $WORK/x$k"; done
+# validation/rough-wall.sh (the README's rough-wall table), quick
+RW=$SW_TOP/validation/rough-wall.sh
+SNOWREGIME=$SR "$RW" --out "$WORK/rw" --quick >"$WORK/rw.log" 2>&1 || { cat "$WORK/rw.log"; fail "rough-wall.sh --quick exit $?"; }
+for f in vcrit.md geometry.md rough-map.png map/regime.coeffs times.txt; do [ -s "$WORK/rw/$f" ] || fail "rough-wall.sh: no $f"; done
+[ "$(grep -c '^| square, r 1 um, s 2 um |' "$WORK/rw/vcrit.md")" = 3 ] || fail "rough-wall.sh: vcrit.md lacks the three p rows"
+[ "$(grep -c '^| [0-9.]* | [0-9.]* |' "$WORK/rw/geometry.md")" = 8 ] || fail "rough-wall.sh: geometry.md lacks its 8 rows"
+SNOWREGIME=$SR "$RW" --out "$WORK/rw2" --points 0 >/dev/null 2>&1; [ $? -eq 2 ] || fail "rough-wall.sh --points 0: not exit 2"
+SNOWREGIME=$SR "$RW" --out "$WORK/rw3" --set wall=bumpy >/dev/null 2>&1; [ $? -eq 2 ] || fail "rough-wall.sh --set wall=bumpy: not exit 2"
+ls -a "$WORK" | grep -q '^\.rough-wall' && fail "rough-wall.sh left a temporary folder"
+[ ! -e "$WORK/rw2" ] && [ ! -e "$WORK/rw3" ] || fail "rough-wall.sh: a failed run left its folder"
 finish
