@@ -111,9 +111,9 @@ t1=$(date +%s)
 cp "$tmp/map/map.png" "$tmp/rough-map.png"
 t2=$(date +%s)
 echo "rough-wall.sh: tables $((t1 - t0)) s, map $((t2 - t1)) s ($nd x $nv x $points points)" >"$tmp/times.txt"
-rm -f "$tmp"/*.txt.err "$tmp"/*.err
+rm -f "$tmp"/*.err "$tmp/err"
 mkdir -p "$tmp/logs"
-mv "$tmp"/*.txt "$tmp/logs/" 2>/dev/null || true
+mv "$tmp"/*.txt "$tmp/map.log" "$tmp/logs/" 2>/dev/null || true
 mv "$tmp/logs/times.txt" "$tmp/times.txt"
 rm -rf -- "$out"
 mv "$tmp" "$out"

@@ -43,7 +43,7 @@ static const char *help_main =
 "        asperity_r 1e-6 (radius), asperity_spacing 2e-6 (nearest neighbours;\n"
 "        2 r: touching), asperity_jitter 0 (random lateral offset / spacing, <= 0.5),\n"
 "        asperity_dz 0 (random sinking depth [m]), wall_seed 1 (integer), rough_hold\n"
-"        100 (contact times in contact after which a held sphere counts as stuck).\n"
+"        30 (contact times in contact after which a held sphere counts as stuck).\n"
 "        On a lattice the outcome is a stick probability over impact points\n"
 "        (--points N, --seed S of vcrit and map); cor thornton-ning is refused.\n"
 "\n"

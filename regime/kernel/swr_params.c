@@ -92,7 +92,7 @@ void swr_params_default(swr_params *p)
     p->asperity_jitter = 0.0;
     p->asperity_dz = 0.0;
     p->wall_seed = 1.0;
-    p->rough_hold = 100.0;
+    p->rough_hold = 30.0;
 }
 
 /* Strict number: the whole text (surrounding blanks allowed), finite. */

@@ -77,7 +77,7 @@ typedef struct {
     double wall_seed;    /* `wall_seed` seed of the random offsets (integer) 1    */
     double rough_hold;   /* `rough_hold` contact times t_c (flat wall, impact speed) a
                             sphere may spend in contact before, still held, it counts
-                            as stuck (swr_rough.c)                     100      */
+                            as stuck (swr_rough.c)                     30       */
     /* numerics */
     double accuracy;   /* `accuracy` steps per Hertz contact time (the one accuracy knob) 60 */
 } swr_params;
