@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # test_wedge_case.sh - tutorials/wedge end to end on its coarsest variant, in a
 # temporary copy. WEDGE_MODE selects the run:
-#   transient (default)  Allrun -test -compare -feedback: the DDES route, the four
-#                        gate settings and the build-up feedback as five clouds in
-#                        one run (about 60 s)
+#   transient (default)  Allrun -test -compare -feedback -rough: the DDES route, the
+#                        four gate settings, the build-up feedback and the rough wall
+#                        as six clouds in one run (about 60 s)
 #   parallel             Allrun -test (serial) and Allrun -test -parallel 2, gates
 #                        off: both checked, and their impact counts on the nose
 #                        agree within 4 Poisson standard deviations (about 60 s)
@@ -27,7 +27,7 @@
 set -u
 mode=${WEDGE_MODE:-transient}
 case "$mode" in
-    transient) runs=("-test -compare -feedback"); gates="off tangential shear regime feedback" ;;
+    transient) runs=("-test -compare -feedback -rough"); gates="off tangential shear regime feedback rough" ;;
     parallel)  runs=("-test" "-test -parallel 2"); gates=off ;;
     steady)    runs=("-steady -test"); gates=off ;;
     *) echo "unknown WEDGE_MODE '$mode'"; exit 2 ;;
@@ -117,6 +117,8 @@ run_case() {  # run_case N ARGS: Allrun ARGS in a fresh copy $tmp/wedgeN, then t
             check "the regime gate's cloud read the oblique table" "grep -q 'tangential gate on: regime table' '$w/$log'"
             check "the feedback cloud has the snow-covered regime" "grep -q 'build-up on: snow-covered regime' '$w/$log'"
             check "feedback.md: the 6 patches with covered-face counts" "[ \$(grep -c -E '^\| (rear|nose|top|bottom|sideYneg|sideYpos) \|.* of [0-9]+ \|\$' '$r/feedback.md') = 6 ]"
+            check "the rough cloud has the rough regime with its probability table on the 6 faces" "grep -q 'wallRegimes roughABS: patches .*nose.*stick probability table' '$w/$log'"
+            check "rough.md: the 6 patches, flat against rough" "[ \$(grep -c -E '^\| (rear|nose|top|bottom|sideYneg|sideYpos) \|' '$r/rough.md') = 6 ]"
             check "the shear-gate cloud had the wall shear stress" "ls '$w/'0.*/wallShearStress >/dev/null 2>&1"
             # the solver's cloud options: bad lists stop it at start-up with a message
             bad_clouds() {  # bad_clouds MESSAGE ARGS...
