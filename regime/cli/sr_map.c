@@ -196,6 +196,17 @@ static void gp_fit_function(FILE *gp, const char *name, const swt_fit *F)
     fprintf(gp, ")\n");
 }
 
+/* The axes of a map plot: v_n (log when the grid is) against d in um. */
+static void gp_map_axes(FILE *f, const swt_map *mp)
+{
+    fprintf(f, "set datafile separator ','\nset key outside below horizontal\nset format x '%%g'\nset mxtics 10\n");
+    if (mp->g.vlog) fprintf(f, "set logscale x\n");
+    fprintf(f, "set xrange [%.10g:%.10g]\nset yrange [%.10g:%.10g]\n",
+            mp->g.vmin / (mp->g.vlog ? 1.05 : 1.0), mp->g.vmax * 1.05,
+            mp->g.dmin * 1e6 - 2, mp->g.dmax * 1e6 + 2);
+    fprintf(f, "set xlabel 'normal impact speed v_n [m/s]'\nset ylabel 'particle diameter d [um]'\n");
+}
+
 static int write_map_plot(swt_outset *os, const char *sfx, const sr_mapres *r, const char *title,
                           char *err, size_t errlen)
 {
@@ -211,12 +222,7 @@ static int write_map_plot(swt_outset *os, const char *sfx, const sr_mapres *r, c
     swt_gnuplot g;
     if (swt_gnuplot_open(&g, png, 800, 700, err, errlen) != 0) return -1;
     FILE *f = g.f;
-    fprintf(f, "set datafile separator ','\nset key outside below horizontal\nset format x '%%g'\nset mxtics 10\n");
-    if (r->mp->g.vlog) fprintf(f, "set logscale x\n");
-    fprintf(f, "set xrange [%.10g:%.10g]\nset yrange [%.10g:%.10g]\n",
-            r->mp->g.vmin / (r->mp->g.vlog ? 1.05 : 1.0), r->mp->g.vmax * 1.05,
-            r->mp->g.dmin * 1e6 - 2, r->mp->g.dmax * 1e6 + 2);
-    fprintf(f, "set xlabel 'normal impact speed v_n [m/s]'\nset ylabel 'particle diameter d [um]'\n");
+    gp_map_axes(f, r->mp);
     fprintf(f, "set title \"%s\" noenhanced\nset samples 400\n", title);
     if (r->fit_ok) gp_fit_function(f, "dfit", &r->fit);
     fprintf(f, "plot '%s' skip 1 using 2:($3==1 ? $1*1e6 : 1/0) with points pt 5 ps 0.55 lc rgb '#3070d0' title 'stick', \\\n"
@@ -276,12 +282,7 @@ static int write_rough_plot(swt_outset *os, const sr_mapres *r, const char *titl
     swt_gnuplot g;
     if (swt_gnuplot_open(&g, png, 820, 700, err, errlen) != 0) return -1;
     FILE *f = g.f;
-    fprintf(f, "set datafile separator ','\nset key outside below horizontal\nset format x '%%g'\nset mxtics 10\n");
-    if (r->mp->g.vlog) fprintf(f, "set logscale x\n");
-    fprintf(f, "set xrange [%.10g:%.10g]\nset yrange [%.10g:%.10g]\n",
-            r->mp->g.vmin / (r->mp->g.vlog ? 1.05 : 1.0), r->mp->g.vmax * 1.05,
-            r->mp->g.dmin * 1e6 - 2, r->mp->g.dmax * 1e6 + 2);
-    fprintf(f, "set xlabel 'normal impact speed v_n [m/s]'\nset ylabel 'particle diameter d [um]'\n");
+    gp_map_axes(f, r->mp);
     fprintf(f, "set cblabel 'stick probability'\nset cbrange [0:1]\n"
                "set palette defined (0 '#e08070', 0.5 '#f4f0e8', 1 '#3070d0')\n");
     fprintf(f, "set title \"%s\" noenhanced\n", title);  /* title: no quotes or backslashes but its \\n */

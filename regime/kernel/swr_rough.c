@@ -365,6 +365,18 @@ static void add_msg(swr_result *r, const char *text)
     snprintf(r->msg + len, sizeof r->msg - len, "%s%s", len ? "; " : "", text);
 }
 
+/* Energy held by a contact's tangential and rolling springs. */
+static double spring_energy(const rc_state *s, const rc_contact *c)
+{
+    const double a = c->x * c->x;
+    double e = 0.5 * 8.0 * s->Gs * a * dot(c->xi, c->xi);
+    if (c->nm->Fc > 0.0) {
+        const double ra = a / c->nm->a0;
+        e += 0.5 * 4.0 * c->nm->Fc * ra * sqrt(ra) * dot(c->xr, c->xr) / s->R;
+    }
+    return e;
+}
+
 /* Energies of the current state: kinetic + contact potentials + springs. */
 static double state_energy(const rc_state *s, const double v[3], const double w[3],
                            double *esc)
@@ -372,13 +384,7 @@ static double state_energy(const rc_state *s, const double v[3], const double w[
     double e = 0.5 * dot(v, v) + 0.5 * s->Is * dot(w, w), below = 0.0;
     for (int k = 0; k < s->nc; k++) {
         const rc_contact *c = &s->c[k];
-        const double a = c->x * c->x;
-        double sp = 0.5 * 8.0 * s->Gs * a * dot(c->xi, c->xi);
-        if (c->nm->Fc > 0.0) {
-            const double ra = a / c->nm->a0;
-            sp += 0.5 * 4.0 * c->nm->Fc * ra * sqrt(ra) * dot(c->xr, c->xr) / s->R;
-        }
-        e += contact_energy(c) + sp;
+        e += contact_energy(c) + spring_energy(s, c);
         below += c->nm->Uc;
     }
     *esc = e - below;
@@ -553,13 +559,7 @@ swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_resul
             const int broken = c->nm->gamma > 0.0 ? dl < c->nm->delta_c : dl <= 0.0;
             if (broken) {
                 /* the contact's stored energy (U_c for JKR) and its springs are lost */
-                const double a = c->x * c->x;
-                double e_sp = 0.5 * 8.0 * s->Gs * a * dot(c->xi, c->xi);
-                if (c->nm->Fc > 0.0) {
-                    const double ra = a / c->nm->a0;
-                    e_sp += 0.5 * 4.0 * c->nm->Fc * ra * sqrt(ra) * dot(c->xr, c->xr) / s->R;
-                }
-                w_diss += contact_energy(c) + e_sp;
+                w_diss += contact_energy(c) + spring_energy(s, c);
                 s->guard = 0.0; /* it may touch again: search from the next step */
                 if (c->fd != 0.0) /* undo the opening kick's dashpot part */
                     for (int q = 0; q < 3; q++)
