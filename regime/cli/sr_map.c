@@ -603,6 +603,7 @@ int sr_cmd_sensitivity(int argc, char **argv)
     for (; a.i < argc; a.i++) {
         int r = sr_settings_opt(&a, &s);
         if (r == 0) r = mapopt_parse(&a, &mo);
+        if (r == 0) r = sr_rough_opt(&a, &mo.o);
         if (r < 0) return sr_usage_error(cmd, a.err);
         if (r > 0) continue;
         if (sr_flag(&a, "--help") || sr_flag(&a, "-h")) { sr_help(cmd); return 0; }
