@@ -15,7 +15,8 @@
  * hysteresis; swr_plastic.c: Thornton & Ning's adhesive elastic-plastic
  * contact, cor thornton-ning), damping (swr_damping.c: COR modes), tangential sliding
  * (swr_tangential.c), rolling resistance (swr_rolling.c), wall geometry
- * (swr_wall.c), time integration (swr_collide.c).
+ * (swr_wall.c: flat, or a rough lattice of asperities), time integration
+ * (swr_collide.c; on a rough wall the 3-D multi-contact swr_rough.c).
  */
 #ifndef SWR_COLLIDE_H
 #define SWR_COLLIDE_H

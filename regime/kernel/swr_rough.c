@@ -9,8 +9,9 @@
  * swr_normal.h) about its own R* and normal, the COR dashpot set from that
  * contact's own approach speed (swr_damping.h; Thornton's e_p with the yield
  * velocity of a sphere of R* and the particle's mass), the Mindlin spring with
- * its Coulomb limit (swr_tangential.h, here as a 3-D spring kept in the
- * contact's tangent plane) and the rolling resistance (swr_rolling.h, 3-D).
+ * its Coulomb limit (the law of swr_tangential.h as a 3-D spring kept in the
+ * contact's tangent plane) and the rolling resistance (the law of
+ * swr_rolling.h with a 3-D rolling displacement R (w x n)).
  *
  * Outcome, by energy. With E_esc = kinetic energy + sum over the contacts of
  * (U_k - U_c,k) + the energy held by their springs, E_esc never grows: the
@@ -33,7 +34,6 @@
  * then (skidding over the asperities with E_esc > 0) counts as a stick, with
  * status SWR_STEP_BOUND.
  */
-#include <float.h>
 #include <limits.h>
 #include <math.h>
 #include <stdio.h>
@@ -46,7 +46,6 @@
 #include "swr_damping.h"
 #include "swr_internal.h"
 #include "swr_normal.h"
-#include "swr_rolling.h"
 #include "swr_wall.h"
 
 /* contacts held at once (a 100 um sphere pressed into 1 um asperities holds a few tens) */
