@@ -97,15 +97,15 @@ int sr_cmd_collide(int argc, char **argv)
         if (r > 0) continue;
         if (sr_flag(&a, "--help") || sr_flag(&a, "-h")) { sr_help(cmd); return 0; }
         if (sr_opt(&a, "--d", &v)) {
-            if (!v || swt_parse_double("--d", v, 1e-300, 1.0, &in.d, a.err, sizeof a.err))
+            if (!v || swt_parse_double("--d", v, SWR_D_MIN, SWR_D_MAX, &in.d, a.err, sizeof a.err))
                 return sr_usage_error(cmd, a.err);
             have_d = 1;
         } else if (sr_opt(&a, "--vn", &v)) {
-            if (!v || swt_parse_double("--vn", v, 1e-300, 1e4, &in.vn, a.err, sizeof a.err))
+            if (!v || swt_parse_double("--vn", v, SWR_V_MIN, SWR_V_MAX, &in.vn, a.err, sizeof a.err))
                 return sr_usage_error(cmd, a.err);
             have_vn = 1;
         } else if (sr_opt(&a, "--vt", &v)) {
-            if (!v || swt_parse_double("--vt", v, 0.0, 1e4, &in.vt, a.err, sizeof a.err))
+            if (!v || swt_parse_double("--vt", v, 0.0, SWR_V_MAX, &in.vt, a.err, sizeof a.err))
                 return sr_usage_error(cmd, a.err);
         } else if (sr_opt(&a, "--omega", &v)) {
             if (!v || swt_parse_double("--omega", v, -1e12, 1e12, &in.omega, a.err, sizeof a.err))

@@ -23,7 +23,7 @@ int sr_cmd_convergence(int argc, char **argv)
         if (sr_flag(&a, "--no-plot")) { plot = 0; continue; }
         int bad = 0;
         if (sr_opt(&a, "--out", &v)) { if (!v || !*v) { snprintf(a.err, sizeof a.err, "--out: missing folder name"); bad = 1; } else out = v; }
-        else if (sr_opt(&a, "--d", &v)) { free(d); d = NULL; bad = !v || swt_parse_list("--d", v, 1e-300, 1.0, &d, &nd, a.err, sizeof a.err); }
+        else if (sr_opt(&a, "--d", &v)) { free(d); d = NULL; bad = !v || swt_parse_list("--d", v, SWR_D_MIN, SWR_D_MAX, &d, &nd, a.err, sizeof a.err); }
         else if (sr_opt(&a, "--accuracy", &v)) { free(acc); acc = NULL; bad = !v || swt_parse_list("--accuracy", v, 1.0, 1e6, &acc, &nacc, a.err, sizeof a.err); }
         else if (sr_opt(&a, "--ref-factor", &v)) bad = !v || swt_parse_double("--ref-factor", v, 2.0, 1e3, &ref_factor, a.err, sizeof a.err);
         else if (sr_opt(&a, "--tol", &v)) bad = !v || swt_parse_double("--tol", v, 1e-12, 0.1, &tol, a.err, sizeof a.err);

@@ -51,10 +51,10 @@ static int mapopt_parse(sr_args *a, sr_mapopt *m)
     INT_OPT("--vlog", 0, 1, m->g.vlog)
     INT_OPT("--degree", 1, SWT_FIT_MAXDEG, m->degree)
     INT_OPT("--refine", 0, 1, m->refine)
-    DBL_OPT("--dmin", 1e-300, 1.0, m->g.dmin, (void)0)
-    DBL_OPT("--dmax", 1e-300, 1.0, m->g.dmax, (void)0)
-    DBL_OPT("--vmin", 1e-300, 1e4, m->g.vmin, m->set_vmin = 1)
-    DBL_OPT("--vmax", 1e-300, 1e4, m->g.vmax, m->set_vmax = 1)
+    DBL_OPT("--dmin", SWR_D_MIN, SWR_D_MAX, m->g.dmin, (void)0)
+    DBL_OPT("--dmax", SWR_D_MIN, SWR_D_MAX, m->g.dmax, (void)0)
+    DBL_OPT("--vmin", SWR_V_MIN, SWR_V_MAX, m->g.vmin, m->set_vmin = 1)
+    DBL_OPT("--vmax", SWR_V_MIN, SWR_V_MAX, m->g.vmax, m->set_vmax = 1)
     DBL_OPT("--tol", 1e-12, 0.5, m->o.rtol, (void)0)
     DBL_OPT("--max-slide", 1e-300, 1e3, m->o.max_slide, (void)0)
 #undef INT_OPT
@@ -367,7 +367,7 @@ int sr_cmd_map(int argc, char **argv)
         if (!hit) hit = ang = sr_opt(&a, "--angle", &v);
         if (hit) {
             if (axis) { rc = sr_usage_error(cmd, "--vt and --angle: give one of them, once"); goto out; }
-            if (!v || swt_parse_list(ang ? "--angle" : "--vt", v, 0.0, ang ? 89.9 : 1e4, &axis,
+            if (!v || swt_parse_list(ang ? "--angle" : "--vt", v, 0.0, ang ? 89.9 : SWR_V_MAX, &axis,
                                      &naxis, a.err, sizeof a.err)) {
                 rc = sr_usage_error(cmd, a.err); goto out;
             }

@@ -44,17 +44,17 @@ int sr_cmd_vcrit(int argc, char **argv)
         double lo = 0, hi = 0;
         if (sr_opt(&a, "--d", &v)) {
             free(d); d = NULL;
-            if (!v || swt_parse_list("--d", v, 1e-300, 1.0, &d, &nd, a.err, sizeof a.err)) {
+            if (!v || swt_parse_list("--d", v, SWR_D_MIN, SWR_D_MAX, &d, &nd, a.err, sizeof a.err)) {
                 rc = sr_usage_error(cmd, a.err); goto out;
             }
             continue;
         }
-        if (sr_opt(&a, "--vt", &v)) { x = &o.vt; name = "--vt"; lo = 0; hi = 1e4; have_vt = 1; }
+        if (sr_opt(&a, "--vt", &v)) { x = &o.vt; name = "--vt"; lo = 0; hi = SWR_V_MAX; have_vt = 1; }
         else if (sr_opt(&a, "--angle", &v)) { x = &angle; name = "--angle"; lo = 0; hi = 89.9; have_angle = 1; }
         else if (sr_opt(&a, "--omega", &v)) { x = &o.omega; name = "--omega"; lo = -1e12; hi = 1e12; }
         else if (sr_opt(&a, "--tol", &v)) { x = &o.rtol; name = "--tol"; lo = 1e-12; hi = 0.5; }
-        else if (sr_opt(&a, "--vmin", &v)) { x = &o.vmin; name = "--vmin"; lo = 1e-300; hi = 1e4; }
-        else if (sr_opt(&a, "--vmax", &v)) { x = &o.vmax; name = "--vmax"; lo = 1e-300; hi = 1e4; }
+        else if (sr_opt(&a, "--vmin", &v)) { x = &o.vmin; name = "--vmin"; lo = SWR_V_MIN; hi = SWR_V_MAX; }
+        else if (sr_opt(&a, "--vmax", &v)) { x = &o.vmax; name = "--vmax"; lo = SWR_V_MIN; hi = SWR_V_MAX; }
         else if (sr_opt(&a, "--scan-ratio", &v)) { x = &o.scan_ratio; name = "--scan-ratio"; lo = 1.01; hi = 100; }
         else if (sr_opt(&a, "--max-slide", &v)) { x = &o.max_slide; name = "--max-slide"; lo = 1e-300; hi = 1e3; }
         else {

@@ -1,12 +1,13 @@
 /* swr_collide.c - one ice sphere hitting a flat wall: the collision integrator
  * (see swr_collide.h; the physics and numerics are in doc/kernel.md).
  *
- * Units: the integration runs in units where the particle mass, the normal
- * impact speed and the Hertz contact time t_c are 1 (length unit vn t_c), so
- * the step is 1/accuracy whatever the size or speed. t_c is the Hertz contact
- * time at max(vn, v_adh), v_adh = sqrt(2 U_c/m) the elastic sticking velocity,
- * so that slow impacts, whose dynamics are set by the adhesion, get steps on
- * the adhesive time scale.
+ * Units: the integration runs in units where the particle mass, the
+ * reference speed v_ref = max(vn, v_adh) and the Hertz contact time t_c at
+ * v_ref are 1 (length unit v_ref t_c), v_adh = sqrt(2 U_c/m) the elastic
+ * sticking velocity: the step is 1/accuracy whatever the size or speed, slow
+ * impacts, whose dynamics are set by the adhesion, get steps on the adhesive
+ * time scale, and the scaled lengths stay finite for any accepted vn (the
+ * impact speed is u0 = vn / v_ref <= 1).
  *
  * Scheme: velocity Verlet (kick-drift-kick), symplectic for the conservative
  * contact forces; the dashpot, linear in the velocity, is taken implicitly in
@@ -103,10 +104,11 @@ static void append_msg(swr_result *r, const char *text)
     snprintf(r->msg + len, sizeof r->msg - len, "%s%s", len ? "; " : "", text);
 }
 
-static swr_status bad_input(swr_result *r, const char *what, double v)
+static swr_status bad_input(swr_result *r, const char *what, double v, const char *range)
 {
     r->status = SWR_EINVAL;
-    snprintf(r->msg, sizeof r->msg, "%s = %g is invalid", what, v);
+    snprintf(r->msg, sizeof r->msg, "%s = %g is invalid%s%s", what, v, range ? ": accepted " : "",
+             range ? range : "");
     return SWR_EINVAL;
 }
 
@@ -139,7 +141,7 @@ static double travel_time(const swr_normal *n, double E, double x_lo, double x_h
     return sum;
 }
 
-/* Thornton-Ning normal impact in closed form (scaled units, E0 = 1/2): the
+/* Thornton-Ning normal impact in closed form (scaled units, E0 = u0^2/2): the
  * loading ends where the work done equals the impact energy, the unloading
  * is conservative on the flattened curve. Time: elastic JKR travel, the
  * harmonic yield branch (z = delta - delta_y + F_y/k oscillates about 0 at
@@ -174,19 +176,19 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
     memset(r, 0, sizeof *r);
     r->e_t = NAN;
     if (!m || !in)
-        return bad_input(r, "model or impact", NAN);
+        return bad_input(r, "model or impact", NAN, NULL);
     if (!(in->d >= SWR_D_MIN && in->d <= SWR_D_MAX))
-        return bad_input(r, "d", in->d);
-    if (!(in->vn > 0.0 && in->vn <= SWR_V_MAX))
-        return bad_input(r, "vn", in->vn);
+        return bad_input(r, "d", in->d, "1e-07 .. 0.1 m");
+    if (!(in->vn >= SWR_V_MIN && in->vn <= SWR_V_MAX))
+        return bad_input(r, "vn", in->vn, "1e-60 .. 1000 m/s");
     if (!(in->vt >= 0.0 && in->vt <= SWR_V_MAX))
-        return bad_input(r, "vt", in->vt);
+        return bad_input(r, "vt", in->vt, "0 .. 1000 m/s");
     if (!(fabs(in->omega) <= SWR_V_MAX / (0.5 * in->d)))
-        return bad_input(r, "omega", in->omega);
+        return bad_input(r, "omega", in->omega, "|omega| <= 1000 m/s / (d/2)");
     if (!(fabs(in->x) <= 1.0))
-        return bad_input(r, "x", in->x);
+        return bad_input(r, "x", in->x, "|x| <= 1 m");
     if (!(fabs(in->y) <= 1.0))
-        return bad_input(r, "y", in->y);
+        return bad_input(r, "y", in->y, "|y| <= 1 m");
     r->contacts = 1;
     if (m->wall.type == SWR_WALL_LATTICE)
         return swr_collide_rough(m, in, r, trace);
@@ -223,8 +225,11 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
     if (tc < swp_rayleigh_time(R, p->rho, swp_shear_modulus(p->E, p->nu), p->nu))
         append_msg(r, "contact shorter than the Rayleigh time: quasi-static contact law doubtful");
 
-    /* --- scaled units: mass m, speed vn, time tc --- */
-    const double T = tc, V = in->vn, L = V * T;
+    /* --- scaled units: mass m, speed v_ref = max(vn, v_adh), time tc ---
+     * (the adhesive speed keeps the length unit V tc finite for any vn: with
+     * vn itself a JKR contact's radii over vn tc overflow below vn ~ 1e-85) */
+    const double T = tc, V = v_ref, L = V * T;
+    const double u0 = in->vn / V;                    /* impact speed, <= 1 */
     const double sE = L * T * T / mass;              /* modulus: F T^2/(m L) per L^2 */
     swr_normal nrm;
     swr_normal_init(&nrm, R / L, m->Estar * sE, gam * T * T / mass);
@@ -238,7 +243,7 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
      * the damping's loading-time factor */
     const double g = swr_damping_time_factor(alpha);
     double h = g / p->accuracy, h2 = 0.5 * h;
-    const double E0 = 0.5;                           /* kinetic energy at first contact */
+    const double E0 = 0.5 * u0 * u0;                 /* kinetic energy at first contact */
     double dsep = nrm.delta_c;                       /* 0 for Hertz */
     double usep = nrm.Uc;                            /* energy needed to separate */
     /* energy scale of the balance check: the largest of the impact energy,
@@ -287,7 +292,7 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
             r->energy_err = 0.0;
             r->contact_kept = !(reb > 0.0);
             r->stick = r->contact_kept;
-            r->e_n = reb > 0.0 ? sqrt(2.0 * reb) : 0.0;
+            r->e_n = reb > 0.0 ? sqrt(2.0 * reb) / u0 : 0.0;
             r->t_contact = (reb > 0.0 ? t_sep : t_turn) * T;
             return SWR_OK;
         }
@@ -298,7 +303,7 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
     r->max_steps = (long)ceil(t_bound / h_min) + 16;
 
     /* --- state at first contact (jump-in for JKR) --- */
-    double t = 0.0, delta = 0.0, u = 1.0;
+    double t = 0.0, delta = 0.0, u = u0;
     double x = nrm.xj;
     double fne = swr_normal_force(&nrm, x), fd = 0.0, fn = fne;
     double vt = in->vt / V, w = in->omega * T;
@@ -497,7 +502,7 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
     r->steps = n;
     r->contact_kept = outcome == STICK;
     /* rebound speed from the conserved energy past the decision */
-    r->e_n = outcome == BOUNCE ? sqrt(2.0 * fmax(e_dec - usep, 0.0)) : 0.0;
+    r->e_n = outcome == BOUNCE ? sqrt(2.0 * fmax(e_dec - usep, 0.0)) / u0 : 0.0;
     r->t_contact = t_end * T;
     r->delta_max = dmax * L;
     r->energy_err = err;

@@ -10,6 +10,8 @@
 #include <unistd.h>
 #include <cmocka.h>
 
+#include "swp_contact.h"
+#include "swp_time.h"
 #include "swr_collide.h"
 #include "swr_params.h"
 
@@ -203,6 +205,56 @@ static void model_alloc(void **s)
     swr_model_free(m);
 }
 
+/* Tiny impact speeds (issue 13, item 3): the scaled units stay finite for
+ * every accepted v_n. With adhesion an impact slower than the elastic sticking
+ * speed sticks (it used to bounce below 1e-85 m/s); without adhesion it
+ * rebounds with the COR and the Hertz contact time; below SWR_V_MIN the kernel
+ * refuses with the accepted range. */
+static void tiny_speeds(void **s)
+{
+    (void)s;
+    swr_params p;
+    char err[256];
+    const double ds[] = { SWR_D_MIN, 50e-6, SWR_D_MAX };
+    const double vs[] = { SWR_V_MIN, 1e-90, 1e-30, 1e-9 };
+    for (int law = 0; law < 3; law++) {
+        swr_params_default(&p);
+        if (law == 1) assert_int_equal(swr_params_set_kv(&p, "adhesion=none", err, sizeof err), 0);
+        if (law == 2) {
+            assert_int_equal(swr_params_set_kv(&p, "adhesion=none", err, sizeof err), 0);
+            assert_int_equal(swr_params_set_kv(&p, "cor=0.5", err, sizeof err), 0);
+        }
+        swr_model *m = swr_model_alloc(&p, err, sizeof err);
+        assert_non_null(m);
+        for (size_t i = 0; i < 3; i++)
+            for (size_t k = 0; k < 4; k++) {
+                if (vs[k] < SWR_V_MIN) continue;
+                swr_impact in = { ds[i], vs[k], 0.0, 0.0, 0.0, 0.0 };
+                swr_result r;
+                assert_int_equal(swr_collide(m, &in, &r, NULL), SWR_OK);
+                assert_true(isfinite(r.e_n) && isfinite(r.t_contact) && isfinite(r.delta_max));
+                assert_true(isfinite(r.energy_err) && r.energy_err < 1e-3);
+                if (law == 0) {
+                    assert_true(r.stick);
+                } else {
+                    const double mass = p.rho * M_PI * ds[i] * ds[i] * ds[i] / 6.0;
+                    const double Es = swp_effective_modulus(p.E, p.nu, p.E_wall, p.nu_wall);
+                    const double tc = swp_hertz_contact_time(mass, 0.5 * ds[i], Es, vs[k]);
+                    assert_false(r.contact_kept);
+                    /* thornton: below the yield velocity the rebound is elastic */
+                    assert_true(fabs(r.e_n - (law == 1 ? 1.0 : 0.5)) < 5e-3);
+                    if (law == 1) assert_true(fabs(r.t_contact / tc - 1.0) < 1e-2);
+                }
+            }
+        swr_impact below = { 50e-6, 0.5 * SWR_V_MIN, 0.0, 0.0, 0.0, 0.0 };
+        swr_result r;
+        assert_int_equal(swr_collide(m, &below, &r, NULL), SWR_EINVAL);
+        assert_non_null(strstr(r.msg, "vn"));
+        assert_non_null(strstr(r.msg, "accepted"));
+        swr_model_free(m);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -212,6 +264,7 @@ int main(void)
         cmocka_unit_test(config_file),
         cmocka_unit_test(print_round_trip),
         cmocka_unit_test(model_alloc),
+        cmocka_unit_test(tiny_speeds),
     };
     return cmocka_run_group_tests_name("kernel_params", tests, NULL, NULL);
 }
