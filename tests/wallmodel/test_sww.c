@@ -173,6 +173,11 @@ static void table_and_linear_from_code(void **s)
     assert_int_equal(sww_regime_number(m, "vnMax", 10.0), SWW_OK);
     assert_int_equal(sww_regime_number(m, "slopeLow", -1.0), SWW_OK);
     assert_int_equal(sww_regime_number(m, "slopeHigh", 0.0), SWW_OK);
+    /* an unknown key from code is refused too, and names itself */
+    assert_int_equal(sww_regime_number(m, "bogus", 1.0), SWW_EINVAL);
+    assert_non_null(strstr(sww_errmsg(m), "'bogus' is not a regime key"));
+    assert_int_equal(sww_regime_list(m, "bogus", vn, 3), SWW_EINVAL);
+    assert_int_equal(sww_regime_word(m, "bogus", "x"), SWW_EINVAL);
     assert_int_equal(sww_regime_commit(m, "code"), SWW_OK);
     /* linear in ln-ln: geometric means at the log midpoints */
     ASSERT_REL(sww_dcrit(m, sqrt(0.1 * 1.0)), sqrt(1e-4 * 1e-5), 1e-12);
@@ -1007,6 +1012,13 @@ static void loader_errors(void **s)
         { "vnMax", "vnMax 6.0; reboundNormal 1.2;", SWW_EINVAL, "key 'reboundNormal'", "1.2" },
         { "vnMax", "vnMax 6.0; gamma 0;", SWW_EINVAL, "key 'gamma'", "0 must be > 0" },
         { "vnMax", "vnMax 6.0; version 2;", SWW_EINVAL, "key 'version'", "2" },
+        /* unknown keys are errors naming file, line and key (issue 13, item 4): a misspelt
+         * yieldVelocity used to load and leave every bounce elastic */
+        { "vnMax", "vnMax 6.0;\n yieldVelocty 1.4e-4;", SWW_EINVAL, "key 'yieldVelocty' is not a regime key", ":" },
+        { "vnMax", "vnMax 6.0; futureList (1 2);", SWW_EINVAL, "key 'futureList' is not a regime key", NULL },
+        { "vnMax", "vnMax 6.0; colour blue;", SWW_EINVAL, "key 'colour' is not a regime key", NULL },
+        { "vnMax", "vnMax 6.0; extra { a 1; }", SWW_EINVAL, "key 'extra': a sub-dictionary is not a regime key", NULL },
+        { "vnMax", "vnMax 6.0; dMin 1e-4; dMax 1e-5;", SWW_EINVAL, "keys 'dMin', 'dMax'", "must be below" },
         { NULL, "other { a 1; }\n", SWW_EMISSING, "missing sub-dictionary 'regime", NULL },
         { NULL, "regime { vnMin 1; ", SWW_EPARSE, "'regime'", "not closed" },
         { NULL, "regime { vnMin 1; } }", SWW_EPARSE, "found '}'", NULL },

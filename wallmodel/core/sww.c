@@ -15,6 +15,14 @@ static const char *const num_keys[K_NNUM] = {
     "rhoParticle", "mu", "obliqueSlide", "probabilityPoints"
 };
 
+/* The message for a key the regime dictionary does not know (a misspelt
+ * yieldVelocity would otherwise leave the rebound elastic without a word). */
+static int unknown_key(sww_model *m, const char *key)
+{
+    return sww_fail(m, SWW_EINVAL, "key '%s' is not a regime key (doc/regime-coeffs.md lists them)",
+                    key);
+}
+
 /* list keys */
 static int is_list_key(const char *key)
 {
@@ -115,7 +123,7 @@ int sww_regime_number(sww_model *m, const char *key, double v)
         return sww_fail(m, SWW_EINVAL, "key '%s': expects a list ( ... ), got the number %g", key, v);
     if (!strcmp(key, "representation") || !strcmp(key, "basis") || !strcmp(key, "label"))
         return sww_fail(m, SWW_EINVAL, "key '%s': expects a word, got the number %g", key, v);
-    return SWW_OK; /* unknown key: ignored */
+    return unknown_key(m, key);
 }
 
 static int set_table_part(sww_model *m, const char *key, const double *v, size_t n, int dcrit)
@@ -255,7 +263,7 @@ int sww_regime_list(sww_model *m, const char *key, const double *v, size_t n)
             return sww_fail(m, SWW_EINVAL, "key '%s': expects one number, got a list of %zu", key, n);
     if (!strcmp(key, "representation") || !strcmp(key, "basis") || !strcmp(key, "label"))
         return sww_fail(m, SWW_EINVAL, "key '%s': expects a word, got a list of %zu", key, n);
-    return SWW_OK;
+    return unknown_key(m, key);
 }
 
 int sww_regime_word(sww_model *m, const char *key, const char *w)
@@ -289,7 +297,7 @@ int sww_regime_word(sww_model *m, const char *key, const char *w)
             return sww_fail(m, SWW_EINVAL, "key '%s': value '%s' is not a number", key, w);
     if (is_list_key(key))
         return sww_fail(m, SWW_EINVAL, "key '%s': expects a list ( ... ), got '%s'", key, w);
-    return SWW_OK;
+    return unknown_key(m, key);
 }
 
 /* ---------------------------------------------------------------- the fit */
@@ -517,6 +525,9 @@ int sww_regime_commit(sww_model *m, const char *origin)
                             num_keys[positive[i]], m->num[positive[i]]);
     if (m->has[K_MU] && !(m->num[K_MU] >= 0.0))
         return sww_fail(m, SWW_EINVAL, "%s: key 'mu': value %g must be >= 0", o, m->num[K_MU]);
+    if (m->has[K_DMIN] && m->has[K_DMAX] && !(m->num[K_DMIN] < m->num[K_DMAX]))
+        return sww_fail(m, SWW_EINVAL, "%s: keys 'dMin', 'dMax': %g must be below %g", o,
+                        m->num[K_DMIN], m->num[K_DMAX]);
     /* the interface inside its range: positive, finite, decreasing or flat */
     const int N = 512;
     double prev = INFINITY, vprev = lo;

@@ -152,6 +152,9 @@ static int parse_entry(lexer *L, const char *key, int keyline, int use, int dept
 {
     int rc;
     if (L->kind == T_LBRACE) {
+        if (use)
+            return sww_fail(L->m, SWW_EINVAL, "%s:%d: key '%s': a sub-dictionary is not a regime key "
+                            "(doc/regime-coeffs.md lists them)", L->path, keyline, key);
         if (depth > 16)
             return lex_fail(L, SWW_EPARSE, keyline, "sub-dictionaries nested too deep");
         const int is_regime = depth == 0 && !strcmp(key, "regime");
