@@ -173,7 +173,7 @@ int sr_cmd_convergence(int argc, char **argv)
                 fprintf(f, "%s'%s' index %d using 6:($5 > 1e-9 ? $5 : 1e-9) with linespoints lw 2 pt 7 lc %d title 'd = %g um, wall time', "
                            "'' index %d using 6:($5 > 1e-9 ? $5 : 1e-9):(sprintf('%%g', $2)) with labels offset 0.8,0.6 font ',7' notitle, "
                            "'' index %d using 9:($5 > 1e-9 ? $5 : 1e-9) with linespoints lw 1 dt 2 pt 6 lc %d title 'd = %g um, CPU time'",
-                        i ? ", \\\n     " : "", tc, i, i + 1, d[i] * 1e6, i, i, i + 1, d[i] * 1e6);
+                        i ? ", \\\n     " : "", swt_gp_name(tc), i, i + 1, d[i] * 1e6, i, i, i + 1, d[i] * 1e6);
             fprintf(f, "\n");
             if (swt_gnuplot_finish(&g, err, sizeof err) != 0) rc = sr_fail(cmd, err);
         }

@@ -228,7 +228,7 @@ static int write_map_plot(swt_outset *os, const char *sfx, const sr_mapres *r, c
     fprintf(f, "plot '%s' skip 1 using 2:($3==1 ? $1*1e6 : 1/0) with points pt 5 ps 0.55 lc rgb '#3070d0' title 'stick', \\\n"
                "     '%s' skip 1 using 2:($3==0 ? $1*1e6 : 1/0) with points pt 5 ps 0.55 lc rgb '#e08070' title 'bounce', \\\n"
                "     '%s' skip 1 using 1:($2*1e6) with points pt 7 ps 0.8 lc rgb 'black' title 'interface points'",
-            tcsv, tcsv, titf);
+            swt_gp_name(tcsv), swt_gp_name(tcsv), swt_gp_name(titf));
     if (r->fit_ok) fprintf(f, ", \\\n     dfit(x) with lines lw 2 lc rgb '#000000' title 'fit d_{crit}(v_n), degree %d'", r->fit.degree);
     fprintf(f, "\n");
     (void)gpname;
@@ -290,7 +290,7 @@ static int write_rough_plot(swt_outset *os, const sr_mapres *r, const char *titl
                "     '%s' skip 2 using ($1==0.1 ? $2 : 1/0):($3*1e6) with linespoints pt 7 ps 0.5 lw 2 lc rgb '#804000' title 'p = 0.1', \\\n"
                "     '%s' skip 2 using ($1==0.5 ? $2 : 1/0):($3*1e6) with linespoints pt 7 ps 0.5 lw 2 lc rgb 'black' title 'p = 0.5', \\\n"
                "     '%s' skip 2 using ($1==0.9 ? $2 : 1/0):($3*1e6) with linespoints pt 7 ps 0.5 lw 2 lc rgb '#004080' title 'p = 0.9'\n",
-            tcsv, tcon, tcon, tcon);
+            swt_gp_name(tcsv), swt_gp_name(tcon), swt_gp_name(tcon), swt_gp_name(tcon));
     return swt_gnuplot_finish(&g, err, errlen);
 }
 
@@ -725,7 +725,7 @@ int sr_cmd_sensitivity(int argc, char **argv)
                 if (k == 0) snprintf(lab, sizeof lab, "baseline");
                 else snprintf(lab, sizeof lab, "%s = %g", keys[k], vals[k]);
                 fprintf(f, "%s'%s' index %d skip %d using 3:($4*1e6) with linespoints lw %d pt %d ps 0.6 title '%s'",
-                        k ? ", \\\n     " : "", ti, k, k == 0 ? 1 : 0, k == 0 ? 3 : 1, k, lab);
+                        k ? ", \\\n     " : "", swt_gp_name(ti), k, k == 0 ? 1 : 0, k == 0 ? 3 : 1, k, lab);
             }
             fprintf(f, "\n");
             if (swt_gnuplot_finish(&g, err, sizeof err) != 0) rc = sr_fail(cmd, err);

@@ -1,4 +1,5 @@
 /* swt_io.c - atomic output sets, strict option parsing, gnuplot runner. */
+#define _GNU_SOURCE   /* posix_spawn_file_actions_addchdir_np (glibc >= 2.29) */
 #include "swt_io.h"
 
 #include <errno.h>
@@ -292,11 +293,22 @@ int swt_parse_list(const char *opt, const char *text, double lo, double hi,
     return 0;
 }
 
-int swt_run_gnuplot(const char *script, char *err, size_t errlen)
+int swt_run_gnuplot(const char *dir, const char *script, char *err, size_t errlen)
 {
     char *argv[] = { (char *)"gnuplot", (char *)script, NULL };
     pid_t pid;
-    int rc = posix_spawnp(&pid, "gnuplot", NULL, NULL, argv, environ);
+    posix_spawn_file_actions_t fa;
+    if (posix_spawn_file_actions_init(&fa) != 0) {
+        snprintf(err, errlen, "cannot run gnuplot: out of memory");
+        return -1;
+    }
+    if (dir && posix_spawn_file_actions_addchdir_np(&fa, dir) != 0) {
+        posix_spawn_file_actions_destroy(&fa);
+        snprintf(err, errlen, "cannot run gnuplot: out of memory");
+        return -1;
+    }
+    int rc = posix_spawnp(&pid, "gnuplot", &fa, NULL, argv, environ);
+    posix_spawn_file_actions_destroy(&fa);
     if (rc != 0) {
         snprintf(err, errlen, "cannot run gnuplot: %s (install gnuplot-nox, or use --no-plot)",
                  strerror(rc));
@@ -317,10 +329,21 @@ int swt_run_gnuplot(const char *script, char *err, size_t errlen)
     return 0;
 }
 
+const char *swt_gp_name(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    return slash ? slash + 1 : path;
+}
+
 int swt_gnuplot_open(swt_gnuplot *g, const char *png, int width, int height,
                      char *err, size_t errlen)
 {
     snprintf(g->path, sizeof g->path, "%s.gp", png);
+    const char *name = swt_gp_name(png);
+    if (name == png)
+        snprintf(g->dir, sizeof g->dir, ".");
+    else
+        snprintf(g->dir, sizeof g->dir, "%.*s", (int)(name - png), png);
     g->f = fopen(g->path, "w");
     if (!g->f) {
         snprintf(err, errlen, "cannot write '%.300s'", g->path);
@@ -331,7 +354,7 @@ int swt_gnuplot_open(swt_gnuplot *g, const char *png, int width, int height,
                   "} else {\n"
                   "  set terminal png size %d,%d\n"
                   "}\n", width, height, width, height);
-    fprintf(g->f, "set output '%s'\n", png);
+    fprintf(g->f, "set output '%s'\n", name);
     return 0;
 }
 
@@ -344,7 +367,7 @@ int swt_gnuplot_finish(swt_gnuplot *g, char *err, size_t errlen)
     }
     g->f = NULL;
     if (rc == 0)
-        rc = swt_run_gnuplot(g->path, err, errlen);
+        rc = swt_run_gnuplot(g->dir, swt_gp_name(g->path), err, errlen);
     remove(g->path);
     return rc;
 }
