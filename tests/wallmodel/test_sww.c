@@ -409,10 +409,20 @@ static void oblique_gate(void **s)
     sww_describe(m, buf, sizeof buf);
     assert_non_null(strstr(buf, "regime table 4 x 5"));
     /* loading a regime without a table while the gate is on: an error naming
-     * the missing table, and the gate is off */
+     * the missing table; a failed load changes nothing (issue 13: it used to
+     * discard the loaded model): the gate, the table and the decisions stay */
     assert_int_equal(sww_regime_load(m, FIXTURE), SWW_EMISSING);
     assert_non_null(strstr(sww_errmsg(m), "needs the oblique table"));
-    assert_int_equal(sww_tangential_on(m), 0);
+    assert_int_equal(sww_tangential_on(m), 2);
+    assert_true(sww_ready(m));
+    assert_int_equal(decide(m, d, 0.5, 1.0, 0.0, 0.5).reason, SWW_BY_TANGENTIAL);
+    assert_int_equal(sww_regime_load(m, "/no/such/regime.coeffs"), SWW_EIO);
+    assert_true(sww_ready(m));
+    assert_int_equal(decide(m, d, 0.5, 0.0, 0.0, 0.5).fate, SWW_STICK);
+    /* after a failed load, a successful one leaves no stale message */
+    sww_set_tangential_off(m);
+    assert_int_equal(sww_regime_load(m, FIXTURE), SWW_OK);
+    assert_string_equal(sww_errmsg(m), "");
     sww_free(m);
 
     /* two v_t values: flat below the only non-zero node (documented) */
@@ -799,6 +809,18 @@ static void shear_gate(void **s)
     ASSERT_REL(sww_tau_crit(m, d), tc, 1e-12);
     assert_int_equal(decide(m, d, v, 0.0, tc * 0.999, 0.5).fate, SWW_STICK);
     assert_int_equal(decide(m, d, v, 0.0, tc * 1.001, 0.5).fate, SWW_RIPOFF);
+    /* no number for a diameter that is not one (issue 13), and a stick candidate
+     * whose tau_c is not a number is an input error, not a gate that never fires */
+    const double bad_d[] = { 0.0, -1.0, INFINITY, -INFINITY, NAN };
+    for (size_t k = 0; k < 5; k++) {
+        assert_true(isnan(sww_tau_crit(m, bad_d[k])));
+        assert_true(isnan(sww_vt_max(m, bad_d[k])));
+    }
+    in.d = 1e-300;
+    in.vn = v;
+    in.tau_w = 1.0;
+    if (isnan(sww_tau_crit(m, in.d)))
+        assert_int_equal(sww_decide(m, &in, &o), SWW_EINVAL);
     /* tangential gate is checked first: a bounce, not a rip-off */
     assert_int_equal(sww_set_tangential_gate(m, 0.1, 5e-5, 0.0), SWW_OK);
     assert_int_equal(decide(m, d, v, 0.2, tc * 2, 0.5).fate, SWW_BOUNCE);

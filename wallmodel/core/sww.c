@@ -737,6 +737,8 @@ double sww_rebound_normal(const sww_model *m, double vn)
 
 double sww_vt_max(const sww_model *m, double d)
 {
+    if (!(d > 0.0) || isinf(d))
+        return NAN;
     if (m->vt_on != 1)
         return INFINITY;
     return m->vt_exp == 0.0 ? m->vt_max : m->vt_max * pow(d / m->vt_dref, m->vt_exp);
@@ -744,6 +746,8 @@ double sww_vt_max(const sww_model *m, double d)
 
 double sww_tau_crit(const sww_model *m, double d)
 {
+    if (!(d > 0.0) || isinf(d))
+        return NAN;
     switch (m->shear_on) {
     case 1:
         return m->tau_c;
@@ -878,7 +882,12 @@ int sww_decide(const sww_model *m, const sww_impact *in, sww_outcome *out)
     if (stick && m->shear_on) {
         if (!(in->tau_w >= 0.0) || isinf(in->tau_w))
             return SWW_EINVAL;
-        if (in->tau_w >= sww_tau_crit(m, in->d)) {
+        /* a diameter so large that tau_c is not a number is refused, not a
+         * gate that silently never fires */
+        const double tc = sww_tau_crit(m, in->d);
+        if (isnan(tc))
+            return SWW_EINVAL;
+        if (in->tau_w >= tc) {
             out->fate = SWW_RIPOFF;
             out->reason = SWW_BY_SHEAR;
             out->e_n = sww_rebound_normal(m, in->vn);

@@ -77,7 +77,10 @@ void sww_free(sww_model *m);
 const char *sww_errmsg(const sww_model *m);
 
 /* ---- the regime map (doc/regime-coeffs.md) ---------------------------------
- * Load the file `snowregime map` writes: the sub-dictionary regime { ... }. */
+ * Load the file `snowregime map` writes: the sub-dictionary regime { ... }.
+ * All or nothing: a file that does not load and commit leaves the model as it
+ * was (a loaded model stays ready, its options unchanged); success clears the
+ * message. */
 int sww_regime_load(sww_model *m, const char *path);
 /* Or set the same keys from code (the keys of the regime dictionary), then commit.
  * number keys: version degree vnMin vnMax dMin dMax slopeLow slopeHigh rmsResidual
@@ -175,9 +178,11 @@ int sww_probability_table(const sww_model *m, size_t *nd, size_t *nvn);
 /* Normal rebound factor e_n(v_n) (Thornton with yieldVelocity, or the constant). */
 double sww_rebound_normal(const sww_model *m, double vn);
 /* Tangential limit vtMax(d) [m/s] of the constant gate (INFINITY when that
- * gate is off, or the regime gate is on: see sww_dcrit_oblique). */
+ * gate is off, or the regime gate is on: see sww_dcrit_oblique); NaN for a d
+ * that is not finite and > 0. */
 double sww_vt_max(const sww_model *m, double d);
-/* Critical wall shear stress tau_c(d) [Pa] (INFINITY when the gate is off). */
+/* Critical wall shear stress tau_c(d) [Pa] (INFINITY when the gate is off);
+ * NaN for a d that is not finite and > 0. */
 double sww_tau_crit(const sww_model *m, double d);
 /* 1 when sww_decide may be called. */
 int sww_ready(const sww_model *m);

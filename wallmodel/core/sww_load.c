@@ -253,7 +253,40 @@ static int parse_dict(lexer *L, int use, int depth, int *found_regime)
     return SWW_OK;
 }
 
+static int regime_load(sww_model *m, const char *path);
+
+/* A load is all or nothing: the file is read into a fresh model that carries
+ * m's options (gates, rebound); only when it loads and commits does it take
+ * m's place. A failed reload leaves m as it was (a loaded model stays ready)
+ * with the message in sww_errmsg(m). */
 int sww_regime_load(sww_model *m, const char *path)
+{
+    sww_model *t = sww_alloc();
+    if (!t)
+        return sww_fail(m, SWW_ENOMEM, "%s: out of memory", path ? path : "(null)");
+    t->vt_on = m->vt_on;
+    t->vt_max = m->vt_max;
+    t->vt_dref = m->vt_dref;
+    t->vt_exp = m->vt_exp;
+    t->shear_on = m->shear_on;
+    t->tau_c = m->tau_c;
+    t->roughness = m->roughness;
+    t->e_t = m->e_t;
+    const int rc = path ? regime_load(t, path) : sww_fail(t, SWW_EIO, "no file name");
+    if (rc != SWW_OK) {
+        snprintf(m->err, sizeof m->err, "%s", t->err);
+        sww_free(t);
+        return rc;
+    }
+    const sww_model old = *m;
+    *m = *t;
+    *t = old;      /* t now owns the old regime's tables */
+    sww_free(t);
+    m->err[0] = '\0';
+    return SWW_OK;
+}
+
+static int regime_load(sww_model *m, const char *path)
 {
     FILE *f = fopen(path, "rb");
     if (!f)
