@@ -198,7 +198,7 @@ static const char *help_map =
 "\n"
 "OPTIONS\n"
 "    --out DIR         output folder (created; required)\n"
-"    --nd N, --nv N    grid size (default 46 x 50)\n"
+"    --nd N, --nv N    grid size (default 46 x 50; at most 1e6 cells)\n"
 "    --dmin, --dmax    diameter range [m] (default 10e-6, 100e-6)\n"
 "    --vmin, --vmax    normal speed range [m/s] (default automatic)\n"
 "    --vlog 0|1        log-spaced speeds (default 1)\n"

@@ -62,9 +62,20 @@ static int mapopt_parse(sr_args *a, sr_mapopt *m)
     return 0;
 }
 
+/* Grid size guard: a million cells is already about 45 MB of map.csv and
+ * seconds to minutes of kernel time; beyond it a typo (--nd 10000 --nv 10000:
+ * 4 GB, many minutes) is refused before anything runs. */
+#define SR_MAX_CELLS 1000000L
+
 static int mapopt_check(sr_mapopt *m, char *err, size_t errlen)
 {
     if (!m->out) { snprintf(err, errlen, "--out: missing (output folder)"); return -1; }
+    if ((long)m->g.nd * m->g.nv > SR_MAX_CELLS) {
+        snprintf(err, errlen, "--nd x --nv: %d x %d = %ld cells, more than %ld (about %.0f MB of "
+                 "map.csv); use a coarser grid", m->g.nd, m->g.nv, (long)m->g.nd * m->g.nv,
+                 SR_MAX_CELLS, 45e-6 * (double)m->g.nd * m->g.nv);
+        return -1;
+    }
     if (!(m->g.dmax > m->g.dmin)) {
         snprintf(err, errlen, "--dmax: '%g' must be > --dmin (%g)", m->g.dmax, m->g.dmin);
         return -1;

@@ -120,10 +120,14 @@ int sr_cmd_vcrit(int argc, char **argv)
                 printf(", Thornton-Ning V_s %.6g m/s",
                        swp_sticking_velocity_tn(p.gamma, p.rho, Es, 0.5 * d[k]));
             printf("\n");
-            if (r->changes > 1 || (r->status != SWT_VCRIT_FOUND && r->changes > 0))
-                printf("# warning: d %.6g: non-monotone outcome: %d stick/bounce changes in the scan%s%.6g m/s\n",
-                       d[k], r->changes, r->v_restick > 0 ? ", sticks again at " : "",
-                       r->v_restick > 0 ? r->v_restick : 0.0);
+            if (r->changes > 1 || (r->status != SWT_VCRIT_FOUND && r->changes > 0)) {
+                if (r->v_restick > 0)
+                    printf("# warning: d %.6g: non-monotone outcome: %d stick/bounce changes in the "
+                           "scan, sticks again at %.6g m/s\n", d[k], r->changes, r->v_restick);
+                else
+                    printf("# warning: d %.6g: non-monotone outcome: %d stick/bounce changes in the "
+                           "scan\n", d[k], r->changes);
+            }
             if (r->step_bound)
                 printf("# %s: d %.6g: %ld collisions ended on the step bound%s\n",
                        swr_model_rough(m) ? "note" : "warning", d[k], r->step_bound,

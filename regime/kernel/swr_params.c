@@ -55,6 +55,8 @@ static const num_key wall_keys[] = {
 #define COR_MIN 1.0e-3
 #define COR_MAX 1.0
 
+/* The message names what it got; bytes that are not printable ASCII (binary
+ * data given as a config file) are shown as '?', never echoed raw. */
 static int fail(char *err, size_t errlen, const char *fmt, ...)
 {
     if (err && errlen) {
@@ -62,6 +64,9 @@ static int fail(char *err, size_t errlen, const char *fmt, ...)
         va_start(ap, fmt);
         vsnprintf(err, errlen, fmt, ap);
         va_end(ap);
+        for (char *c = err; *c; c++)
+            if ((unsigned char)*c < 0x20 || (unsigned char)*c >= 0x7f)
+                *c = '?';
     }
     return -1;
 }

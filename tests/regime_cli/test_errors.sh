@@ -26,6 +26,7 @@ check "malformed.cfg:2" "$SR" map --config "$WORK/malformed.cfg"
 check "colour" "$SR" map --config "$WORK/unknown.cfg"
 check "no/such.cfg" "$SR" map --config "$WORK/no/such.cfg"
 check "--nd: '1'" "$SR" map --nd 1
+check "10000 x 10000" "$SR" map --nd 10000 --nv 10000
 check "--nv: 'x'" "$SR" map --nv x
 check "--dmin: '-1e-5'" "$SR" map --dmin -1e-5
 check "--degree: '9'" "$SR" map --degree 9
@@ -66,4 +67,10 @@ ok "error checks done"
 # the slowest accepted impacts get the physical answer (issue 13, item 3): stick with adhesion
 "$SR" collide --d 5e-5 --vn 1e-60 | grep -q '^outcome: stick' || fail "collide --vn 1e-60: not a stick"
 "$SR" collide --d 5e-5 --vn 1e-60 --set adhesion=none | grep -q '^e_n: 1$' || fail "collide --vn 1e-60, Hertz: not an elastic rebound"
+# binary data as a config: a named error with no raw bytes on stderr (issue 13, item 6)
+head -c 400 /dev/urandom | tr -d '\n#' | head -c 300 >"$WORK/garbage.cfg"
+"$SR" vcrit --d 1e-5 --config "$WORK/garbage.cfg" >/dev/null 2>"$WORK/err"; rc=$?
+[ $rc -eq 2 ] || fail "garbage config: exit $rc, want 2"
+grep -q "garbage.cfg:1" "$WORK/err" || fail "garbage config: message does not name the file and line"
+LC_ALL=C grep -q '[^[:print:]]' "$WORK/err" && fail "garbage config: raw bytes on stderr"
 finish
