@@ -4,6 +4,7 @@
 
 #include <errno.h>
 #include <math.h>
+#include <signal.h>
 #include <spawn.h>
 #include <stdlib.h>
 #include <string.h>
@@ -28,6 +29,64 @@ struct swt_outset {
     int n, cap;
     int done;           /* committed or aborted */
 };
+
+/* Interrupted runs leave nothing (SIGINT, SIGTERM, SIGHUP): the set being
+ * written and the gnuplot script being run are known here, and the handler
+ * removes their temporaries and the folders the set created with
+ * async-signal-safe calls only (unlink, rmdir, character loops), then dies of
+ * the same signal. */
+static swt_outset *volatile g_active;
+static char g_script[4200];
+static volatile sig_atomic_t g_script_on;
+static char g_dirbuf[4200];
+
+static void on_signal(int sig)
+{
+    if (g_script_on)
+        unlink(g_script);
+    swt_outset *o = g_active;
+    if (o && !o->done) {
+        for (int i = 0; i < o->n; i++)
+            if (o->f[i].tmp)
+                unlink(o->f[i].tmp);
+        if (o->created && o->dir) {
+            size_t n = 0, nc = 0;
+            while (o->dir[n] && n + 1 < sizeof g_dirbuf) {
+                g_dirbuf[n] = o->dir[n];
+                n++;
+            }
+            g_dirbuf[n] = '\0';
+            while (o->created[nc])
+                nc++;
+            while (n >= nc && rmdir(g_dirbuf) == 0) {
+                while (n > 0 && g_dirbuf[n - 1] != '/')
+                    n--;
+                if (n == 0)
+                    break;
+                g_dirbuf[--n] = '\0';
+            }
+        }
+    }
+    signal(sig, SIG_DFL);
+    raise(sig);
+}
+
+static void watch_signals(swt_outset *o)
+{
+    static int installed;
+    g_active = o;
+    if (installed)
+        return;
+    installed = 1;
+    const int sigs[] = { SIGINT, SIGTERM, SIGHUP };
+    for (size_t k = 0; k < sizeof sigs / sizeof *sigs; k++) {
+        struct sigaction sa;
+        memset(&sa, 0, sizeof sa);
+        sa.sa_handler = on_signal;
+        sigemptyset(&sa.sa_mask);
+        sigaction(sigs[k], &sa, NULL);
+    }
+}
 
 static char *sdup(const char *s)
 {
@@ -82,6 +141,7 @@ swt_outset *swt_outset_alloc(const char *dir, char *err, size_t errlen)
             return NULL;
         }
     }
+    watch_signals(o);
     return o;
 }
 
@@ -198,6 +258,7 @@ void swt_outset_abort(swt_outset *o)
 void swt_outset_free(swt_outset *o)
 {
     if (!o) return;
+    if (g_active == o) g_active = NULL;
     swt_outset_abort(o);
     for (int i = 0; i < o->n; i++) {
         free(o->f[i].name); free(o->f[i].final); free(o->f[i].tmp);
@@ -339,6 +400,9 @@ int swt_gnuplot_open(swt_gnuplot *g, const char *png, int width, int height,
                      char *err, size_t errlen)
 {
     snprintf(g->path, sizeof g->path, "%s.gp", png);
+    g_script_on = 0;
+    snprintf(g_script, sizeof g_script, "%s", g->path);
+    g_script_on = 1;
     const char *name = swt_gp_name(png);
     if (name == png)
         snprintf(g->dir, sizeof g->dir, ".");
@@ -369,6 +433,7 @@ int swt_gnuplot_finish(swt_gnuplot *g, char *err, size_t errlen)
     if (rc == 0)
         rc = swt_run_gnuplot(g->dir, swt_gp_name(g->path), err, errlen);
     remove(g->path);
+    g_script_on = 0;
     return rc;
 }
 

@@ -73,4 +73,13 @@ head -c 400 /dev/urandom | tr -d '\n#' | head -c 300 >"$WORK/garbage.cfg"
 [ $rc -eq 2 ] || fail "garbage config: exit $rc, want 2"
 grep -q "garbage.cfg:1" "$WORK/err" || fail "garbage config: message does not name the file and line"
 LC_ALL=C grep -q '[^[:print:]]' "$WORK/err" && fail "garbage config: raw bytes on stderr"
+# an interrupted map leaves nothing (issue 13, item 6): killed while its new folder
+# holds temporaries, the folder (and the parent it created) is removed
+( cd "$WORK" && exec "$SR" map --set wall=lattice --points 4096 --nd 40 --nv 40 --vmin 0.1 --vmax 10 --out int/deep >/dev/null 2>&1 ) &
+pid=$!
+for _ in $(seq 300); do [ -d "$WORK/int/deep" ] && break; sleep 0.1; done
+[ -d "$WORK/int/deep" ] || fail "interrupt test: the map never created its folder"
+kill -TERM "$pid"; wait "$pid"; rc=$?
+[ $rc -eq 143 ] || fail "interrupted map: exit $rc, want 143 (SIGTERM)"
+[ ! -e "$WORK/int" ] || fail "interrupted map left $(find "$WORK/int" | head -3)"
 finish
