@@ -291,14 +291,37 @@ static int regime_load(sww_model *m, const char *path)
     FILE *f = fopen(path, "rb");
     if (!f)
         return sww_fail(m, SWW_EIO, "%s: cannot open: %s", path, strerror(errno));
-    char *buf = malloc(MAX_FILE);
-    if (!buf) {
-        fclose(f);
-        return sww_fail(m, SWW_ENOMEM, "%s: out of memory", path);
+    /* read in a buffer that grows with the file (a few kB for a map), up to
+     * MAX_FILE + 1 bytes to tell a too large file */
+    size_t cap = 1 << 14, n = 0;
+    char *buf = malloc(cap);
+    int err = 0, more = 0;
+    while (buf) {
+        n += fread(buf + n, 1, cap - n, f);
+        if (ferror(f)) {
+            err = 1;
+            break;
+        }
+        if (feof(f))
+            break;
+        if (n > (size_t)MAX_FILE) {
+            more = 1;
+            break;
+        }
+        char *nb = realloc(buf, 2 * cap);
+        if (!nb) {
+            free(buf);
+            buf = NULL;
+            break;
+        }
+        buf = nb;
+        cap *= 2;
     }
-    const size_t n = fread(buf, 1, MAX_FILE, f);
-    const int err = ferror(f), more = !feof(f);
     fclose(f);
+    if (n > (size_t)MAX_FILE)
+        more = 1;
+    if (!buf)
+        return sww_fail(m, SWW_ENOMEM, "%s: out of memory", path);
     if (err) {
         free(buf);
         return sww_fail(m, SWW_EIO, "%s: read error", path);
