@@ -7,15 +7,30 @@
 #include <jpeglib.h>
 #include <png.h>
 #include <setjmp.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 
+int swv_image_check_size(const char *name, const char *what, unsigned long width,
+                          unsigned long height, char *err, size_t errlen)
+{
+    if (width >= 1 && height >= 1 && width <= SWV_IMAGE_MAX_SIDE && height <= SWV_IMAGE_MAX_SIDE &&
+        width * height <= SWV_IMAGE_MAX_PIXELS)
+        return 0;
+    return swv_fail(err, errlen, 2,
+                    "%s: %s header claims %lu x %lu pixels (%.1f MP); the limit is 1 .. %d px per "
+                    "side and %d MP",
+                    name, what, width, height, (double)width * (double)height / 1e6,
+                    SWV_IMAGE_MAX_SIDE, SWV_IMAGE_MAX_PIXELS / 1000000);
+}
+
 swv_image *swv_image_alloc(int width, int height)
 {
-    if (width < 1 || height < 1 || width > 100000 || height > 100000)
+    if (width < 1 || height < 1 ||
+        swv_image_check_size("", "", (unsigned long)width, (unsigned long)height, NULL, 0))
         return NULL;
     swv_image *img = malloc(sizeof *img);
     if (!img)
@@ -38,27 +53,41 @@ void swv_image_free(swv_image *img)
     free(img);
 }
 
-static int read_png(const char *path, swv_image **out, char *err, size_t errlen)
+/* PNG through libpng's simplified API: the header (IHDR) is read by begin_read and
+ * its size checked before the pixel buffer exists. A truncated or corrupt stream
+ * fails in finish_read (libpng reports it in pi.message, never on stderr).
+ * Ancillary-chunk warnings (a bad sRGB profile, say) stay warnings. */
+static int read_png(FILE *f, const char *name, swv_image **out, char *err, size_t errlen)
 {
     png_image pi;
     memset(&pi, 0, sizeof pi);
     pi.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_file(&pi, path))
-        return swv_fail(err, errlen, 2, "%s: not a readable PNG (%s)", path, pi.message);
+    if (!png_image_begin_read_from_stdio(&pi, f))
+        return swv_fail(err, errlen, 2, "%s: not a readable PNG (%s)", name, pi.message);
+    int rc = swv_image_check_size(name, "PNG", pi.width, pi.height, err, errlen);
+    if (rc) {
+        png_image_free(&pi);
+        return rc;
+    }
     pi.format = PNG_FORMAT_RGB;
     swv_image *img = swv_image_alloc((int)pi.width, (int)pi.height);
     if (!img) {
         png_image_free(&pi);
-        return swv_fail(err, errlen, 2, "%s: bad PNG size %ux%u", path, pi.width, pi.height);
+        return swv_fail(err, errlen, 1, "%s: out of memory for %ux%u pixels", name, pi.width,
+                        pi.height);
     }
     if (!png_image_finish_read(&pi, NULL, img->rgb, 0, NULL)) {
         swv_image_free(img);
-        return swv_fail(err, errlen, 2, "%s: PNG decoding failed (%s)", path, pi.message);
+        return swv_fail(err, errlen, 2, "%s: PNG decoding failed (%s%s)", name, pi.message,
+                        feof(f) ? ": the file ends early, truncated?" : "");
     }
     *out = img;
     return 0;
 }
 
+/* libjpeg error manager: errors AND warnings end the decoding through jb (a
+ * warning is corrupt or missing data that libjpeg would otherwise paper over, e.g.
+ * a truncated file decoded as grey); libjpeg never prints anything itself. */
 struct jerr {
     struct jpeg_error_mgr pub;
     jmp_buf jb;
@@ -72,39 +101,82 @@ static void jerr_exit(j_common_ptr cinfo)
     longjmp(je->jb, 1);
 }
 
-static int read_jpeg(const char *path, swv_image **out, char *err, size_t errlen)
+static void jerr_emit(j_common_ptr cinfo, int msg_level)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return swv_fail(err, errlen, 2, "%s: cannot open (%s)", path, strerror(errno));
+    if (msg_level < 0)          /* a warning: corrupt data */
+        jerr_exit(cinfo);
+    /* trace messages (msg_level >= 0): ignored */
+}
+
+static void jerr_output(j_common_ptr cinfo)
+{
+    (void)cinfo;                /* never write to stderr */
+}
+
+static void jerr_init(struct jpeg_error_mgr *pub)
+{
+    jpeg_std_error(pub);
+    pub->error_exit = jerr_exit;
+    pub->emit_message = jerr_emit;
+    pub->output_message = jerr_output;
+}
+
+/* A progressive JPEG may hold any number of scans, and the decoder passes over
+ * the image's coefficients for each: a small file of many near-empty scans of a
+ * large image costs scans x pixels. Photos have about 10 scans; more than
+ * SWV_JPEG_MAX_SCANS is an error (libjpeg-turbo's own fuzzers use a limit too). */
+struct jprog {
+    struct jpeg_progress_mgr pub;
+    struct jerr *je;
+};
+
+static void jprog_monitor(j_common_ptr cinfo)
+{
+    struct jprog *p = (struct jprog *)cinfo->progress;
+    if (cinfo->is_decompressor &&
+        ((j_decompress_ptr)cinfo)->input_scan_number > SWV_JPEG_MAX_SCANS) {
+        snprintf(p->je->msg, sizeof p->je->msg, "more than %d scans", SWV_JPEG_MAX_SCANS);
+        longjmp(p->je->jb, 1);
+    }
+}
+
+static int read_jpeg(FILE *f, const char *name, swv_image **out, char *err, size_t errlen)
+{
     struct jpeg_decompress_struct ci;
     struct jerr je;
+    struct jprog prog;
     swv_image *volatile img = NULL;
-    ci.err = jpeg_std_error(&je.pub);
-    je.pub.error_exit = jerr_exit;
+    ci.err = &je.pub;
+    jerr_init(&je.pub);
     if (setjmp(je.jb)) {
         jpeg_destroy_decompress(&ci);
-        fclose(f);
         swv_image_free(img);
-        return swv_fail(err, errlen, 2, "%s: JPEG decoding failed (%s)", path, je.msg);
+        return swv_fail(err, errlen, 2, "%s: JPEG decoding failed (%s)", name, je.msg);
     }
     jpeg_create_decompress(&ci);
+    prog.pub.progress_monitor = jprog_monitor;
+    prog.je = &je;
+    ci.progress = &prog.pub;
     jpeg_stdio_src(&ci, f);
     jpeg_read_header(&ci, TRUE);
+    /* the size from the frame header, before libjpeg or we allocate anything for it */
+    int rc = swv_image_check_size(name, "JPEG", ci.image_width, ci.image_height, err, errlen);
+    if (rc) {
+        jpeg_destroy_decompress(&ci);
+        return rc;
+    }
     ci.out_color_space = JCS_RGB;
     jpeg_start_decompress(&ci);
     if (ci.output_components != 3) {
         jpeg_destroy_decompress(&ci);
-        fclose(f);
-        return swv_fail(err, errlen, 2, "%s: JPEG with %d components, expected RGB", path,
-                    ci.output_components);
+        return swv_fail(err, errlen, 2, "%s: JPEG with %d components, expected RGB", name,
+                        ci.output_components);
     }
     img = swv_image_alloc((int)ci.output_width, (int)ci.output_height);
     if (!img) {
         jpeg_destroy_decompress(&ci);
-        fclose(f);
-        return swv_fail(err, errlen, 2, "%s: bad JPEG size %ux%u", path, ci.output_width,
-                    ci.output_height);
+        return swv_fail(err, errlen, 1, "%s: out of memory for %ux%u pixels", name,
+                        ci.output_width, ci.output_height);
     }
     while (ci.output_scanline < ci.output_height) {
         JSAMPROW row = img->rgb + (size_t)ci.output_scanline * (size_t)img->width * 3u;
@@ -112,9 +184,26 @@ static int read_jpeg(const char *path, swv_image **out, char *err, size_t errlen
     }
     jpeg_finish_decompress(&ci);
     jpeg_destroy_decompress(&ci);
-    fclose(f);
     *out = img;
     return 0;
+}
+
+/* The one decoding path: a PNG or JPEG from an open stream, detected from its
+ * first bytes. */
+static int read_stream(FILE *f, const char *name, swv_image **out, char *err, size_t errlen)
+{
+    unsigned char magic[8] = {0};
+    size_t n = fread(magic, 1, sizeof magic, f);
+    if (ferror(f) || fseek(f, 0, SEEK_SET) != 0)
+        return swv_fail(err, errlen, 2, "%s: cannot read (%s)", name, strerror(errno));
+    static const unsigned char png_sig[8] = {0x89, 'P', 'N', 'G', 0x0d, 0x0a, 0x1a, 0x0a};
+    if (n == 8 && memcmp(magic, png_sig, 8) == 0)
+        return read_png(f, name, out, err, errlen);
+    if (n >= 3 && magic[0] == 0xff && magic[1] == 0xd8 && magic[2] == 0xff)
+        return read_jpeg(f, name, out, err, errlen);
+    if (n == 0)
+        return swv_fail(err, errlen, 2, "%s: empty file (neither PNG nor JPEG)", name);
+    return swv_fail(err, errlen, 2, "%s: neither PNG nor JPEG (unknown file signature)", name);
 }
 
 int swv_image_read(const char *path, swv_image **out, char *err, size_t errlen)
@@ -123,15 +212,26 @@ int swv_image_read(const char *path, swv_image **out, char *err, size_t errlen)
     FILE *f = fopen(path, "rb");
     if (!f)
         return swv_fail(err, errlen, 2, "%s: cannot open (%s)", path, strerror(errno));
-    unsigned char magic[8] = {0};
-    size_t n = fread(magic, 1, sizeof magic, f);
+    int rc = read_stream(f, path, out, err, errlen);
     fclose(f);
-    static const unsigned char png_sig[8] = {0x89, 'P', 'N', 'G', 0x0d, 0x0a, 0x1a, 0x0a};
-    if (n == 8 && memcmp(magic, png_sig, 8) == 0)
-        return read_png(path, out, err, errlen);
-    if (n >= 3 && magic[0] == 0xff && magic[1] == 0xd8 && magic[2] == 0xff)
-        return read_jpeg(path, out, err, errlen);
-    return swv_fail(err, errlen, 2, "%s: neither PNG nor JPEG (unknown file signature)", path);
+    return rc;
+}
+
+int swv_image_read_mem(const unsigned char *data, size_t n, const char *name, swv_image **out,
+                       char *err, size_t errlen)
+{
+    *out = NULL;
+    if (!name)
+        name = "(memory)";
+    if (!data || n == 0)
+        return swv_fail(err, errlen, 2, "%s: empty file (neither PNG nor JPEG)", name);
+    /* read-only use of data: fmemopen's buffer is not const in its prototype */
+    FILE *f = fmemopen((void *)(uintptr_t)data, n, "rb");
+    if (!f)
+        return swv_fail(err, errlen, 1, "%s: fmemopen failed (%s)", name, strerror(errno));
+    int rc = read_stream(f, name, out, err, errlen);
+    fclose(f);
+    return rc;
 }
 
 /* temp file next to path; returns an open FILE and fills tmp */
@@ -204,8 +304,8 @@ int swv_image_write_jpeg(const char *path, const swv_image *img, int quality, ch
         return 1;
     struct jpeg_compress_struct ci;
     struct jerr je;
-    ci.err = jpeg_std_error(&je.pub);
-    je.pub.error_exit = jerr_exit;
+    ci.err = &je.pub;
+    jerr_init(&je.pub);
     if (setjmp(je.jb)) {
         jpeg_destroy_compress(&ci);
         fclose(f);

@@ -14,12 +14,38 @@ typedef struct swv_image {
     unsigned char *rgb;         /* width*height*3 bytes, row-major, top row first */
 } swv_image;
 
-/* New black image (width, height >= 1). NULL on bad size or no memory. */
+/* Size limits, checked from the file's header before any pixel memory exists
+ * (a 12 KB file may claim 60000 x 60000 pixels = 10.8 GB): at most
+ * SWV_IMAGE_MAX_SIDE pixels per side and SWV_IMAGE_MAX_PIXELS in all (100 MP,
+ * 300 MB as 8-bit RGB). A progressive JPEG may have at most SWV_JPEG_MAX_SCANS
+ * scans (photos have about 10; thousands of empty scans are a time bomb). */
+#define SWV_IMAGE_MAX_SIDE 30000
+#define SWV_IMAGE_MAX_PIXELS 100000000
+#define SWV_JPEG_MAX_SCANS 1000
+
+/* 0 when width x height is within the limits, else 2 and "NAME: WHAT header
+ * claims W x H pixels (... MP); the limit is ..." in err. */
+int swv_image_check_size(const char *name, const char *what, unsigned long width,
+                         unsigned long height, char *err, size_t errlen);
+
+/* New black image (width, height >= 1, within the size limits). NULL on bad size
+ * or no memory. */
 swv_image *swv_image_alloc(int width, int height);
 void swv_image_free(swv_image *img);
 
-/* Read a PNG or JPEG (detected from the file's first bytes) as 8-bit RGB. */
+/* Read a PNG or JPEG (detected from the file's first bytes) as 8-bit RGB.
+ * Checks, in this order, with code 2 and a message naming the file: the
+ * signature; the header's size against the limits above (before decoding);
+ * then every libpng error and every libjpeg error AND warning (corrupt or
+ * truncated data: libjpeg would otherwise fill the missing part with grey and
+ * succeed). Nothing is printed by the libraries. Code 1: out of memory. */
 int swv_image_read(const char *path, swv_image **out, char *err, size_t errlen);
+
+/* The same reader on bytes in memory (data[0..n), not modified; name is used in
+ * messages, NULL gives "(memory)"): the entry point for fuzzing. *out is NULL
+ * unless 0 is returned. */
+int swv_image_read_mem(const unsigned char *data, size_t n, const char *name, swv_image **out,
+                       char *err, size_t errlen);
 
 int swv_image_write_png(const char *path, const swv_image *img, char *err, size_t errlen);
 /* quality 1..100 */
