@@ -5,6 +5,7 @@
 
 #include <errno.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -45,33 +46,79 @@ static int find_index(const double *u, int n, double x, double tol)
     return -1;
 }
 
-int swv_simmap_read(const char *path, swv_simmap **out, char *err, size_t errlen)
+/* A line for a message: at most 60 characters, anything but printable ASCII as '?'. */
+static void printable(char *dst, size_t len, const char *src)
 {
-    *out = NULL;
-    FILE *f = fopen(path, "r");
-    if (!f)
-        return swv_fail(err, errlen, 2, "%s: cannot open (%s)", path, strerror(errno));
+    size_t i = 0;
+    for (; src[i] && src[i] != '\n' && src[i] != '\r' && i + 4 < len && i < 60; i++)
+        dst[i] = (src[i] >= 0x20 && src[i] < 0x7f) ? src[i] : '?';
+    if (src[i] && src[i] != '\n' && src[i] != '\r' && i + 4 <= len) {
+        memcpy(dst + i, "...", 3);
+        i += 3;
+    }
+    dst[i] = '\0';
+}
+
+/* One line of f into buf (without its '\n'). Returns 0, or -1 at the end of the
+ * file; *bad = 1 for a line longer than len - 1 characters (the rest is skipped),
+ * 2 for a NUL byte in the line. */
+static int read_line(FILE *f, char *buf, size_t len, int *bad)
+{
+    size_t k = 0;
+    int c;
+    *bad = 0;
+    while ((c = getc_unlocked(f)) != EOF && c != '\n') {
+        if (c == '\0')
+            *bad = 2;
+        else if (k + 1 < len)
+            buf[k++] = (char)c;
+        else if (!*bad)
+            *bad = 1;
+    }
+    buf[k] = '\0';
+    return (c == EOF && k == 0 && !*bad) ? -1 : 0;
+}
+
+/* The one CSV parser, on an open stream (path: the name in messages). */
+static int simmap_read_stream(FILE *f, const char *path, swv_simmap **out, char *err, size_t errlen)
+{
     size_t cap = 256, n = 0;
     double *y = malloc(cap * sizeof *y), *z = malloc(cap * sizeof *z), *v = malloc(cap * sizeof *v);
     char line[1024];
-    int lineno = 0, rc = 0;
+    long lineno = 0;
+    int rc = 0;
     swv_simmap *m = NULL;
     double *uy = NULL, *uz = NULL, *sy = NULL, *sz = NULL;
     if (!y || !z || !v) { rc = swv_fail(err, errlen, 1, "%s: out of memory", path); goto done; }
-    while (fgets(line, sizeof line, f)) {
+    int bad;
+    while (read_line(f, line, sizeof line, &bad) == 0) {
         lineno++;
+        if (bad) {
+            rc = bad == 1 ? swv_fail(err, errlen, 2, "%s:%ld: line longer than %d characters", path,
+                                     lineno, (int)sizeof line - 1)
+                          : swv_fail(err, errlen, 2, "%s:%ld: NUL byte in the line (not a text file?)",
+                                     path, lineno);
+            goto done;
+        }
         if (lineno == 1 || line[0] == '#' || line[strspn(line, " \t\r\n")] == '\0')
             continue;   /* header, comments, blank lines */
         double a, b, c;
         char extra;
         if (sscanf(line, " %lf , %lf , %lf %c", &a, &b, &c, &extra) != 3) {
-            line[strcspn(line, "\r\n")] = '\0';
-            rc = swv_fail(err, errlen, 2, "%s:%d: expected 'y,z,value', got '%s'", path, lineno, line);
+            char shown[80];
+            printable(shown, sizeof shown, line);
+            rc = swv_fail(err, errlen, 2, "%s:%ld: expected 'y,z,value', got '%s'", path, lineno,
+                          shown);
             goto done;
         }
         if (!isfinite(a) || !isfinite(b) || !isfinite(c) || c < 0) {
-            rc = swv_fail(err, errlen, 2, "%s:%d: non-finite or negative value (y %g, z %g, value %g)",
+            rc = swv_fail(err, errlen, 2, "%s:%ld: non-finite or negative value (y %g, z %g, value %g)",
                       path, lineno, a, b, c);
+            goto done;
+        }
+        if (n == SWV_SIMMAP_MAX_FACES) {
+            rc = swv_fail(err, errlen, 2, "%s:%ld: more than %d faces", path, lineno,
+                          SWV_SIMMAP_MAX_FACES);
             goto done;
         }
         if (n == cap) {
@@ -83,6 +130,7 @@ int swv_simmap_read(const char *path, swv_simmap **out, char *err, size_t errlen
         }
         y[n] = a; z[n] = b; v[n] = c; n++;
     }
+    if (ferror(f)) { rc = swv_fail(err, errlen, 2, "%s: read error (%s)", path, strerror(errno)); goto done; }
     if (n < 4) { rc = swv_fail(err, errlen, 2, "%s: %zu face values, need a grid of at least 2x2", path, n); goto done; }
     sy = malloc(n * sizeof *sy); sz = malloc(n * sizeof *sz);
     uy = malloc(n * sizeof *uy); uz = malloc(n * sizeof *uz);
@@ -131,9 +179,36 @@ int swv_simmap_read(const char *path, swv_simmap **out, char *err, size_t errlen
     *out = m;
     m = NULL;
 done:
-    fclose(f);
     free(y); free(z); free(v); free(sy); free(sz); free(uy); free(uz);
     swv_simmap_free(m);
+    return rc;
+}
+
+int swv_simmap_read(const char *path, swv_simmap **out, char *err, size_t errlen)
+{
+    *out = NULL;
+    FILE *f = fopen(path, "r");
+    if (!f)
+        return swv_fail(err, errlen, 2, "%s: cannot open (%s)", path, strerror(errno));
+    int rc = simmap_read_stream(f, path, out, err, errlen);
+    fclose(f);
+    return rc;
+}
+
+int swv_simmap_read_mem(const char *data, size_t n, const char *name, swv_simmap **out,
+                        char *err, size_t errlen)
+{
+    *out = NULL;
+    if (!name)
+        name = "(memory)";
+    if (!data || n == 0)
+        return swv_fail(err, errlen, 2, "%s: empty, need a header and a grid of at least 2x2", name);
+    /* read-only use of data: fmemopen's buffer is not const in its prototype */
+    FILE *f = fmemopen((void *)(uintptr_t)data, n, "r");
+    if (!f)
+        return swv_fail(err, errlen, 1, "%s: fmemopen failed (%s)", name, strerror(errno));
+    int rc = simmap_read_stream(f, name, out, err, errlen);
+    fclose(f);
     return rc;
 }
 
@@ -154,6 +229,83 @@ void swv_config_defaults(swv_config *c)
     c->simThreshold = -1;
     c->simRelThreshold = 0.1;
     c->res = 200;
+}
+
+static const char *const corner_name[4] = {"top-left", "top-right", "bottom-right", "bottom-left"};
+
+static double cross3(const double a[2], const double b[2], const double c[2])
+{
+    return (b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0]);
+}
+
+int swv_corners_check(const double c[4][2], int width, int height, char *err, size_t errlen)
+{
+    for (int i = 0; i < 4; i++) {
+        double x = c[i][0], y = c[i][1];
+        if (!isfinite(x) || !isfinite(y))
+            return swv_fail(err, errlen, 2, "corner %d (%s, %g,%g) is not a finite point", i + 1,
+                            corner_name[i], x, y);
+        if (x < 0 || y < 0 || x > width || y > height)
+            return swv_fail(err, errlen, 2, "corner %d (%s, %g,%g) lies outside the %dx%d photo",
+                            i + 1, corner_name[i], x, y, width, height);
+    }
+    /* turn at every corner: > 0 clockwise on the image (y down), the order
+     * top-left, top-right, bottom-right, bottom-left seen from behind */
+    double scale = 0, turn[4];
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++)
+            scale = fmax(scale, hypot(c[i][0] - c[j][0], c[i][1] - c[j][1]));
+    int pos = 0, neg = 0;
+    for (int i = 0; i < 4; i++) {
+        int a = (i + 3) % 4, b = (i + 1) % 4;
+        turn[i] = cross3(c[a], c[i], c[b]);
+        if (!(fabs(turn[i]) > 1e-12 * scale * scale))
+            return swv_fail(err, errlen, 2,
+                            "corners %d, %d, %d (%s, %s, %s) lie on one line or coincide: no "
+                            "quadrilateral",
+                            a + 1, i + 1, b + 1, corner_name[a], corner_name[i], corner_name[b]);
+        if (turn[i] > 0) pos++; else neg++;
+    }
+    if (pos == 2) {
+        /* two left and two right turns: two opposite sides cross */
+        int k = (turn[0] > 0) == (turn[1] > 0) ? 1 : 0;   /* sides k..k+1 and k+2..k+3 */
+        return swv_fail(err, errlen, 2,
+                        "the side from corner %d to %d crosses the side from corner %d to %d (a "
+                        "bow-tie): give top-left, top-right, bottom-right, bottom-left in this order",
+                        k + 1, k + 2, k + 3, (k + 3) % 4 + 1);
+    }
+    if (pos == 1 || neg == 1) {
+        int r = 0;
+        for (int i = 0; i < 4; i++)
+            if ((turn[i] > 0) == (pos == 1))
+                r = i;
+        return swv_fail(err, errlen, 2,
+                        "the quadrilateral is concave at corner %d (%s, %g,%g): a face seen in "
+                        "perspective is convex",
+                        r + 1, corner_name[r], c[r][0], c[r][1]);
+    }
+    if (neg == 4)
+        return swv_fail(err, errlen, 2,
+                        "the corners run counter-clockwise on the image (a mirrored face): give "
+                        "top-left, top-right, bottom-right, bottom-left as seen from behind");
+    /* convex: the width is the smallest extent across a side's direction */
+    double wmin = INFINITY, area = 0;
+    for (int i = 0; i < 4; i++) {
+        const int b = (i + 1) % 4;
+        const double len = hypot(c[b][0] - c[i][0], c[b][1] - c[i][1]);
+        double h = 0;
+        for (int j = 0; j < 4; j++)
+            h = fmax(h, fabs(cross3(c[i], c[b], c[j])) / len);
+        wmin = fmin(wmin, h);
+        area += c[i][0] * c[b][1] - c[b][0] * c[i][1];
+    }
+    area = fabs(area) / 2;
+    if (wmin < SWV_CORNERS_MIN_WIDTH || area < SWV_CORNERS_MIN_AREA)
+        return swv_fail(err, errlen, 2,
+                        "the face covers %.3g px^2 and is %.3g px wide in the photo; at least %g "
+                        "px^2 and %g px are needed",
+                        area, wmin, SWV_CORNERS_MIN_AREA, SWV_CORNERS_MIN_WIDTH);
+    return 0;
 }
 
 static double ratio1(long num, long den) { return den > 0 ? (double)num / (double)den : 1.0; }
@@ -198,15 +350,12 @@ int swv_compare_run(const swv_config *c, const swv_image *photo, const swv_simma
         return swv_fail(err, errlen, 2, "simulation threshold %g is not finite", c->simThreshold);
     if (c->res < 2 || c->res > 4000)
         return swv_fail(err, errlen, 2, "comparison resolution %d outside 2..4000", c->res);
-    for (int i = 0; i < 4; i++) {
-        double x = c->corners[i][0], y = c->corners[i][1];
-        if (!isfinite(x) || !isfinite(y) || x < 0 || y < 0 || x > photo->width || y > photo->height)
-            return swv_fail(err, errlen, 2, "corner %d (%g, %g) lies outside the %dx%d photo", i + 1, x, y,
-                        photo->width, photo->height);
-    }
+    int rc = swv_corners_check(c->corners, photo->width, photo->height, err, errlen);
+    if (rc)
+        return rc;
     const double unit[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
     double H[9];
-    int rc = swv_homography_solve(unit, c->corners, H, err, errlen);
+    rc = swv_homography_solve(unit, c->corners, H, err, errlen);
     if (rc)
         return rc;
     double thr = c->simThreshold >= 0 ? c->simThreshold : c->simRelThreshold * sim->vmax;
@@ -250,6 +399,28 @@ int swv_compare_run(const swv_config *c, const swv_image *photo, const swv_simma
     swv_metrics_from_counts(m);
     if (side) *side = img;
     return 0;
+}
+
+size_t swv_md_cell(const char *text, char *out, size_t outlen)
+{
+    size_t k = 0;
+    for (const unsigned char *p = (const unsigned char *)text; *p; p++) {
+        char buf[2];
+        size_t m = 0;
+        if (*p < 0x20 || *p == 0x7f)
+            buf[m++] = ' ';                 /* newline, tab, ...: the row stays one line */
+        else {
+            if (*p == '|' || *p == '\\' || *p == '`' || *p == '<')
+                buf[m++] = '\\';
+            buf[m++] = (char)*p;
+        }
+        for (size_t i = 0; i < m; i++, k++)
+            if (k + 1 < outlen)
+                out[k] = buf[i];
+    }
+    if (outlen)
+        out[k < outlen ? k : outlen - 1] = '\0';
+    return k;
 }
 
 const char *swv_region_name(int r)

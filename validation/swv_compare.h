@@ -25,9 +25,22 @@ typedef struct swv_simmap {
     double vmax;
 } swv_simmap;
 
+/* At most this many faces in a map (a 1000 x 1000 grid; the wedge's is 20 x 20). */
+#define SWV_SIMMAP_MAX_FACES 1000000
+
 /* Read the CSV written by tutorials/wedge/post/wedge-post: a header line, then
- * "y,z,value" per face; the centres must form a full regular grid. */
+ * "y,z,value" per face (blank lines and '#' comments skipped); the centres must
+ * form a full regular grid of at least 2 x 2 faces, every value finite and >= 0.
+ * Bad input: code 2 and one line "PATH[:LINE]: what" in err (a bad line is shown
+ * in at most 60 characters, bytes other than printable ASCII as '?'); lines of
+ * more than 1023 characters, NUL bytes and more than SWV_SIMMAP_MAX_FACES faces
+ * are refused. *out is NULL unless 0 is returned. */
 int swv_simmap_read(const char *path, swv_simmap **out, char *err, size_t errlen);
+/* The same parser on text in memory (data[0..n), not modified, need not end in
+ * '\0'; name is used in messages, NULL gives "(memory)"): the entry point for
+ * fuzzing. */
+int swv_simmap_read_mem(const char *data, size_t n, const char *name, swv_simmap **out,
+                        char *err, size_t errlen);
 void swv_simmap_free(swv_simmap *m);
 /* Value at face coordinates (u, v) (nearest face). */
 double swv_simmap_at(const swv_simmap *m, double u, double v);
@@ -41,6 +54,20 @@ typedef struct swv_config {
 } swv_config;
 
 void swv_config_defaults(swv_config *c);
+
+/* The face in the photo must be big enough to compare: */
+#define SWV_CORNERS_MIN_WIDTH 10.0   /* px, the quadrilateral's smallest width */
+#define SWV_CORNERS_MIN_AREA 100.0   /* px^2 */
+
+/* Check the four corners (top-left, top-right, bottom-right, bottom-left, in
+ * pixels, y down) in a width x height photo: every corner finite and inside the
+ * photo; no three on one line; a convex quadrilateral (no bow-tie, no reflex
+ * corner) running clockwise on the image (counter-clockwise = a mirrored face);
+ * at least SWV_CORNERS_MIN_WIDTH wide in every direction and SWV_CORNERS_MIN_AREA
+ * in area. 0, or 2 with a message naming the corner(s) in err. swv_compare_run
+ * calls it first. */
+int swv_corners_check(const double corners[4][2], int width, int height, char *err,
+                      size_t errlen);
 
 typedef struct swv_metrics {
     long tp, fp, fn, tn;
@@ -75,5 +102,12 @@ typedef struct swv_region_stats {
 const char *swv_region_name(int r);
 int swv_regions(const swv_simmap *sim, double threshold, double band, double holdFraction,
                 swv_region_stats *s, char *err, size_t errlen);
+
+/* text as the content of a markdown table cell: '|', '\\', '`' and '<' are
+ * backslash-escaped (no column break, code span or HTML), control characters
+ * (newline, CR, tab, ...) become spaces (the row stays one line). Writes at most
+ * outlen bytes with the '\0' and returns the length of the whole result (as
+ * snprintf: the output was cut when the return is >= outlen). */
+size_t swv_md_cell(const char *text, char *out, size_t outlen);
 
 #endif

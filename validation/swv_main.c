@@ -5,9 +5,11 @@
 
 #include <errno.h>
 #include <math.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 static const char *usage =
 "NAME\n"
@@ -52,10 +54,16 @@ static const char *usage =
 "    face; y grows to the viewer's right, z upwards; the faces form a regular grid.\n"
 "\n"
 "OPTIONS\n"
-"    --photo FILE            photo of the rear face, PNG or JPEG\n"
+"    --photo FILE            photo of the rear face, PNG or JPEG, at most 30000 px\n"
+"                            a side and 100 MP (checked from the header before\n"
+"                            decoding); a corrupt or truncated file is an error,\n"
+"                            a libjpeg warning too\n"
 "    --corners LIST          8 numbers: x,y of top-left, top-right, bottom-right,\n"
-"                            bottom-left (pixels); each inside the image\n"
-"    --sim CSV               simulated rear-face map\n"
+"                            bottom-left (pixels); each inside the image; they must\n"
+"                            make a convex quadrilateral running clockwise on the\n"
+"                            image (no bow-tie, no reflex corner, not mirrored), at\n"
+"                            least 10 px wide in every direction and 100 px^2\n"
+"    --sim CSV               simulated rear-face map (at most 1000000 faces)\n"
 "    --photo-threshold L     luminance threshold in [0, 1] (default 0.5)\n"
 "    --sim-threshold T       deposit threshold [kg/m2], >= 0\n"
 "    --sim-rel-threshold F   threshold as a fraction of the map's maximum, in (0, 1]\n"
@@ -66,7 +74,9 @@ static const char *usage =
 "                            red simulation only, blue photo only, grey neither)\n"
 "    --band B                edge band width for regions, in (0, 0.3) (default 0.1)\n"
 "    --hold F                covered fraction for 'holds snow', in (0, 1] (default 0.3)\n"
-"    --label TEXT            first column of the regions rows (default: the CSV path)\n"
+"    --label TEXT            first column of the regions rows (default: the CSV path);\n"
+"                            '|', '\\', '`' and '<' are backslash-escaped, newlines\n"
+"                            and other control characters become spaces\n"
 "    --parcel-mass KG        mass of one parcel [kg], > 0 (a parcelBasisType mass\n"
 "                            spray: every parcel carries the same mass); adds\n"
 "                            parcel counts and Poisson errors per region\n"
@@ -74,7 +84,10 @@ static const char *usage =
 "\n"
 "EXIT STATUS\n"
 "    0 success, 2 usage or input error (one line on standard error naming the\n"
-"    input and value), 1 other failure (memory, writing the output).\n"
+"    option or input and the value), 1 other failure (memory, writing the\n"
+"    output). Interrupted by SIGINT, SIGTERM or SIGHUP, snowphoto leaves no file:\n"
+"    a signal during the writing of --out is held until the file is complete,\n"
+"    then the file is removed and the run ends by the signal.\n"
 "\n"
 "EXAMPLE\n"
 "    snowphoto compare --photo rear.jpg --corners 412,188,1630,204,1611,1402,398,1380 \\\n"
@@ -111,6 +124,45 @@ static int parse_corners(const char *s, double c[4][2])
     return 0;
 }
 
+/* Write the side-by-side PNG with SIGINT, SIGTERM and SIGHUP held back: the
+ * writer's temporary file is always completed and renamed or removed. When such
+ * a signal came meanwhile (and is not ignored), the new file is removed too and
+ * the signal, delivered as the mask is restored, ends the run: an interrupted
+ * run leaves nothing. */
+static int write_side(const char *path, const swv_image *side, char *err, size_t errlen)
+{
+    static const int sigs[3] = {SIGINT, SIGTERM, SIGHUP};
+    sigset_t term, old, pend;
+    sigemptyset(&term);
+    for (int i = 0; i < 3; i++)
+        sigaddset(&term, sigs[i]);
+    sigprocmask(SIG_BLOCK, &term, &old);
+    int rc = swv_image_write_png(path, side, err, errlen);
+    if (!rc && sigpending(&pend) == 0)
+        for (int i = 0; i < 3; i++) {
+            struct sigaction sa;
+            if (sigismember(&pend, sigs[i]) && sigaction(sigs[i], NULL, &sa) == 0 &&
+                sa.sa_handler != SIG_IGN) {
+                unlink(path);
+                break;
+            }
+        }
+    sigprocmask(SIG_SETMASK, &old, NULL);
+    return rc;
+}
+
+/* The results go to standard output: a failed write (a full disk, a closed pipe
+ * reader) is a failure, not a silent exit 0. */
+static int finish_stdout(int rc)
+{
+    if ((fflush(stdout) != 0 || ferror(stdout)) && rc == 0) {
+        fprintf(stderr, "snowphoto: writing the results to standard output failed (%s)\n",
+                strerror(errno));
+        return 1;
+    }
+    return rc;
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2) {
@@ -119,7 +171,7 @@ int main(int argc, char **argv)
     }
     if (!strcmp(argv[1], "-h") || !strcmp(argv[1], "--help")) {
         fputs(usage, stdout);
-        return 0;
+        return finish_stdout(0);
     }
     const char *cmd = argv[1];
     int is_compare = !strcmp(cmd, "compare"), is_regions = !strcmp(cmd, "regions");
@@ -130,13 +182,14 @@ int main(int argc, char **argv)
     swv_config cfg;
     swv_config_defaults(&cfg);
     const char *photo_path = NULL, *sim_path = NULL, *out_path = NULL, *label = NULL;
+    const char *corners_arg = NULL;
     int have_corners = 0;
     double band = 0.1, hold = 0.3, parcel_mass = 0;
     for (int i = 2; i < argc; i++) {
         const char *o = argv[i];
         if (!strcmp(o, "-h") || !strcmp(o, "--help")) {
             fputs(usage, stdout);
-            return 0;
+            return finish_stdout(0);
         }
         if (i + 1 >= argc) {
             fprintf(stderr, "snowphoto: option '%s' unknown or missing its value; see snowphoto --help\n", o);
@@ -151,6 +204,7 @@ int main(int argc, char **argv)
         else if (!strcmp(o, "--corners") && is_compare) {
             if (parse_corners(a, cfg.corners)) return 2;
             have_corners = 1;
+            corners_arg = a;
         } else if (!strcmp(o, "--photo-threshold") && is_compare) {
             if (parse_double(o, a, &d)) return 2;
             if (d < 0 || d > 1) {
@@ -217,7 +271,7 @@ int main(int argc, char **argv)
     swv_simmap *sim = NULL;
     int rc = swv_simmap_read(sim_path, &sim, err, sizeof err);
     if (rc) {
-        fprintf(stderr, "snowphoto: %s\n", err);
+        fprintf(stderr, "snowphoto: --sim %s\n", err);
         return rc;
     }
     if (is_regions) {
@@ -229,7 +283,18 @@ int main(int argc, char **argv)
             swv_simmap_free(sim);
             return rc;
         }
-        printf("| %s |", label ? label : sim_path);
+        /* the label (or path) as a table cell: a '|' or newline in it cannot break the table */
+        const char *text = label ? label : sim_path;
+        size_t need = swv_md_cell(text, NULL, 0) + 1;
+        char *cell = malloc(need);
+        if (!cell) {
+            fprintf(stderr, "snowphoto: out of memory\n");
+            swv_simmap_free(sim);
+            return 1;
+        }
+        swv_md_cell(text, cell, need);
+        printf("| %s |", cell);
+        free(cell);
         for (int r = 0; r < SWV_NREGIONS; r++) {
             printf(" %s (%.0f %%, %.3g kg/m2", st.holds[r] ? "**snow**" : "no", 100 * st.covered[r], st.mean[r]);
             if (parcel_mass > 0) {
@@ -243,12 +308,19 @@ int main(int argc, char **argv)
         }
         printf(" %.3g |\n", thr);
         swv_simmap_free(sim);
-        return 0;
+        return finish_stdout(0);
     }
     swv_image *photo = NULL;
     rc = swv_image_read(photo_path, &photo, err, sizeof err);
     if (rc) {
-        fprintf(stderr, "snowphoto: %s\n", err);
+        fprintf(stderr, "snowphoto: --photo %s\n", err);
+        swv_simmap_free(sim);
+        return rc;
+    }
+    rc = swv_corners_check(cfg.corners, photo->width, photo->height, err, sizeof err);
+    if (rc) {
+        fprintf(stderr, "snowphoto: --corners %s: %s\n", corners_arg, err);
+        swv_image_free(photo);
         swv_simmap_free(sim);
         return rc;
     }
@@ -259,7 +331,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "snowphoto: %s: %s\n", photo_path, err);
     } else {
         if (out_path) {
-            rc = swv_image_write_png(out_path, side, err, sizeof err);
+            rc = write_side(out_path, side, err, sizeof err);
             if (rc) fprintf(stderr, "snowphoto: %s\n", err);
         }
         if (!rc) {
@@ -277,5 +349,5 @@ int main(int argc, char **argv)
     swv_image_free(side);
     swv_image_free(photo);
     swv_simmap_free(sim);
-    return rc;
+    return finish_stdout(rc);
 }
