@@ -66,7 +66,6 @@ bad "missing --sim" "--sim" compare --photo "$tmp/photo.png" --corners $corners 
 bad "7 corners" "100,80,540,60,580,420,60" compare --photo "$tmp/photo.png" --corners 100,80,540,60,580,420,60 --sim "$tmp/sim.csv" --out "$tmp/bad.png"
 bad "NaN threshold" "nan" compare --photo "$tmp/photo.png" --corners $corners --sim "$tmp/sim.csv" --photo-threshold nan --out "$tmp/bad.png"
 bad "negative sim threshold" "-1" compare --photo "$tmp/photo.png" --corners $corners --sim "$tmp/sim.csv" --sim-threshold -1 --out "$tmp/bad.png"
-bad "corner outside" "corner 3" compare --photo "$tmp/photo.png" --corners 100,80,540,60,900,420,60,400 --sim "$tmp/sim.csv" --out "$tmp/bad.png"
 echo "y,z,d" > "$tmp/empty.csv"
 bad "empty map" "empty.csv" compare --photo "$tmp/photo.png" --corners $corners --sim "$tmp/empty.csv" --out "$tmp/bad.png"
 printf 'y,z,d\n0,0,1\n1,0,1\n0,1,oops\n1,1,1\n' > "$tmp/malformed.csv"
@@ -75,6 +74,72 @@ bad "zero parcel mass" "--parcel-mass 0" regions --sim "$tmp/left.csv" --parcel-
 echo "not an image" > "$tmp/text.png"
 bad "not an image" "neither PNG nor JPEG" compare --photo "$tmp/text.png" --corners $corners --sim "$tmp/sim.csv" --out "$tmp/bad.png"
 bad "missing photo" "nothere.jpg" compare --photo "$tmp/nothere.jpg" --corners $corners --sim "$tmp/sim.csv" --out "$tmp/bad.png"
+
+# issue 13: hostile images (exit 2, a message naming the file and what is wrong,
+# nothing written, under 1 s and 200 MB; measured with GNU time when installed)
+"$gen" --jpeg-claiming 60000 60000 "$tmp/huge.jpg" && "$gen" --png-claiming 20000 20000 "$tmp/huge.png" \
+    && "$gen" --jpeg-claiming 29000 3400 "$tmp/big.jpg" || { echo "generator failed"; exit 1; }
+head -c $(( $(stat -c %s "$tmp/photo.jpg") / 2 )) "$tmp/photo.jpg" > "$tmp/half.jpg"
+head -c $(( $(stat -c %s "$tmp/photo.png") / 2 )) "$tmp/photo.png" > "$tmp/half.png"
+ls -l "$tmp/huge.jpg" "$tmp/huge.png" "$tmp/big.jpg" "$tmp/half.jpg" "$tmp/half.png"
+hostile() {  # hostile NAME EXPECTED_TEXT PHOTO
+    bad "$1" "$2" compare --photo "$3" --corners $corners --sim "$tmp/sim.csv" --out "$tmp/bad.png"
+    check "$1: message names the option and file" "grep -q -- '--photo $3' '$tmp/err'"
+    if [ -x /usr/bin/time ]; then
+        /usr/bin/time -o "$tmp/time" -f "%e %M" "$exe" compare --photo "$3" --corners $corners \
+            --sim "$tmp/sim.csv" > /dev/null 2>&1
+        read -r secs kb < <(tail -n 1 "$tmp/time")   # after "Command exited with ..."
+        echo "     $1: $secs s, $kb KB"
+        check "$1: under 1 s" "near '$secs' 0 1"
+        check "$1: under 200 MB" "[ $kb -lt 204800 ]"
+    fi
+}
+hostile "JPEG claiming 60000 x 60000" "JPEG header claims 60000 x 60000 pixels" "$tmp/huge.jpg"
+hostile "PNG claiming 20000 x 20000" "PNG header claims 20000 x 20000 pixels" "$tmp/huge.png"
+hostile "JPEG claiming 29000 x 3400 (in the limits), 12 KB of data" "Corrupt JPEG data" "$tmp/big.jpg"
+hostile "truncated JPEG" "Premature end of JPEG file" "$tmp/half.jpg"
+hostile "truncated PNG" "PNG decoding failed.*truncated" "$tmp/half.png"
+
+# issue 13: corner sets that are no face (exit 2, the message names --corners)
+badc() {  # badc NAME EXPECTED_TEXT CORNERS
+    bad "$1" "$2" compare --photo "$tmp/photo.png" --corners "$3" --sim "$tmp/sim.csv" --out "$tmp/bad.png"
+    check "$1: message names --corners" "grep -q -- '^snowphoto: --corners $3: ' '$tmp/err'"
+}
+badc "corner outside" "corner 3 (bottom-right, 900,420) lies outside the 640x480 photo" 100,80,540,60,900,420,60,400
+badc "concave corners" "concave at corner 3" 100,80,540,60,300,150,60,400
+badc "bow-tie corners" "bow-tie" 100,80,540,60,60,400,580,420
+badc "sub-pixel corners" "covers 0.25 px^2" 100,80,100.5,80,100.5,80.5,100,80.5
+badc "mirrored corners" "counter-clockwise" 100,80,60,400,580,420,540,60
+badc "collinear corners" "lie on one line" 100,80,300,80,500,80,60,400
+
+# issue 13: a label cannot break the markdown table ('|' escaped, newline -> space)
+"$exe" regions --sim "$tmp/sim.csv" --label "$(printf 'a|b\nc`d')" > "$tmp/regions_l"
+cat "$tmp/regions_l"
+check "--label with '|' and newline: one row" "[ \$(wc -l < '$tmp/regions_l') = 1 ]"
+check "--label with '|' and newline: escaped" "grep -qF '| a\\|b c\\\`d |' '$tmp/regions_l'"
+check "--label with '|': 6 columns" "[ \$(sed 's/\\\\|//g' '$tmp/regions_l' | tr -cd '|' | wc -c) = 7 ]"
+
+# issue 13: an interrupted run leaves nothing (SIGTERM while the side-by-side PNG of
+# --res 4000, about 2 s, is being written: held, then the file removed)
+"$exe" compare --photo "$tmp/photo.png" --corners $corners --sim "$tmp/sim.csv" --res 4000 \
+    --out "$tmp/int.png" > /dev/null 2>&1 &
+pid=$!
+for _ in $(seq 1000); do
+    ls "$tmp"/int.png.tmp* > /dev/null 2>&1 && break
+    kill -0 $pid 2> /dev/null || break
+    sleep 0.01
+done
+kill -TERM $pid 2> /dev/null
+wait $pid; rc=$?
+check "SIGTERM while writing: ends by the signal" "[ $rc = 143 ]"
+check "SIGTERM while writing: no output, no temporary" "[ -z \"\$(ls '$tmp' | grep int.png)\" ]"
+
+# results that cannot be written (a full disk): exit 1 with a message, not 0
+if [ -w /dev/full ]; then
+    "$exe" regions --sim "$tmp/sim.csv" > /dev/full 2> "$tmp/err"; rc=$?
+    check "stdout on a full disk: exit 1" "[ $rc = 1 ] && grep -q 'standard output failed' '$tmp/err'"
+fi
+
 check "no temporary files left" "[ -z \"\$(ls '$tmp' | grep tmp)\" ]"
 
 [ "$fails" = 0 ] || { echo "$fails check(s) failed"; exit 1; }

@@ -7,9 +7,11 @@
 
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "swv_synth.h"
+#include <jpeglib.h>   /* after stdio.h (swv_synth.h): the many-scans JPEG */
 
 static char tmpdir[256];
 
@@ -247,6 +249,337 @@ static void test_regions(void **state)
     unlink(p);
 }
 
+static double now_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+/* the size limits, at their edges */
+static void test_image_size_check(void **state)
+{
+    (void)state;
+    char err[512] = "";
+    assert_int_equal(swv_image_check_size("a", "PNG", 10000, 10000, err, sizeof err), 0);
+    assert_int_equal(swv_image_check_size("a", "PNG", 30000, 3333, err, sizeof err), 0);
+    assert_int_equal(swv_image_check_size("a", "PNG", 1, 30000, err, sizeof err), 0);
+    assert_int_equal(swv_image_check_size("a", "PNG", 30001, 1, err, sizeof err), 2);
+    assert_int_equal(swv_image_check_size("a", "PNG", 1, 30001, err, sizeof err), 2);
+    assert_int_equal(swv_image_check_size("a", "PNG", 10001, 10000, err, sizeof err), 2);
+    assert_int_equal(swv_image_check_size("a", "PNG", 0, 5, err, sizeof err), 2);
+    assert_int_equal(swv_image_check_size("x.jpg", "JPEG", 4294967295UL, 4294967295UL, err,
+                                          sizeof err), 2);
+    assert_non_null(strstr(err, "x.jpg: JPEG header claims 4294967295 x 4294967295 pixels"));
+    assert_null(swv_image_alloc(30001, 1));
+    assert_null(swv_image_alloc(10001, 10000));
+}
+
+/* read a file both ways (path and bytes in memory); both must agree */
+static int read_both(const char *path, swv_image **img, char *err, size_t errlen)
+{
+    int rc = swv_image_read(path, img, err, errlen);
+    size_t n = 0;
+    unsigned char *b = synth_slurp(path, &n);
+    assert_non_null(b);
+    swv_image *m = NULL;
+    char err2[512] = "";
+    int rc2 = swv_image_read_mem(b, n, path, &m, err2, sizeof err2);
+    free(b);
+    assert_int_equal(rc, rc2);
+    if (rc) {
+        assert_null(*img);
+        assert_null(m);
+        assert_string_equal(err, err2);
+    } else {
+        assert_int_equal(m->width, (*img)->width);
+        assert_int_equal(m->height, (*img)->height);
+        assert_memory_equal(m->rgb, (*img)->rgb, (size_t)m->width * (size_t)m->height * 3u);
+    }
+    swv_image_free(m);
+    return rc;
+}
+
+/* issue 13: a small file claiming a huge size is refused from its header, at once */
+static void test_image_huge_header(void **state)
+{
+    (void)state;
+    char p[512], err[512] = "";
+    swv_image *img = NULL;
+    path_in_tmp(p, sizeof p, "huge.jpg");
+    assert_int_equal(synth_jpeg_claiming(p, 96, 96, 60000, 60000), 0);
+    double t0 = now_s();
+    assert_int_equal(read_both(p, &img, err, sizeof err), 2);
+    print_message("%s (%.3f s)\n", err, now_s() - t0);
+    assert_true(now_s() - t0 < 1);
+    assert_non_null(strstr(err, "huge.jpg: JPEG header claims 60000 x 60000 pixels"));
+    path_in_tmp(p, sizeof p, "huge.png");
+    assert_int_equal(synth_png_claiming(p, 20000, 20000), 0);
+    assert_int_equal(read_both(p, &img, err, sizeof err), 2);
+    assert_non_null(strstr(err, "huge.png: PNG header claims 20000 x 20000 pixels"));
+    assert_int_equal(synth_png_claiming(p, 1, 30001), 0);
+    assert_int_equal(read_both(p, &img, err, sizeof err), 2);
+    assert_non_null(strstr(err, "1 x 30001"));
+    /* within the limits but with the data of a 96 x 96 / 1 x 1 image: the decoder's
+     * complaint (a libjpeg warning, a libpng error) ends it */
+    path_in_tmp(p, sizeof p, "big.jpg");
+    assert_int_equal(synth_jpeg_claiming(p, 96, 96, 29000, 3400), 0);
+    assert_int_equal(read_both(p, &img, err, sizeof err), 2);
+    print_message("%s\n", err);
+    assert_non_null(strstr(err, "JPEG decoding failed"));
+    path_in_tmp(p, sizeof p, "big.png");
+    assert_int_equal(synth_png_claiming(p, 10000, 10000), 0);
+    assert_int_equal(read_both(p, &img, err, sizeof err), 2);
+    assert_non_null(strstr(err, "PNG decoding failed"));
+    /* the patched 1 x 1 file itself still reads */
+    assert_int_equal(synth_png_claiming(p, 1, 1), 0);
+    assert_int_equal(read_both(p, &img, err, sizeof err), 0);
+    swv_image_free(img);
+    unlink(p);
+}
+
+/* issue 13: a truncated JPEG used to decode (grey rest, a warning on stderr), exit 0 */
+static void test_image_truncated(void **state)
+{
+    (void)state;
+    char p[512], q[512], err[512] = "";
+    swv_image *img = synth_photo(0.5, 0.5), *back = NULL;
+    path_in_tmp(p, sizeof p, "full.jpg");
+    path_in_tmp(q, sizeof q, "half.jpg");
+    assert_int_equal(swv_image_write_jpeg(p, img, 95, err, sizeof err), 0);
+    assert_int_equal(read_both(p, &back, err, sizeof err), 0);
+    swv_image_free(back);
+    assert_int_equal(synth_truncate(p, q, 0.5), 0);
+    assert_int_equal(read_both(q, &back, err, sizeof err), 2);
+    print_message("%s\n", err);
+    assert_non_null(strstr(err, "half.jpg: JPEG decoding failed (Premature end of JPEG file)"));
+    /* corrupt entropy-coded data (bytes overwritten in the middle): a warning -> error */
+    size_t n = 0;
+    unsigned char *b = synth_slurp(p, &n);
+    assert_non_null(b);
+    for (size_t i = n / 2; i < n / 2 + 64; i++)
+        b[i] = (unsigned char)(i * 37);
+    assert_int_equal(swv_image_read_mem(b, n, "corrupt.jpg", &back, err, sizeof err), 2);
+    print_message("%s\n", err);
+    assert_non_null(strstr(err, "corrupt.jpg: JPEG decoding failed"));
+    free(b);
+    unlink(p);
+    unlink(q);
+    path_in_tmp(p, sizeof p, "full.png");
+    path_in_tmp(q, sizeof q, "half.png");
+    assert_int_equal(swv_image_write_png(p, img, err, sizeof err), 0);
+    assert_int_equal(synth_truncate(p, q, 0.5), 0);
+    assert_int_equal(read_both(q, &back, err, sizeof err), 2);
+    print_message("%s\n", err);
+    assert_non_null(strstr(err, "half.png: PNG decoding failed"));
+    assert_non_null(strstr(err, "truncated"));
+    assert_int_equal(synth_truncate(p, q, 0.9), 0);
+    assert_int_equal(read_both(q, &back, err, sizeof err), 2);
+    /* cut inside the signature / empty */
+    assert_int_equal(synth_truncate(p, q, 0.0), 0);
+    assert_int_equal(read_both(q, &back, err, sizeof err), 2);
+    assert_non_null(strstr(err, "half.png: empty file"));
+    assert_int_equal(synth_truncate(p, q, 0.002), 0);   /* 5 bytes of the signature */
+    assert_int_equal(read_both(q, &back, err, sizeof err), 2);
+    assert_non_null(strstr(err, "neither PNG nor JPEG"));
+    assert_int_equal(swv_image_read_mem(NULL, 0, NULL, &back, err, sizeof err), 2);
+    assert_non_null(strstr(err, "(memory)"));
+    swv_image_free(img);
+    unlink(p);
+    unlink(q);
+}
+
+/* A 3-component progressive JPEG with 2090 scans (every AC coefficient of every
+ * component alone, then refined bit by bit): more than SWV_JPEG_MAX_SCANS. */
+static void write_many_scans_jpeg(const char *path)
+{
+    enum { AL = 10 };
+    static jpeg_scan_info scans[11 + 3 * 63 * 11];
+    int k = 0;
+    for (int al = AL; al >= 0; al--, k++) {    /* DC, interleaved, then refinements */
+        scans[k].comps_in_scan = 3;
+        for (int c = 0; c < 3; c++) scans[k].component_index[c] = c;
+        scans[k].Ss = scans[k].Se = 0;
+        scans[k].Ah = al == AL ? 0 : al + 1;
+        scans[k].Al = al;
+    }
+    for (int c = 0; c < 3; c++)
+        for (int s = 1; s < 64; s++)
+            for (int al = AL; al >= 0; al--, k++) {
+                scans[k].comps_in_scan = 1;
+                scans[k].component_index[0] = c;
+                scans[k].Ss = scans[k].Se = s;
+                scans[k].Ah = al == AL ? 0 : al + 1;
+                scans[k].Al = al;
+            }
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    struct jpeg_compress_struct ci;
+    struct jpeg_error_mgr je;
+    ci.err = jpeg_std_error(&je);
+    jpeg_create_compress(&ci);
+    jpeg_stdio_dest(&ci, f);
+    ci.image_width = ci.image_height = 16;
+    ci.input_components = 3;
+    ci.in_color_space = JCS_RGB;
+    jpeg_set_defaults(&ci);
+    ci.scan_info = scans;
+    ci.num_scans = k;
+    jpeg_start_compress(&ci, TRUE);
+    swv_image *img = synth_noise(16, 16);
+    assert_non_null(img);
+    while (ci.next_scanline < ci.image_height) {
+        JSAMPROW row = img->rgb + (size_t)ci.next_scanline * 48u;
+        jpeg_write_scanlines(&ci, &row, 1);
+    }
+    jpeg_finish_compress(&ci);
+    jpeg_destroy_compress(&ci);
+    fclose(f);
+    swv_image_free(img);
+}
+
+static void test_image_many_scans(void **state)
+{
+    (void)state;
+    char p[512], err[512] = "";
+    path_in_tmp(p, sizeof p, "scans.jpg");
+    write_many_scans_jpeg(p);
+    swv_image *img = NULL;
+    assert_int_equal(read_both(p, &img, err, sizeof err), 2);
+    print_message("%s\n", err);
+    assert_non_null(strstr(err, "more than 1000 scans"));
+    unlink(p);
+}
+
+/* issue 13: bow-tie, concave, mirrored, collinear and sub-pixel corner sets */
+static void test_corners(void **state)
+{
+    (void)state;
+    char err[512] = "";
+    assert_int_equal(swv_corners_check(synth_corners, 640, 480, err, sizeof err), 0);
+    struct { double c[4][2]; const char *text; } bad[] = {
+        {{{100, 80}, {540, 60}, {300, 150}, {60, 400}}, "concave at corner 3 (bottom-right"},
+        {{{100, 80}, {540, 60}, {580, 420}, {200, 100}}, "concave at corner 4 (bottom-left"},
+        {{{100, 80}, {540, 60}, {60, 400}, {580, 420}}, "side from corner 2 to 3 crosses the side from corner 4 to 1 (a bow-tie)"},
+        {{{100, 80}, {580, 420}, {540, 60}, {60, 400}}, "side from corner 1 to 2 crosses the side from corner 3 to 4 (a bow-tie)"},
+        {{{100, 80}, {60, 400}, {580, 420}, {540, 60}}, "counter-clockwise"},
+        {{{100, 80}, {100.5, 80}, {100.5, 80.5}, {100, 80.5}}, "covers 0.25 px^2 and is 0.5 px wide"},
+        {{{100, 80}, {540, 60}, {540, 65}, {100, 85}}, "px wide"},           /* 2200 px^2 but 5 px wide */
+        {{{100, 80}, {105, 80}, {105, 85}, {100, 85}}, "covers 25 px^2"},    /* 5 x 5 px */
+        {{{100, 80}, {100, 80}, {580, 420}, {60, 400}}, "on one line or coincide"},
+        {{{100, 80}, {300, 80}, {500, 80}, {60, 400}}, "corners 1, 2, 3 (top-left, top-right, bottom-right) lie on one line"},
+        {{{100, 80}, {540, 60}, {580, 420}, {60, 500}}, "corner 4 (bottom-left, 60,500) lies outside the 640x480"},
+        {{{100, 80}, {540, NAN}, {580, 420}, {60, 400}}, "corner 2 (top-right, 540,nan) is not a finite point"},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        err[0] = '\0';
+        assert_int_equal(swv_corners_check((const double(*)[2])bad[i].c, 640, 480, err, sizeof err), 2);
+        print_message("%s\n", err);
+        assert_non_null(strstr(err, bad[i].text));
+    }
+    /* the limits themselves: a 10 x 10 square passes, 9.9 x 20 does not */
+    const double sq[4][2] = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+    assert_int_equal(swv_corners_check(sq, 640, 480, err, sizeof err), 0);
+    const double thin[4][2] = {{0, 0}, {20, 0}, {20, 9.9}, {0, 9.9}};
+    assert_int_equal(swv_corners_check(thin, 640, 480, err, sizeof err), 2);
+    /* the comparison runs the same check first */
+    swv_image *photo = synth_photo(0.5, 0.5);
+    char csv[512];
+    path_in_tmp(csv, sizeof csv, "c.csv");
+    assert_int_equal(synth_csv(csv, 4, 0, 1, 1), 0);
+    swv_simmap *sim = NULL;
+    assert_int_equal(swv_simmap_read(csv, &sim, err, sizeof err), 0);
+    swv_config c;
+    swv_config_defaults(&c);
+    memcpy(c.corners, bad[2].c, sizeof c.corners);
+    swv_metrics m;
+    assert_int_equal(swv_compare_run(&c, photo, sim, &m, NULL, err, sizeof err), 2);
+    assert_non_null(strstr(err, "bow-tie"));
+    swv_simmap_free(sim);
+    swv_image_free(photo);
+    unlink(csv);
+}
+
+static void test_md_cell(void **state)
+{
+    (void)state;
+    char out[128];
+    const char *in = "a|b\nc`d\\e<f\tg";
+    size_t n = swv_md_cell(in, out, sizeof out);
+    assert_string_equal(out, "a\\|b c\\`d\\\\e\\<f g");
+    assert_int_equal(n, strlen(out));
+    assert_int_equal(swv_md_cell(in, NULL, 0), n);
+    assert_int_equal(swv_md_cell(in, out, 4), n);   /* cut, always terminated */
+    assert_string_equal(out, "a\\|");
+    assert_int_equal(swv_md_cell("tangential 0.5 m/s", out, sizeof out), 18);
+    assert_string_equal(out, "tangential 0.5 m/s");
+    assert_int_equal(swv_md_cell("", out, sizeof out), 0);
+    assert_string_equal(out, "");
+}
+
+/* the CSV parser from memory = from a file; hostile text */
+static void test_simmap_mem(void **state)
+{
+    (void)state;
+    char p[512], err[512] = "";
+    path_in_tmp(p, sizeof p, "mem.csv");
+    assert_int_equal(synth_csv(p, 8, 0, 0.75, 0.5), 0);
+    size_t n = 0;
+    unsigned char *b = synth_slurp(p, &n);
+    assert_non_null(b);
+    swv_simmap *a = NULL, *m = NULL;
+    assert_int_equal(swv_simmap_read(p, &a, err, sizeof err), 0);
+    assert_int_equal(swv_simmap_read_mem((const char *)b, n, "mem", &m, err, sizeof err), 0);
+    assert_int_equal(a->ny, m->ny);
+    assert_int_equal(a->nz, m->nz);
+    assert_memory_equal(a->val, m->val, 64 * sizeof *a->val);
+    swv_simmap_free(a);
+    swv_simmap_free(m);
+    /* without the last newline, and cut in the middle of the last number */
+    assert_int_equal(swv_simmap_read_mem((const char *)b, n - 1, "mem", &m, err, sizeof err), 0);
+    swv_simmap_free(m);
+    assert_int_equal(swv_simmap_read_mem((const char *)b, n - 3, "mem", &m, err, sizeof err), 0);
+    swv_simmap_free(m);    /* "0.01" cut to "0." still parses: the grid is whole */
+    assert_int_equal(swv_simmap_read_mem((const char *)b, n / 2, "mem", &m, err, sizeof err), 2);
+    assert_null(m);
+    free(b);
+    unlink(p);
+    assert_int_equal(swv_simmap_read_mem(NULL, 0, NULL, &m, err, sizeof err), 2);
+    assert_non_null(strstr(err, "(memory): empty"));
+    /* binary garbage is shown as '?', in at most 60 characters, on one line */
+    const char garbage[] = "y,z,d\n\x1b[31mred\x7f\xff\xfe,1,2\n";
+    assert_int_equal(swv_simmap_read_mem(garbage, sizeof garbage - 1, "g", &m, err, sizeof err), 2);
+    print_message("%s\n", err);
+    assert_non_null(strstr(err, "g:2: expected 'y,z,value', got '?[31mred???,1,2'"));
+    char longbad[300];
+    memset(longbad, 'x', sizeof longbad);
+    memcpy(longbad, "h\n", 2);
+    assert_int_equal(swv_simmap_read_mem(longbad, sizeof longbad, "l", &m, err, sizeof err), 2);
+    assert_non_null(strstr(err, "xxx...'"));
+    assert_null(strchr(err, '\n'));
+    /* a NUL byte, an over-long line */
+    const char nul[] = "y,z,d\n0,0,1\0\n1,0,1\n0,1,1\n1,1,1\n";
+    assert_int_equal(swv_simmap_read_mem(nul, sizeof nul - 1, "nul", &m, err, sizeof err), 2);
+    assert_non_null(strstr(err, "nul:2: NUL byte"));
+    char *big = malloc(5000);
+    assert_non_null(big);
+    memset(big, ' ', 5000);
+    memcpy(big, "y,z,d\n0,0,1", 11);
+    assert_int_equal(swv_simmap_read_mem(big, 5000, "long", &m, err, sizeof err), 2);
+    assert_non_null(strstr(err, "long:2: line longer than 1023 characters"));
+    free(big);
+    /* more faces than SWV_SIMMAP_MAX_FACES: refused while reading */
+    size_t cap = 16 * (size_t)(SWV_SIMMAP_MAX_FACES + 2), len = 0;
+    char *many = malloc(cap);
+    assert_non_null(many);
+    len += (size_t)snprintf(many, cap, "y,z,d\n");
+    for (int i = 0; i <= SWV_SIMMAP_MAX_FACES; i++)
+        len += (size_t)snprintf(many + len, cap - len, "%d,%d,1\n", i % 1000, i / 1000);
+    assert_int_equal(swv_simmap_read_mem(many, len, "many", &m, err, sizeof err), 2);
+    assert_non_null(strstr(err, "many:1000002: more than 1000000 faces"));
+    free(many);
+}
+
 int main(void)
 {
     snprintf(tmpdir, sizeof tmpdir, "/tmp/test_swv.XXXXXX");
@@ -262,6 +595,13 @@ int main(void)
         cmocka_unit_test(test_compare_bad_input),
         cmocka_unit_test(test_simmap_errors),
         cmocka_unit_test(test_regions),
+        cmocka_unit_test(test_image_size_check),
+        cmocka_unit_test(test_image_huge_header),
+        cmocka_unit_test(test_image_truncated),
+        cmocka_unit_test(test_image_many_scans),
+        cmocka_unit_test(test_corners),
+        cmocka_unit_test(test_md_cell),
+        cmocka_unit_test(test_simmap_mem),
     };
     int rc = cmocka_run_group_tests(tests, NULL, NULL);
     rmdir(tmpdir);
