@@ -22,9 +22,9 @@ int swv_image_check_size(const char *name, const char *what, unsigned long width
         return 0;
     return swv_fail(err, errlen, 2,
                     "%s: %s header claims %lu x %lu pixels (%.1f MP); the limit is 1 .. %d px per "
-                    "side and %d MP",
+                    "side and %g MP",
                     name, what, width, height, (double)width * (double)height / 1e6,
-                    SWV_IMAGE_MAX_SIDE, SWV_IMAGE_MAX_PIXELS / 1000000);
+                    SWV_IMAGE_MAX_SIDE, SWV_IMAGE_MAX_PIXELS / 1e6);
 }
 
 swv_image *swv_image_alloc(int width, int height)

@@ -19,9 +19,15 @@ typedef struct swv_image {
  * SWV_IMAGE_MAX_SIDE pixels per side and SWV_IMAGE_MAX_PIXELS in all (100 MP,
  * 300 MB as 8-bit RGB). A progressive JPEG may have at most SWV_JPEG_MAX_SCANS
  * scans (photos have about 10; thousands of empty scans are a time bomb). */
+#ifndef SWV_IMAGE_MAX_SIDE          /* a fuzzing build may define smaller limits */
 #define SWV_IMAGE_MAX_SIDE 30000
+#endif
+#ifndef SWV_IMAGE_MAX_PIXELS
 #define SWV_IMAGE_MAX_PIXELS 100000000
+#endif
+#ifndef SWV_JPEG_MAX_SCANS
 #define SWV_JPEG_MAX_SCANS 1000
+#endif
 
 /* 0 when width x height is within the limits, else 2 and "NAME: WHAT header
  * claims W x H pixels (... MP); the limit is ..." in err. */
