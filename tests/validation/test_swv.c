@@ -313,6 +313,7 @@ static void test_image_huge_header(void **state)
     print_message("%s (%.3f s)\n", err, now_s() - t0);
     assert_true(now_s() - t0 < 1);
     assert_non_null(strstr(err, "huge.jpg: JPEG header claims 60000 x 60000 pixels"));
+    unlink(p);
     path_in_tmp(p, sizeof p, "huge.png");
     assert_int_equal(synth_png_claiming(p, 20000, 20000), 0);
     assert_int_equal(read_both(p, &img, err, sizeof err), 2);
@@ -320,6 +321,7 @@ static void test_image_huge_header(void **state)
     assert_int_equal(synth_png_claiming(p, 1, 30001), 0);
     assert_int_equal(read_both(p, &img, err, sizeof err), 2);
     assert_non_null(strstr(err, "1 x 30001"));
+    unlink(p);
     /* within the limits but with the data of a 96 x 96 / 1 x 1 image: the decoder's
      * complaint (a libjpeg warning, a libpng error) ends it */
     path_in_tmp(p, sizeof p, "big.jpg");
@@ -327,6 +329,7 @@ static void test_image_huge_header(void **state)
     assert_int_equal(read_both(p, &img, err, sizeof err), 2);
     print_message("%s\n", err);
     assert_non_null(strstr(err, "JPEG decoding failed"));
+    unlink(p);
     path_in_tmp(p, sizeof p, "big.png");
     assert_int_equal(synth_png_claiming(p, 10000, 10000), 0);
     assert_int_equal(read_both(p, &img, err, sizeof err), 2);
