@@ -7,6 +7,10 @@
 #   config   snowregime's --config reader (swr_params_load, regime/kernel/swr_params.c)
 #   coeffs   the wall model's regime.coeffs reader and decisions (sww_regime_load,
 #            wallmodel/core/sww_load.c, sww.c)
+#   simcsv   snowphoto's simulated-map CSV reader (swv_simmap_read_mem)
+#   image    snowphoto's PNG and JPEG readers (swv_image_read_mem; Debian's libpng
+#            and libjpeg, not instrumented; built with limits of 4000 px per side
+#            and 4 MP instead of 30000 and 100 MP, so in-limit images stay fast)
 # Each target is built with Debian's clang (-fsanitize=fuzzer,address,undefined,
 # -O1 -g) from its sources into DIR/bin (default build/fuzz), started from the
 # seed corpus tests/fuzz/corpus/TARGET (copied to DIR/corpus/TARGET, which
@@ -28,14 +32,14 @@ while [ $# -gt 0 ]; do
         --time) time_s=${2:-}; shift ;;
         --jobs) jobs=${2:-}; shift ;;
         --out) out=${2:?--out needs a folder}; shift ;;
-        config|coeffs) targets+=("$1") ;;
+        config|coeffs|simcsv|image) targets+=("$1") ;;
         *) echo "run.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
     esac
     shift
 done
 [[ "$time_s" =~ ^[1-9][0-9]*$ ]] || { echo "run.sh: --time: '$time_s' is not a positive whole number" >&2; exit 2; }
 [[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "run.sh: --jobs: '$jobs' is not a positive whole number" >&2; exit 2; }
-[ ${#targets[@]} -gt 0 ] || targets=(config coeffs)
+[ ${#targets[@]} -gt 0 ] || targets=(config coeffs simcsv image)
 cc=$(command -v clang || command -v clang-14 || true)
 [ -n "$cc" ] || { echo "run.sh: clang not found (apt-get install clang)" >&2; exit 77; }
 echo 'int LLVMFuzzerTestOneInput(const unsigned char *d, unsigned long n) { (void)d; (void)n; return 0; }' \
@@ -44,12 +48,18 @@ echo 'int LLVMFuzzerTestOneInput(const unsigned char *d, unsigned long n) { (voi
     || { echo "run.sh: $cc cannot build a libFuzzer target (libclang-rt / compiler-rt missing)" >&2; exit 77; }
 rm -f "${TMPDIR:-/tmp}/fz_probe.c" "${TMPDIR:-/tmp}/fz_probe"
 
-flags=(-fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -O1 -g -std=c11 -D_GNU_SOURCE)
+flags=(-fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -O1 -g -std=c11)
 sources() {  # sources TARGET: the compiler arguments of a target
     case "$1" in
-        config) echo "$here/fuzz_config.c $top/regime/kernel/swr_params.c -I$top/regime/kernel -lm" ;;
-        coeffs) echo "$here/fuzz_coeffs.c $top/wallmodel/core/sww.c $top/wallmodel/core/sww_load.c" \
+        config) echo "$here/fuzz_config.c $top/regime/kernel/swr_params.c -I$top/regime/kernel -D_GNU_SOURCE -lm" ;;
+        coeffs) echo "-D_GNU_SOURCE $here/fuzz_coeffs.c $top/wallmodel/core/sww.c $top/wallmodel/core/sww_load.c" \
                      "$top/regime/physics/*.c -I$top/wallmodel/core -I$top/regime/physics -lm" ;;
+        simcsv) echo "$here/fuzz_simcsv.c $top/validation/swv_compare.c $top/validation/swv_homography.c" \
+                     "$top/validation/swv_image.c $top/validation/swv_error.c -I$top/validation" \
+                     "-D_XOPEN_SOURCE=700 $(pkg-config --cflags --libs gsl libpng libjpeg) -lm" ;;
+        image)  echo "$here/fuzz_image.c $top/validation/swv_image.c $top/validation/swv_error.c" \
+                     "-I$top/validation -D_XOPEN_SOURCE=700 -DSWV_IMAGE_MAX_PIXELS=4000000" \
+                     "-DSWV_IMAGE_MAX_SIDE=4000 $(pkg-config --cflags --libs libpng libjpeg) -lm" ;;
     esac
 }
 mkdir -p "$out/bin" "$out/corpus" "$out/findings" "$out/logs"
