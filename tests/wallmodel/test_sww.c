@@ -828,6 +828,10 @@ static void shear_gate(void **s)
     assert_false(sww_shear_on(m));
     assert_int_equal(sww_set_shear_gate_adhesion(m, 0.0), SWW_EINVAL);
     assert_non_null(strstr(sww_errmsg(m), "roughnessFactor 0"));
+    /* the message is the last call's: a call that succeeds leaves none (issue 13) */
+    assert_int_equal(sww_set_rebound_tangential(m, 0.5), SWW_OK);
+    assert_string_equal(sww_errmsg(m), "");
+    assert_int_equal(sww_set_shear_gate_adhesion(m, 0.0), SWW_EINVAL);
     assert_int_equal(sww_set_shear_gate_constant(m, -1.0), SWW_EINVAL);
     assert_non_null(strstr(sww_errmsg(m), "tauCrit -1"));
     sww_free(m);

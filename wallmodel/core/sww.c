@@ -109,6 +109,7 @@ const char *sww_errmsg(const sww_model *m)
 
 int sww_regime_number(sww_model *m, const char *key, double v)
 {
+    m->err[0] = '\0'; /* the message is of the last call only */
     for (int k = 0; k < K_NNUM; k++) {
         if (strcmp(key, num_keys[k]) != 0)
             continue;
@@ -236,6 +237,7 @@ static int set_probability_part(sww_model *m, const char *key, const double *v, 
 
 int sww_regime_list(sww_model *m, const char *key, const double *v, size_t n)
 {
+    m->err[0] = '\0'; /* the message is of the last call only */
     for (size_t i = 0; i < n; i++)
         if (!isfinite(v[i]))
             return sww_fail(m, SWW_EINVAL, "key '%s': value %g (entry %zu) is not a finite number",
@@ -268,6 +270,7 @@ int sww_regime_list(sww_model *m, const char *key, const double *v, size_t n)
 
 int sww_regime_word(sww_model *m, const char *key, const char *w)
 {
+    m->err[0] = '\0'; /* the message is of the last call only */
     m->ready = 0;
     if (!strcmp(key, "representation")) {
         if (!strcmp(w, "polynomial"))
@@ -468,6 +471,7 @@ static int probability_commit(sww_model *m, const char *o)
 
 int sww_regime_commit(sww_model *m, const char *origin)
 {
+    m->err[0] = '\0'; /* the message is of the last call only */
     const char *o = origin ? origin : "regime";
     m->ready = 0;
     if (!m->representation)
@@ -572,6 +576,7 @@ int sww_regime_commit(sww_model *m, const char *origin)
 
 int sww_set_tangential_gate(sww_model *m, double vt_max, double d_ref, double exponent)
 {
+    m->err[0] = '\0'; /* the message is of the last call only */
     if (!(vt_max >= 0.0) || isinf(vt_max))
         return sww_fail(m, SWW_EINVAL, "tangential gate: vtMax %g must be a finite speed >= 0", vt_max);
     if (!(d_ref > 0.0) || isinf(d_ref))
@@ -587,6 +592,7 @@ int sww_set_tangential_gate(sww_model *m, double vt_max, double d_ref, double ex
 
 int sww_set_tangential_regime(sww_model *m)
 {
+    m->err[0] = '\0'; /* the message is of the last call only */
     if (!m->ready || !m->ob_ready)
         return sww_fail(m, SWW_EMISSING, "tangential gate 'regime': the regime map has no "
                         "oblique table (obliqueVt, obliqueVn, obliqueDCrit: make it with "
@@ -684,11 +690,13 @@ int sww_probability_table(const sww_model *m, size_t *nd, size_t *nvn)
 
 void sww_set_tangential_off(sww_model *m)
 {
+    m->err[0] = '\0'; /* the message is of the last call only */
     m->vt_on = 0;
 }
 
 int sww_set_shear_gate_constant(sww_model *m, double tau_c)
 {
+    m->err[0] = '\0'; /* the message is of the last call only */
     if (!(tau_c >= 0.0) || isinf(tau_c))
         return sww_fail(m, SWW_EINVAL, "shear gate: tauCrit %g must be a finite stress >= 0 Pa", tau_c);
     m->shear_on = 1;
@@ -698,6 +706,7 @@ int sww_set_shear_gate_constant(sww_model *m, double tau_c)
 
 int sww_set_shear_gate_adhesion(sww_model *m, double roughness)
 {
+    m->err[0] = '\0'; /* the message is of the last call only */
     if (!(roughness > 0.0 && roughness <= 1.0))
         return sww_fail(m, SWW_EINVAL, "shear gate: roughnessFactor %g is not in (0, 1]", roughness);
     if (!m->has[K_GAMMA])
@@ -713,11 +722,13 @@ int sww_set_shear_gate_adhesion(sww_model *m, double roughness)
 
 void sww_set_shear_off(sww_model *m)
 {
+    m->err[0] = '\0'; /* the message is of the last call only */
     m->shear_on = 0;
 }
 
 int sww_set_rebound_tangential(sww_model *m, double e_t)
 {
+    m->err[0] = '\0'; /* the message is of the last call only */
     if (!(e_t >= 0.0 && e_t <= 1.0))
         return sww_fail(m, SWW_EINVAL, "reboundTangential %g is not in [0, 1]", e_t);
     m->e_t = e_t;

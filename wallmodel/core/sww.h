@@ -73,7 +73,7 @@ typedef struct sww_model sww_model;
 
 sww_model *sww_alloc(void);
 void sww_free(sww_model *m);
-/* Last error message ("" when none). */
+/* The message of the last set/load/commit call ("" when it succeeded). */
 const char *sww_errmsg(const sww_model *m);
 
 /* ---- the regime map (doc/regime-coeffs.md) ---------------------------------
