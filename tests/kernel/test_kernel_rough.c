@@ -18,29 +18,9 @@
 #include "swr_collide.h"
 #include "swr_wall.h"
 #include "swt_vcrit.h"
+#include "kernel_test.h"
 
 #define REL(x, ref) (fabs((x) - (ref)) / fabs(ref))
-
-static swr_params params(const char *const *kv)
-{
-    swr_params p;
-    swr_params_default(&p);
-    char err[256];
-    for (; kv && *kv; kv++)
-        if (swr_params_set_kv(&p, *kv, err, sizeof err) != 0)
-            fail_msg("%s", err);
-    return p;
-}
-
-static swr_model *model(const char *const *kv)
-{
-    swr_params p = params(kv);
-    char err[256];
-    swr_model *m = swr_model_alloc(&p, err, sizeof err);
-    if (!m)
-        fail_msg("%s", err);
-    return m;
-}
 
 /* Head-on on top of one asperity, elastic JKR: the sphere sticks iff its
  * kinetic energy is below the separation energy U_c of the particle-asperity
@@ -56,8 +36,8 @@ static void one_asperity_vs(void **state)
         snprintf(kr, sizeof kr, "asperity_r=%g", radii[a]);
         snprintf(ks, sizeof ks, "asperity_spacing=%g", 3.0 * radii[a]);
         const char *kv[] = { "wall=lattice", kr, ks, "cor=elastic", NULL };
-        swr_params p = params(kv);
-        swr_model *m = model(kv);
+        swr_params p = test_params(kv);
+        swr_model *m = test_model(kv);
         const double Es = swp_effective_modulus(p.E, p.nu, p.E_wall, p.nu_wall);
         for (size_t k = 0; k < 2; k++) {
             const double R = 0.5 * ds[k], Rs = R * radii[a] / (R + radii[a]);
@@ -81,7 +61,7 @@ static void huge_asperity_is_flat(void **state)
     (void)state;
     const char *flat[] = { NULL };
     const char *big[] = { "wall=lattice", "asperity_r=0.1", "asperity_spacing=0.3", NULL };
-    swr_model *mf = model(flat), *mb = model(big);
+    swr_model *mf = test_model(flat), *mb = test_model(big);
     const double ds[] = { 10e-6, 30e-6, 100e-6 };
     for (size_t k = 0; k < 3; k++) {
         double vf, vb;
@@ -116,10 +96,10 @@ static void lattice_geometry(void **state)
                           "asperity_dz=0.5e-6", "wall_seed=8", NULL };
     swr_wall w, h, r, r2;
     swr_params p;
-    p = params(sq); swr_wall_init(&w, &p);
-    p = params(hx); swr_wall_init(&h, &p);
-    p = params(rn); swr_wall_init(&r, &p);
-    p = params(rn2); swr_wall_init(&r2, &p);
+    p = test_params(sq); swr_wall_init(&w, &p);
+    p = test_params(hx); swr_wall_init(&h, &p);
+    p = test_params(rn); swr_wall_init(&r, &p);
+    p = test_params(rn2); swr_wall_init(&r2, &p);
     double c[3], c2[3];
     swr_wall_asperity(&w, 3, -2, c);
     assert_true(fabs(c[0] - 6e-6) < 1e-18 && fabs(c[1] + 4e-6) < 1e-18 && c[2] == 0.0);
@@ -175,7 +155,7 @@ static void probability_seed_and_convergence(void **state)
 {
     (void)state;
     const char *kv[] = { "wall=lattice", NULL };
-    swr_model *m = model(kv);
+    swr_model *m = test_model(kv);
     swt_vcrit_opts o;
     swt_vcrit_opts_default(&o);
     const double d = 50e-6, vn = 0.5;   /* a cell with p between 0.1 and 0.9 */
@@ -239,7 +219,7 @@ static void extreme_inputs(void **state)
     };
     long n = 0, bound = 0;
     for (size_t w = 0; w < sizeof walls / sizeof walls[0]; w++) {
-        swr_model *m = model(walls[w]);
+        swr_model *m = test_model(walls[w]);
         double lx, ly;
         swr_model_sample_area(m, &lx, &ly);
         assert_true(lx > 0.0 && ly > 0.0);
@@ -279,7 +259,7 @@ static void extreme_inputs(void **state)
     printf("  %ld impacts, %ld on a bound\n", n, bound);
     /* grazing flights across many cells of a sparse lattice (flown in chunks) */
     const char *sparse[] = { "wall=lattice", "asperity_r=0.2e-6", "asperity_spacing=20e-6", NULL };
-    swr_model *m = model(sparse);
+    swr_model *m = test_model(sparse);
     for (int k = 0; k < 8; k++) {
         swr_impact in = { 2e-6, 1e-3, 50.0, 0.0, 3e-6 * k, 1.7e-6 * k };
         swr_result r;

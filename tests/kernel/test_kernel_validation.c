@@ -22,22 +22,10 @@
 #include "swr_normal.h"
 #include "swr_plastic.h"
 #include "swr_wall.h"
+#include "kernel_test.h"
 
 #define REL(x, ref) (fabs((x) - (ref)) / fabs(ref))
 
-static swr_model *model(const char *const *kv)
-{
-    swr_params p;
-    swr_params_default(&p);
-    char err[256];
-    for (; kv && *kv; kv++)
-        if (swr_params_set_kv(&p, *kv, err, sizeof err) != 0)
-            fail_msg("%s", err);
-    swr_model *m = swr_model_alloc(&p, err, sizeof err);
-    if (!m)
-        fail_msg("%s", err);
-    return m;
-}
 
 static double mass_of(const swr_params *p, double d)
 {
@@ -75,7 +63,7 @@ static void hertz_contact_time(void **s)
 {
     (void)s;
     const char *kv[] = { "adhesion=none", "cor=elastic", NULL };
-    swr_model *m = model(kv);
+    swr_model *m = test_model(kv);
     const swr_params *p = swr_model_params(m);
     double worst[2] = { 0.0, 0.0 };
     for (double d = 1e-6; d <= 1.001e-3; d *= sqrt(10.0)) {
@@ -109,7 +97,7 @@ static void constant_cor(void **s)
         char c[32];
         snprintf(c, sizeof c, "cor=%g", es[i]);
         const char *kv[] = { "adhesion=none", c, NULL };
-        swr_model *m = model(kv);
+        swr_model *m = test_model(kv);
         for (double d = 1e-6; d <= 1.001e-3; d *= 10.0)
             for (double v = 1e-3; v <= 50.0; v *= 7.0) {
                 swr_result r;
@@ -205,7 +193,7 @@ static void elastic_vcrit(void **s)
         snprintf(g, sizeof g, "gamma=%g", gammas[ig]);
         const char *kv[] = { g, "cor=elastic", NULL };
         const char *kv2[] = { g, "cor=0.999", NULL };
-        swr_model *m = model(kv), *m2 = model(kv2);
+        swr_model *m = test_model(kv), *m2 = test_model(kv2);
         const swr_params *p = swr_model_params(m);
         for (double d = 1e-6; d <= 1.001e-3; d *= sqrt(10.0)) {
             const double vs = swp_sticking_velocity_tn(gammas[ig], p->rho, estar_of(p), 0.5 * d);
@@ -237,7 +225,7 @@ static void plastic_cor(void **s)
     double worst = 0.0;
     for (int im = 0; im < 3; im++) {
         const char *kv[] = { modes[im][0], modes[im][1], modes[im][2], NULL };
-        swr_model *m = model(kv);
+        swr_model *m = test_model(kv);
         const swr_params *p = swr_model_params(m);
         const double Es = estar_of(p), py = swp_limiting_pressure(p->sigma_y);
         for (double d = 1e-6; d <= 1.001e-3; d *= 10.0)
@@ -268,7 +256,7 @@ static void dashpot_both(void **s)
 {
     (void)s;
     const char *kv[] = { "adhesion=none", "cor=thornton", "dashpot=both", NULL };
-    swr_model *m = model(kv);
+    swr_model *m = test_model(kv);
     const swr_params *p = swr_model_params(m);
     const double Es = estar_of(p), py = swp_limiting_pressure(p->sigma_y);
     double worst = 0.0;
@@ -317,7 +305,7 @@ static void thornton_ning(void **s)
     }
     /* no adhesion: Thornton's closed form */
     const char *kv[] = { "adhesion=none", "cor=thornton-ning", NULL };
-    swr_model *m = model(kv);
+    swr_model *m = test_model(kv);
     const swr_params *p = swr_model_params(m);
     const double Es = estar_of(p), py = swp_limiting_pressure(p->sigma_y);
     double w1 = 0.0, w2 = 0.0;
@@ -341,7 +329,7 @@ static void thornton_ning(void **s)
         char g[32];
         snprintf(g, sizeof g, "gamma=%g", gammas[ig]);
         const char *kv2[] = { g, "cor=thornton-ning", "sigma_y=1e10", NULL };
-        swr_model *m2 = model(kv2);
+        swr_model *m2 = test_model(kv2);
         const swr_params *p2 = swr_model_params(m2);
         for (double d = 1e-6; d <= 1.001e-3; d *= sqrt(10.0)) {
             const double vs = swp_sticking_velocity_tn(gammas[ig], p2->rho, estar_of(p2), 0.5 * d);
@@ -360,7 +348,7 @@ static void thornton_ning(void **s)
      * separation, so 5e-6 (relative to max(impact, separation energy)) */
     const char *kv3[] = { "adhesion=none", "cor=thornton-ning", "sigma_y=1e10", "accuracy=5000", NULL };
     const char *kv4[] = { "cor=thornton-ning", "sigma_y=1e10", "accuracy=5000", NULL };
-    swr_model *m3 = model(kv3), *m4 = model(kv4);
+    swr_model *m3 = test_model(kv3), *m4 = test_model(kv4);
     double w4 = 0.0, w5 = 0.0, w5a = 0.0;
     for (double d = 1e-6; d <= 1.001e-3; d *= 10.0)
         for (double v = 1e-3; v <= 50.0; v *= 10.0) {
@@ -379,7 +367,7 @@ static void thornton_ning(void **s)
     swr_model_free(m4);
     /* stepped vs closed form, baseline (adhesive, plastic) */
     const char *kv5[] = { "cor=thornton-ning", NULL };
-    swr_model *m5 = model(kv5);
+    swr_model *m5 = test_model(kv5);
     double w6 = 0.0, w7 = 0.0;
     long flips = 0;
     for (double d = 1e-6; d <= 1.001e-3; d *= sqrt(10.0))
@@ -423,7 +411,7 @@ static void extreme_grid(void **s)
             for (int ic = 0; ic < 6; ic++) {
                 const char *kv[] = { Es[ie], Gs[ig], es[ic], NULL };
                 const char *kv2[] = { Es[ie], Gs[ig], es[ic], "accuracy=120", NULL };
-                swr_model *m = model(kv), *m2 = model(kv2);
+                swr_model *m = test_model(kv), *m2 = test_model(kv2);
                 for (int id = 0; id < 4; id++)
                     for (int iv = 0; iv < 6; iv++) {
                         const double vt = (iv % 2) ? 0.5 * vs[iv] : 0.0;
@@ -468,7 +456,7 @@ static void extreme_grid(void **s)
 static void oblique(void **s)
 {
     (void)s;
-    swr_model *m = model(NULL);
+    swr_model *m = test_model(NULL);
     swr_result r;
     collide_ok(m, 20e-6, 0.3, 0.5, 0.0, 0, &r);
     assert_true(r.contact_kept && r.stick);
@@ -486,7 +474,7 @@ static void oblique(void **s)
 
     /* gross sliding through the whole contact: e_t = 1 - mu (1 + e_n) vn / vt */
     const char *kvs[] = { "adhesion=none", "cor=0.5", NULL };
-    m = model(kvs);
+    m = test_model(kvs);
     const double vts[] = { 2.0, 5.0, 20.0 };
     for (int i = 0; i < 3; i++) {
         collide_ok(m, 50e-6, 1.0, vts[i], 0.0, 0, &r);
@@ -497,7 +485,7 @@ static void oblique(void **s)
     swr_model_free(m);
 
     const char *kv[] = { "mu=0", NULL };
-    m = model(kv);
+    m = test_model(kv);
     collide_ok(m, 20e-6, 0.3, 0.5, 0.0, 0, &r);
     assert_true(r.contact_kept);
     assert_false(r.stick);
@@ -510,12 +498,12 @@ static void tabor_warning(void **s)
 {
     (void)s;
     const char *kv[] = { "gamma=0.01", "E=100e9", NULL };
-    swr_model *m = model(kv);
+    swr_model *m = test_model(kv);
     swr_result r;
     collide_ok(m, 1e-6, 1.0, 0.0, 0.0, 0, &r);
     assert_non_null(strstr(r.msg, "Tabor"));
     swr_model_free(m);
-    m = model(NULL);
+    m = test_model(NULL);
     collide_ok(m, 50e-6, 1.0, 0.0, 0.0, 0, &r);
     assert_null(strstr(r.msg, "Tabor"));
     swr_model_free(m);
@@ -544,7 +532,7 @@ static void *run_job(void *arg)
 static void threads(void **s)
 {
     (void)s;
-    swr_model *m = model(NULL);
+    swr_model *m = test_model(NULL);
     job a = { m, { 0 }, { 0 } }, b = a, serial = a;
     pthread_t ta, tb;
     pthread_create(&ta, NULL, run_job, &a);
@@ -570,7 +558,7 @@ static void near_threshold(void **s)
                          "E_wall=21464520.318462402", "nu_wall=0.1778112175877169",
                          "gamma=72.435753602079473", "mu=0.68995255051289139",
                          "xi_crit=1.6558846920739652e-10", "accuracy=58.181892277305501", NULL };
-    swr_model *m = model(kv);
+    swr_model *m = test_model(kv);
     swr_result r;
     collide_ok(m, 0.002807830999238124, 4.8880730501204521, 0.0011998416161442395, 0.0, 0, &r);
     assert_false(r.contact_kept);
