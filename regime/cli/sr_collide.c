@@ -101,7 +101,7 @@ int sr_cmd_collide(int argc, char **argv)
                 return sr_usage_error(cmd, a.err);
             have_d = 1;
         } else if (sr_opt(&a, "--vn", &v)) {
-            if (!v || swt_parse_double("--vn", v, SWR_V_MIN, SWR_V_MAX, &in.vn, a.err, sizeof a.err))
+            if (!v || swt_parse_double("--vn", v, 1e-300, SWR_V_MAX, &in.vn, a.err, sizeof a.err))
                 return sr_usage_error(cmd, a.err);
             have_vn = 1;
         } else if (sr_opt(&a, "--vt", &v)) {
@@ -149,8 +149,11 @@ int sr_cmd_collide(int argc, char **argv)
     double tabor = swr_model_tabor(m, in.d, &jkr_ok);
     swr_model_free(m);
     if (st == SWR_EINVAL) {
+        /* the kernel names the input (d, vn, vt, omega, x, y): the option is --NAME */
+        char msg[200];
+        snprintf(msg, sizeof msg, "--%s", r.msg);
         free(buf.p);
-        return sr_usage_error(cmd, r.msg);
+        return sr_usage_error(cmd, msg);
     }
     int rc = 0;
     if (csv || vtk) {

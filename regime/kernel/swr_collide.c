@@ -179,8 +179,11 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
         return bad_input(r, "model or impact", NAN, NULL);
     if (!(in->d >= SWR_D_MIN && in->d <= SWR_D_MAX))
         return bad_input(r, "d", in->d, "1e-07 .. 0.1 m");
-    if (!(in->vn >= SWR_V_MIN && in->vn <= SWR_V_MAX))
-        return bad_input(r, "vn", in->vn, "1e-60 .. 1000 m/s");
+    if (!(in->vn > 0.0 && in->vn <= SWR_V_MAX))
+        return bad_input(r, "vn", in->vn, "(0, 1000] m/s");
+    if (!m->adhesive && in->vn < SWR_V_MIN)
+        return bad_input(r, "vn", in->vn, "1e-60 .. 1000 m/s without adhesion (below 1e-60 m/s a "
+                                          "Hertz contact's scaled radii overflow)");
     if (!(in->vt >= 0.0 && in->vt <= SWR_V_MAX))
         return bad_input(r, "vt", in->vt, "0 .. 1000 m/s");
     if (!(fabs(in->omega) <= SWR_V_MAX / (0.5 * in->d)))

@@ -115,8 +115,9 @@ double swr_model_tabor(const swr_model *m, double d, int *jkr_ok);
 #define SWR_D_MIN 1.0e-7   /* diameter [m] */
 #define SWR_D_MAX 1.0e-1
 #define SWR_V_MAX 1.0e3    /* normal and tangential speed [m/s] */
-#define SWR_V_MIN 1.0e-60  /* normal speed [m/s]: below it a Hertz contact's scaled
-                              radii overflow (a JKR impact there simply sticks) */
+#define SWR_V_MIN 1.0e-60  /* normal speed [m/s] without adhesion: below it a Hertz
+                              contact's scaled radii overflow (with adhesion any
+                              vn > 0 is accepted: an impact that slow sticks) */
 /* On a rough wall d is at most this many asperity radii (beyond it a sphere
  * holds hundreds of asperity contacts at once; use the flat wall there). */
 #define SWR_ROUGH_D_OVER_R_MAX 2000.0

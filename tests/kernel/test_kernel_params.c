@@ -216,7 +216,7 @@ static void tiny_speeds(void **s)
     swr_params p;
     char err[256];
     const double ds[] = { SWR_D_MIN, 50e-6, SWR_D_MAX };
-    const double vs[] = { SWR_V_MIN, 1e-90, 1e-30, 1e-9 };
+    const double vs[] = { 1e-300, 1e-90, SWR_V_MIN, 1e-9 };
     for (int law = 0; law < 3; law++) {
         swr_params_default(&p);
         if (law == 1) assert_int_equal(swr_params_set_kv(&p, "adhesion=none", err, sizeof err), 0);
@@ -228,7 +228,7 @@ static void tiny_speeds(void **s)
         assert_non_null(m);
         for (size_t i = 0; i < 3; i++)
             for (size_t k = 0; k < 4; k++) {
-                if (vs[k] < SWR_V_MIN) continue;
+                if (law > 0 && vs[k] < SWR_V_MIN) continue; /* Hertz: refused, below */
                 swr_impact in = { ds[i], vs[k], 0.0, 0.0, 0.0, 0.0 };
                 swr_result r;
                 assert_int_equal(swr_collide(m, &in, &r, NULL), SWR_OK);
@@ -248,9 +248,14 @@ static void tiny_speeds(void **s)
             }
         swr_impact below = { 50e-6, 0.5 * SWR_V_MIN, 0.0, 0.0, 0.0, 0.0 };
         swr_result r;
-        assert_int_equal(swr_collide(m, &below, &r, NULL), SWR_EINVAL);
-        assert_non_null(strstr(r.msg, "vn"));
-        assert_non_null(strstr(r.msg, "accepted"));
+        if (law > 0) {
+            assert_int_equal(swr_collide(m, &below, &r, NULL), SWR_EINVAL);
+            assert_non_null(strstr(r.msg, "vn"));
+            assert_non_null(strstr(r.msg, "without adhesion"));
+        } else {
+            assert_int_equal(swr_collide(m, &below, &r, NULL), SWR_OK);
+            assert_true(r.stick);
+        }
         swr_model_free(m);
     }
 }

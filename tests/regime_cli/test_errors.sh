@@ -43,7 +43,7 @@ for a in "vcrit --d -2e-5|--d: '-2e-5'" "vcrit --d 1e-5,,2e-5|empty item" "vcrit
          "vcrit --d 1e-5 --set mu=-1|mu" "collide --d 1e-5 --vn -1|--vn: '-1'" "collide --vn 1|--d: missing" \
          "collide --d 1e-5 --vn 1 --set E=abc|abc" "vcrit --d|--d: missing value" \
          "collide --d 5e-5 --vn 5000|--vn: '5000'" "vcrit --d 1e-5 --vmax 1e4|--vmax: '1e4'" \
-         "collide --d 5e-5 --vn 1e-90|--vn: '1e-90'" "collide --d 0.5 --vn 1|--d: '0.5'"; do
+         "collide --d 5e-5 --vn 1e-90 --set adhesion=none|--vn = 1e-90 is invalid" "collide --d 0.5 --vn 1|--d: '0.5'"; do
     args=${a%%|*}; want=${a#*|}
     "$SR" $args >/dev/null 2>"$WORK/err"; rc=$?
     [ $rc -eq 2 ] || fail "'$args': exit $rc, want 2"
@@ -65,7 +65,9 @@ mkdir -p "$WORK/keep" && echo old >"$WORK/keep/fit.txt"
 [ ! -e "$WORK/none" ] || fail "no-interface map left $WORK/none behind"
 ok "error checks done"
 # the slowest accepted impacts get the physical answer (issue 13, item 3): stick with adhesion
-"$SR" collide --d 5e-5 --vn 1e-60 | grep -q '^outcome: stick' || fail "collide --vn 1e-60: not a stick"
+for v in 1e-60 1e-90 1e-300; do
+    "$SR" collide --d 50e-6 --vn $v | grep -q '^outcome: stick' || fail "collide --vn $v: not a stick"
+done
 "$SR" collide --d 5e-5 --vn 1e-60 --set adhesion=none | grep -q '^e_n: 1$' || fail "collide --vn 1e-60, Hertz: not an elastic rebound"
 # binary data as a config: a named error with no raw bytes on stderr (issue 13, item 6)
 head -c 400 /dev/urandom | tr -d '\n#' | head -c 300 >"$WORK/garbage.cfg"
