@@ -79,6 +79,32 @@ void Foam::SnowWallInteraction<CloudType>::readRegime
 
 
 template<class CloudType>
+void Foam::SnowWallInteraction<CloudType>::checkPatterns
+(
+    const wordRes& sel,
+    const dictionary& dict,
+    const string& what
+) const
+{
+    const polyBoundaryMesh& bm = this->owner().mesh().boundaryMesh();
+    forAll(sel, j)
+    {
+        bool hit = false;
+        forAll(snowPatches_, si)
+        {
+            if (sel[j].match(bm[snowPatches_[si]].name())) hit = true;
+        }
+        if (!hit)
+        {
+            FatalIOErrorInFunction(dict)
+                << "snowWallInteraction: " << what.c_str() << " '" << sel[j]
+                << "' matches no snow patch" << exit(FatalIOError);
+        }
+    }
+}
+
+
+template<class CloudType>
 void Foam::SnowWallInteraction<CloudType>::applyGates
 (
     sww_model* m,
@@ -247,21 +273,10 @@ void Foam::SnowWallInteraction<CloudType>::setupWallRegimes
         applyGates(m, cd);
         context_.clear();
 
-        forAll(sel, j)
-        {
-            bool hit = false;
-            forAll(snowPatches_, si)
-            {
-                if (sel[j].match(bm[snowPatches_[si]].name())) hit = true;
-            }
-            if (!hit)
-            {
-                FatalIOErrorInFunction(ed)
-                    << "snowWallInteraction: wallRegimes entry '" << name
-                    << "': patch pattern '" << sel[j] << "' matches no snow "
-                    << "patch" << exit(FatalIOError);
-            }
-        }
+        checkPatterns
+        (
+            sel, ed, "wallRegimes entry '" + name + "': patch pattern"
+        );
         Info<< "    snowWallInteraction: wallRegimes " << name << ": patches";
         forAll(snowPatches_, si)
         {
@@ -444,20 +459,7 @@ void Foam::SnowWallInteraction<CloudType>::setup()
     {
         const dictionary& b = cd.subDict("buildUp");
         const wordRes sel(b.get<wordRes>("patches"));
-        forAll(sel, k)
-        {
-            bool hit = false;
-            forAll(snowPatches_, si)
-            {
-                if (sel[k].match(bm[snowPatches_[si]].name())) hit = true;
-            }
-            if (!hit)
-            {
-                FatalIOErrorInFunction(b)
-                    << "snowWallInteraction: buildUp patches: '" << sel[k]
-                    << "' matches no snow patch" << exit(FatalIOError);
-            }
-        }
+        checkPatterns(sel, b, "buildUp patches:");
         forAll(snowPatches_, si)
         {
             buildUpOn_[si] = sel.match(bm[snowPatches_[si]].name());
