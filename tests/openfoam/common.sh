@@ -27,6 +27,30 @@ run() {
     fi
 }
 
+# snow_cloud INJECTIONS COEFFS: in the current box case, rewrite
+# constant/kinematicCloudProperties with these injection models and this body of
+# snowWallInteractionCoeffs (both text), the box's solution and properties kept
+snow_cloud() {
+    {
+        sed -n '1,/^subModels/p' constant/kinematicCloudProperties
+        echo "{"
+        echo "    particleForces {}"
+        echo "    injectionModels"
+        echo "    {"
+        printf '%s\n' "$1"
+        echo "    }"
+        echo "    dispersionModel none; patchInteractionModel snowWallInteraction;"
+        echo "    surfaceFilmModel none; stochasticCollisionModel none; collisionModel none;"
+        echo "    snowWallInteractionCoeffs"
+        echo "    {"
+        printf '%s\n' "$2"
+        echo "    }"
+        echo "}"
+        echo "cloudFunctions {}"
+    } > constant/kinematicCloudProperties.new
+    mv constant/kinematicCloudProperties.new constant/kinematicCloudProperties
+}
+
 # series CASE START: the last data line of the snowWall time series
 series_last() { tail -n 1 "$1/postProcessing/kinematicCloud:snowWall/$2/snowWall.dat"; }
 

@@ -41,26 +41,10 @@ prep() { # CASE: the box with the four parcels, both regimes and buildUp
         rm -f constant/p?
         pos a1 0.0125 0.0075 0.0125; pos a2 0.0125 0.0275 0.0125; pos a3 0.0125 0.0475 0.0125
         pos b1 0.0375 0.0175 0.0125
-        {
-            sed -n '1,/^subModels/p' constant/kinematicCloudProperties
-            echo "{"
-            echo "    particleForces {}"
-            echo "    injectionModels"
-            echo "    {"
-            for n in a1 a2 a3 b1; do inj "$n"; done
-            echo "    }"
-            echo "    dispersionModel none; patchInteractionModel snowWallInteraction;"
-            echo "    surfaceFilmModel none; stochasticCollisionModel none; collisionModel none;"
-            echo "    snowWallInteractionCoeffs"
-            echo "    {"
+        snow_cloud "$(for n in a1 a2 a3 b1; do inj "$n"; done)" "$(
             echo "        #include \"regime.coeffs\""
             echo "        patches ( wall { type snow; } \"(top|sides)\" { type escape; } );"
-            echo "        buildUp { #include \"regime-snow.coeffs\"  coverDiameter $dc_below; }"
-            echo "    }"
-            echo "}"
-            echo "cloudFunctions {}"
-        } > constant/kinematicCloudProperties.new
-        mv constant/kinematicCloudProperties.new constant/kinematicCloudProperties
+            echo "        buildUp { #include \"regime-snow.coeffs\"  coverDiameter $dc_below; }")"
         foamDictionary -entry writeInterval -set 0.02 system/controlDict > /dev/null
         run log.blockMesh blockMesh
     )

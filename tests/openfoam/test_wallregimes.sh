@@ -68,33 +68,18 @@ prep() { # CASE [oblique]: the box with two snow walls and the parcels
         fi
         printf 'FoamFile { version 2.0; format ascii; class vectorField; object t; }\n( (0.05 0.05 0.05) )\n' \
             > constant/t
-        {
-            sed -n '1,/^subModels/p' constant/kinematicCloudProperties
-            echo "{"
-            echo "    particleForces {}"
-            echo "    injectionModels"
-            echo "    {"
+        snow_cloud "$(
             if [ "${2:-}" = oblique ]; then inj rough 1e-05 0.8 -1; else inj rough 1e-05 0 -1; fi
             inj t1 1e-05 0 1 | sed 's/"t1"/"t"/'
             inj t2 4e-05 0 1 | sed 's/"t2"/"t"/'
-            inj t3 1e-05 0.8 1 | sed 's/"t3"/"t"/'
-            echo "    }"
-            echo "    dispersionModel none; patchInteractionModel snowWallInteraction;"
-            echo "    surfaceFilmModel none; stochasticCollisionModel none; collisionModel none;"
-            echo "    snowWallInteractionCoeffs"
-            echo "    {"
+            inj t3 1e-05 0.8 1 | sed 's/"t3"/"t"/')" "$(
             echo "        #include \"regime.coeffs\""
             echo "        patches ( \"(wall|top)\" { type snow; } sides { type escape; } );"
             echo "        tangentialGate { vtMax 0.5; }"
             echo "        wallRegimes"
             echo "        {"
             echo "            roughABS { patches (\"wa.*\"); #include \"regime-rough.coeffs\" }"
-            echo "        }"
-            echo "    }"
-            echo "}"
-            echo "cloudFunctions {}"
-        } > constant/kinematicCloudProperties.new
-        mv constant/kinematicCloudProperties.new constant/kinematicCloudProperties
+            echo "        }")"
         run log.blockMesh blockMesh
     )
 }
