@@ -101,15 +101,20 @@ read -r a b < <(check_case "$tmp/partly" 0 "4 2 2 0")
 grep -q "faces covered 0, partly covered 2, of 16" "$tmp/partly/log.run" || fail "partly: covered-faces line"
 echo "partly covered: ok"
 
+# same_deposit CASE WHAT: the wall's deposit field at 0.1 equals the serial run's
+same_deposit() {
+    diff <(deposit_values "$tmp/serial/0.1/kinematicCloud:snowDeposit" wall) \
+         <(deposit_values "$1/0.1/kinematicCloud:snowDeposit" wall) > /dev/null \
+        || fail "$2 deposit field differs from the serial, uninterrupted one"
+}
+
 # 2. np 2: the same
 prep "$tmp/par"
 (cd "$tmp/par" && run log.decomposePar decomposePar \
     && run log.run mpirun -np 2 --oversubscribe icoUncoupledKinematicParcelFoam -parallel \
     && run log.reconstructPar reconstructPar)
 check_case "$tmp/par" 0 "4 2 2 0" > /dev/null
-diff <(deposit_values "$tmp/serial/0.1/kinematicCloud:snowDeposit" wall) \
-     <(deposit_values "$tmp/par/0.1/kinematicCloud:snowDeposit" wall) > /dev/null \
-    || fail "parallel deposit field differs from the serial one"
+same_deposit "$tmp/par" parallel
 echo "parallel: ok"
 
 # 3. restart at 0.02: face A holds one parcel (the state is its deposit field)
@@ -119,9 +124,7 @@ prep "$tmp/restart"
     && foamDictionary -entry endTime -set 0.1 system/controlDict > /dev/null \
     && run log.run2 icoUncoupledKinematicParcelFoam)
 check_case "$tmp/restart" 0.02 "4 2 2 0" > /dev/null
-diff <(deposit_values "$tmp/serial/0.1/kinematicCloud:snowDeposit" wall) \
-     <(deposit_values "$tmp/restart/0.1/kinematicCloud:snowDeposit" wall) > /dev/null \
-    || fail "restarted deposit field differs from the uninterrupted one"
+same_deposit "$tmp/restart" restarted
 echo "restart: ok"
 
 # 4. errors
