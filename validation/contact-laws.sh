@@ -39,10 +39,9 @@ done
 [ -x "$sr" ] || { echo "contact-laws.sh: $sr missing: run ./Allwmake" >&2; exit 1; }
 command -v gnuplot >/dev/null || { echo "contact-laws.sh: gnuplot missing (etc/setup.sh)" >&2; exit 1; }
 
-parent=$(dirname -- "$out")
-[ -d "$parent" ] || { echo "contact-laws.sh: --out: parent folder '$parent' does not exist" >&2; exit 2; }
-tmp=$(mktemp -d "$parent/.contact-laws.XXXXXX")
-trap 'rm -rf -- "$tmp"' EXIT
+# shellcheck source=outdir.sh
+. "$top/validation/outdir.sh"
+outdir_begin contact-laws "$out"
 
 laws=(elastic thornton both tn-1MPa tn-3MPa tn-10MPa tn-30MPa)
 law_sets() {
@@ -161,9 +160,6 @@ EOF
     rm -f plot.gp
 )
 rm -f "$tmp"/v_* "$tmp"/t_* "$tmp/hdr"
-chmod 755 "$tmp"
-rm -rf -- "$out"
-mv -- "$tmp" "$out"
-trap - EXIT
+outdir_commit "$out"
 echo "contact-laws.sh: vcrit.csv, vcrit.md, e_v.csv, contact-laws.png in $out"
 cat "$out/vcrit.md"

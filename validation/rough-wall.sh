@@ -51,10 +51,9 @@ for n in "$points" "$nd" "$nv"; do
     [[ "$n" =~ ^[1-9][0-9]{0,4}$ ]] || { echo "rough-wall.sh: '$n' is not a whole number in 1..99999" >&2; exit 2; }
 done
 [ -x "$sr" ] || { echo "rough-wall.sh: $sr missing: run ./Allwmake" >&2; exit 1; }
-parent=$(dirname -- "$out")
-[ -d "$parent" ] || { echo "rough-wall.sh: --out: parent folder '$parent' does not exist" >&2; exit 2; }
-tmp=$(mktemp -d "$parent/.rough-wall.XXXXXX")
-trap 'rm -rf -- "$tmp"' EXIT
+# shellcheck source=outdir.sh
+. "$top/validation/outdir.sh"
+outdir_begin rough-wall "$out"
 
 dtab=10e-6,20e-6,50e-6,100e-6
 search=(--vmin 1e-3 --vmax 50 --tol 1e-2 --scan-ratio 1.5)
@@ -115,9 +114,7 @@ rm -f "$tmp"/*.err "$tmp/err"
 mkdir -p "$tmp/logs"
 mv "$tmp"/*.txt "$tmp/map.log" "$tmp/logs/" 2>/dev/null || true
 mv "$tmp/logs/times.txt" "$tmp/times.txt"
-rm -rf -- "$out"
-mv "$tmp" "$out"
-trap - EXIT
+outdir_commit "$out"
 cat "$out/vcrit.md"
 echo
 cat "$out/geometry.md"
