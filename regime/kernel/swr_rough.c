@@ -82,7 +82,7 @@ typedef struct {
     double kda, kdp;        /* dashpot factors */
     double Is;              /* moment of inertia */
     double Gs, mu, xic;     /* scaled G*, friction, critical rolling displacement */
-    double V, T, mass;      /* scales */
+    double V, mass;         /* speed unit [m/s], particle mass [kg] */
     double margin;          /* extra search distance of new_contacts */
     double guard;           /* no new contact before the sphere has moved this far */
     double moved;           /* distance moved since the last search */
@@ -132,6 +132,14 @@ static double geometry(const rc_state *s, const double *a, const double C[3], do
         n[2] = 1.0;
     }
     return s->reach_a - D;
+}
+
+/* Horizontal distance from a sphere centre at height z within which an
+ * asperity centre (at z <= 0) lies within `reach` of it; < 0: none. */
+static double side_reach(double reach, double z)
+{
+    const double r2 = reach * reach - (z > 0.0 ? z * z : 0.0);
+    return r2 > 0.0 ? sqrt(r2) : -1.0;
 }
 
 static int find(const rc_state *s, int i, int j)
@@ -234,11 +242,8 @@ static double free_flight(const rc_state *s, const double C[3], const double v[3
         if (!isfinite(t1))
             t1 = t0 + (isfinite(tchunk) ? tchunk : 0.0);
         /* lowest centre height over the chunk sets how far sideways it reaches */
-        const double zlo = fmin(zc + v[2] * t0, zc + v[2] * t1);
-        const double hz = zlo; /* asperity centres lie at z <= 0 */
-        const double reach2 = s->reach_a * s->reach_a - (hz > 0.0 ? hz * hz : 0.0);
-        if (reach2 > 0.0) {
-            const double rh = sqrt(reach2);
+        const double rh = side_reach(s->reach_a, fmin(zc + v[2] * t0, zc + v[2] * t1));
+        if (rh > 0.0) {
             const double xa = C[0] + v[0] * t0, xb = C[0] + v[0] * t1;
             const double ya = C[1] + v[1] * t0, yb = C[1] + v[1] * t1;
             const double xlo = fmin(xa, xb) - rh, xhi = fmax(xa, xb) + rh;
@@ -293,16 +298,15 @@ static double free_flight(const rc_state *s, const double C[3], const double v[3
 /* Collect every asperity that touches now (delta >= 0) and is not a contact
  * yet, and the plane; open them. The search also notes the smallest gap to
  * any other surface within s->margin: until the sphere has moved that far no
- * new contact can form, and the next searches are skipped (new_contacts_due).
+ * new contact can form, and the next searches are skipped (the caller
+ * compares s->moved with s->guard).
  * Returns -1 when RC_MAX is exceeded. */
 static int new_contacts(rc_state *s, const double C[3], const double v[3])
 {
     const double far = s->reach_a + s->margin;
     double guard = s->margin;
-    const double hz = C[2];
-    const double reach2 = far * far - (hz > 0.0 ? hz * hz : 0.0);
-    if (reach2 > 0.0) {
-        const double rh = sqrt(reach2);
+    const double rh = side_reach(far, C[2]);
+    if (rh > 0.0) {
         int j0, j1;
         swr_wall_rows(s->w, (C[1] - rh) * s->L, (C[1] + rh) * s->L, &j0, &j1);
         for (int j = j0; j <= j1; j++) {
@@ -418,7 +422,6 @@ swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_resul
     const double L = V * T;
     const double sE = L * T * T / mass;
     s->V = V;
-    s->T = T;
     s->L = L;
     s->mass = mass;
     s->R = R_si / L;
