@@ -249,26 +249,13 @@ static int write_map_plot(swt_outset *os, const char *sfx, const sr_mapres *r, c
 static int rough_contours(const swr_model *m, const sr_mapres *r, const swt_vcrit_opts *o,
                           int threads, sr_contours *c, char *err, size_t errlen)
 {
+    /* the interface extraction reads the grid at each options' level */
     memset(c, 0, sizeof *c);
     swt_vcrit_opts o1 = *o, o9 = *o;
     o1.level = 0.1;
     o9.level = 0.9;
-    /* the grid's stick flags are p >= 0.5: the contours read mp->p instead */
-    swt_map *mp = r->mp;
-    const size_t n = (size_t)mp->g.nd * mp->g.nv;
-    unsigned char *keep = malloc(n);
-    if (!keep) { snprintf(err, errlen, "out of memory"); return -1; }
-    memcpy(keep, mp->stick, n);
-    int rc = 0;
-    for (int k = 0; k < 2 && rc == 0; k++) {
-        const swt_vcrit_opts *ok = k ? &o9 : &o1;
-        for (size_t q = 0; q < n; q++)
-            mp->stick[q] = mp->p[q] >= ok->level * (1.0 - 1e-12);
-        rc = swt_interface_extract(mp, m, ok, 1, threads, k ? &c->hi : &c->lo, err, errlen);
-    }
-    memcpy(mp->stick, keep, n);
-    free(keep);
-    return rc;
+    if (swt_interface_extract(r->mp, m, &o1, 1, threads, &c->lo, err, errlen) != 0) return -1;
+    return swt_interface_extract(r->mp, m, &o9, 1, threads, &c->hi, err, errlen);
 }
 
 static void write_contours_csv(FILE *f, const sr_mapres *r, const sr_contours *c)

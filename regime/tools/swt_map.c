@@ -114,7 +114,7 @@ static void map_row(void *p, int i)
                 return;
             }
             mp->p[k] = (float)((double)f.sticks / f.points);
-            mp->stick[k] = mp->kept[k] = f.sticks >= c->o->level * f.points;
+            mp->stick[k] = mp->kept[k] = swt_fraction_sticks(f.sticks, f.points, c->o->level);
             mp->status[k] = f.bound > 0;
             mp->e_n[k] = (float)f.e_n;
             mp->e_t[k] = 0.0f;
@@ -197,6 +197,16 @@ typedef struct {
     long *coll;        /* [nv] */
 } itf_ctx;
 
+/* Grid point k sticks: its outcome; on a rough wall its stick count (p x points,
+ * exact: p is a count over points) at the options' level. */
+static int grid_sticks(const swt_map *mp, const swt_vcrit_opts *o, size_t k)
+{
+    if (mp->points > 0)
+        return swt_fraction_sticks((int)lround((double)mp->p[k] * mp->points), mp->points,
+                                   o->level);
+    return mp->stick[k];
+}
+
 static void itf_col(void *p, int j)
 {
     itf_ctx *c = p;
@@ -204,7 +214,8 @@ static void itf_col(void *p, int j)
     const int nd = mp->g.nd, nv = mp->g.nv;
     int first = -1, changes = 0;
     for (int i = 1; i < nd; i++) {
-        int a = mp->stick[(size_t)(i - 1) * nv + j], b = mp->stick[(size_t)i * nv + j];
+        int a = grid_sticks(mp, c->o, (size_t)(i - 1) * nv + j);
+        int b = grid_sticks(mp, c->o, (size_t)i * nv + j);
         if (a != b) {
             changes++;
             if (first < 0 && a == 1 && b == 0) first = i;
@@ -213,7 +224,7 @@ static void itf_col(void *p, int j)
     c->nonmono[j] = changes > 1;
     c->dc[j] = 0.0;
     if (first < 0) {
-        int s0 = mp->stick[j];
+        int s0 = grid_sticks(mp, c->o, (size_t)j);
         c->kind[j] = changes == 0 ? (s0 ? 1 : 2) : 3;
         return;
     }

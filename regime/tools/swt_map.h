@@ -65,8 +65,9 @@ int swt_map_run(swt_map *mp, const swr_model *m, const swt_vcrit_opts *o, int th
 /* Interface: in each speed column, the first stick -> bounce change along d,
  * refined by bisection in ln d to relative width o->rtol (refine = 1) or the
  * geometric midpoint of the two grid cells (refine = 0). On a rough wall
- * "sticks" is p >= o->level, at the grid from mp->p and in the bisection from
- * the stick fraction at the same impact points: the p = level contour. */
+ * "sticks" is the stick count at o->level (swt_fraction_sticks), at the grid
+ * from mp->p and in the bisection from the same impact points: the
+ * p = level contour, for any level without a new map. */
 int swt_interface_extract(const swt_map *mp, const swr_model *m, const swt_vcrit_opts *o,
                           int refine, int threads, swt_interface *it, char *err, size_t errlen);
 void swt_interface_free(swt_interface *it);

@@ -89,7 +89,7 @@ int swt_sticks(const swr_model *m, double d, double vn, const swt_vcrit_opts *o,
     if (swr_model_rough(m)) {
         swt_fraction f;
         if (swt_stick_fraction(m, d, vn, o, &f, r, msg, msglen) != 0) return -1;
-        return f.sticks >= o->level * f.points;
+        return swt_fraction_sticks(f.sticks, f.points, o->level);
     }
     swr_impact in = { .d = d, .vn = vn, .vt = o->tan_angle > 0.0 ? vn * o->tan_angle : o->vt,
                       .omega = o->omega };

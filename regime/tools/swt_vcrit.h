@@ -73,6 +73,13 @@ int swt_outcome(const swt_vcrit_opts *o, const swr_result *res);
  * error (message copied to msg). Accumulates counters into r when not NULL. */
 int swt_sticks(const swr_model *m, double d, double vn, const swt_vcrit_opts *o,
                swt_vcrit_result *r, char *msg, size_t msglen);
+/* Rough wall: does a stick count of `sticks` of `points` reach the level?
+ * The one criterion of the grid, the contours and the v_crit search. */
+static inline int swt_fraction_sticks(int sticks, int points, double level)
+{
+    return sticks >= level * points;
+}
+
 /* Rough wall: the stick fraction at (d, vn) over o->points impact points.
  * 0, or -1 on a kernel error (message in msg). Accumulates r's counters. */
 int swt_stick_fraction(const swr_model *m, double d, double vn, const swt_vcrit_opts *o,
