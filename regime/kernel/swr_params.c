@@ -121,15 +121,41 @@ static double *field(swr_params *p, const num_key *k)
     return (double *)((char *)p + k->off);
 }
 
+static const num_key *find_in(const num_key *t, size_t n, const char *key)
+{
+    for (size_t i = 0; i < n; i++)
+        if (strcmp(t[i].key, key) == 0)
+            return &t[i];
+    return NULL;
+}
+
 static const num_key *find_num(const char *key)
 {
-    for (size_t i = 0; i < N_NUM; i++)
-        if (strcmp(num_keys[i].key, key) == 0)
-            return &num_keys[i];
-    for (size_t i = 0; i < N_WALL; i++)
-        if (strcmp(wall_keys[i].key, key) == 0)
-            return &wall_keys[i];
-    return NULL;
+    const num_key *k = find_in(num_keys, N_NUM, key);
+    return k ? k : find_in(wall_keys, N_WALL, key);
+}
+
+static double value_of(const swr_params *p, const num_key *k)
+{
+    return *(const double *)((const char *)p + k->off);
+}
+
+/* Every key of table t within its range: 0, or -1 naming the first that is not. */
+static int check_ranges(const swr_params *p, const num_key *t, size_t n, char *err, size_t errlen)
+{
+    for (size_t i = 0; i < n; i++) {
+        const double v = value_of(p, &t[i]);
+        if (!(v >= t[i].lo && v <= t[i].hi))
+            return fail(err, errlen, "%s: %g is out of range [%g, %g] (%s)", t[i].key, v, t[i].lo,
+                        t[i].hi, t[i].what);
+    }
+    return 0;
+}
+
+static void print_keys(const swr_params *p, const num_key *t, size_t n, const char *pre, FILE *stream)
+{
+    for (size_t i = 0; i < n; i++)
+        fprintf(stream, "%s%s %.17g\n", pre, t[i].key, value_of(p, &t[i]));
 }
 
 int swr_params_set(swr_params *p, const char *key, const char *value, char *err, size_t errlen)
@@ -296,12 +322,8 @@ int swr_params_load(swr_params *p, const char *path, char *err, size_t errlen)
 
 int swr_params_validate(const swr_params *p, char *err, size_t errlen)
 {
-    for (size_t i = 0; i < N_NUM; i++) {
-        const double v = *(const double *)((const char *)p + num_keys[i].off);
-        if (!(v >= num_keys[i].lo && v <= num_keys[i].hi))
-            return fail(err, errlen, "%s: %g is out of range [%g, %g] (%s)", num_keys[i].key, v,
-                        num_keys[i].lo, num_keys[i].hi, num_keys[i].what);
-    }
+    if (check_ranges(p, num_keys, N_NUM, err, errlen) != 0)
+        return -1;
     if (p->cor < SWR_COR_ELASTIC || p->cor > SWR_COR_THORNTON_NING)
         return fail(err, errlen, "cor: invalid mode %d", (int)p->cor);
     if (p->cor == SWR_COR_CONSTANT && !(p->cor_value >= COR_MIN && p->cor_value <= COR_MAX))
@@ -317,12 +339,8 @@ int swr_params_validate(const swr_params *p, char *err, size_t errlen)
         return fail(err, errlen, "wall: invalid value %d", (int)p->wall);
     if (p->lattice != SWR_LATTICE_SQUARE && p->lattice != SWR_LATTICE_HEX)
         return fail(err, errlen, "lattice: invalid value %d", (int)p->lattice);
-    for (size_t i = 0; i < N_WALL; i++) {
-        const double v = *(const double *)((const char *)p + wall_keys[i].off);
-        if (!(v >= wall_keys[i].lo && v <= wall_keys[i].hi))
-            return fail(err, errlen, "%s: %g is out of range [%g, %g] (%s)", wall_keys[i].key, v,
-                        wall_keys[i].lo, wall_keys[i].hi, wall_keys[i].what);
-    }
+    if (check_ranges(p, wall_keys, N_WALL, err, errlen) != 0)
+        return -1;
     if (p->wall == SWR_WALL_KIND_LATTICE && p->cor == SWR_COR_THORNTON_NING)
         return fail(err, errlen, "cor: thornton-ning is not available on a rough wall (wall lattice): "
                                  "its contact history is kept for one contact only; use thornton");
@@ -332,10 +350,7 @@ int swr_params_validate(const swr_params *p, char *err, size_t errlen)
 void swr_params_print(const swr_params *p, const char *prefix, FILE *stream)
 {
     const char *pre = prefix ? prefix : "";
-    for (size_t i = 0; i < N_NUM; i++) {
-        const double v = *(const double *)((const char *)p + num_keys[i].off);
-        fprintf(stream, "%s%s %.17g\n", pre, num_keys[i].key, v);
-    }
+    print_keys(p, num_keys, N_NUM, pre, stream);
     fprintf(stream, "%sadhesion %s\n", pre, p->adhesion == SWR_ADHESION_NONE ? "none" : "jkr");
     switch (p->cor) {
     case SWR_COR_ELASTIC: fprintf(stream, "%scor elastic\n", pre); break;
@@ -349,9 +364,6 @@ void swr_params_print(const swr_params *p, const char *prefix, FILE *stream)
     if (p->wall == SWR_WALL_KIND_LATTICE) {
         fprintf(stream, "%swall lattice\n%slattice %s\n", pre, pre,
                 p->lattice == SWR_LATTICE_HEX ? "hex" : "square");
-        for (size_t i = 0; i < N_WALL; i++) {
-            const double v = *(const double *)((const char *)p + wall_keys[i].off);
-            fprintf(stream, "%s%s %.17g\n", pre, wall_keys[i].key, v);
-        }
+        print_keys(p, wall_keys, N_WALL, pre, stream);
     }
 }
