@@ -60,6 +60,7 @@ ofdir="$cache/openfoam-OpenFOAM-v1912.200626"
 stamp="$cache/.ready"
 pimple=applications/solvers/incompressible/pimpleFoam
 if [ -f "$stamp" ] && [ -d "$ofdir/src/lagrangian/intermediate/lnInclude" ] \
+   && [ -d "$ofdir/src/lagrangian/spray/lnInclude" ] \
    && [ -x "$ofdir/platforms/tools/linux64Gcc/wmkdepend" ] && [ -f "$ofdir/$pimple/pEqn.H" ]; then
     say "OpenFOAM v1912 sources ready in ${ofdir#$top/}"
     exit 0
@@ -108,7 +109,7 @@ for l in OpenFOAM OSspecific/POSIX finiteVolume meshTools lagrangian/basic \
          thermophysicalModels/specie thermophysicalModels/reactionThermo \
          thermophysicalModels/SLGThermo thermophysicalModels/thermophysicalProperties \
          thermophysicalModels/radiation dynamicMesh dynamicFvMesh fileFormats surfMesh \
-         functionObjects/forces functionObjects/field; do
+         functionObjects/forces functionObjects/field lagrangian/spray; do
     [ -d "$FOAM_SRC/$l" ] || continue
     (cd "$FOAM_SRC" && wmakeLnInclude -u "$l" >/dev/null 2>&1) || die "wmakeLnInclude $l failed"
 done

@@ -1,0 +1,5 @@
+/* snowWallInteraction for basicHeterogeneousReactingCloud (reactingHeterogenousParcelFoam). */
+#include "basicHeterogeneousReactingCloud.H"
+#include "SnowWallInteraction.H"
+
+makePatchInteractionModelType(SnowWallInteraction, basicHeterogeneousReactingCloud);

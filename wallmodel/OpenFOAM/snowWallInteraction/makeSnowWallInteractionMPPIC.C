@@ -1,0 +1,5 @@
+/* snowWallInteraction for basicKinematicMPPICCloud (MPPICFoam). */
+#include "basicKinematicMPPICCloud.H"
+#include "SnowWallInteraction.H"
+
+makePatchInteractionModelType(SnowWallInteraction, basicKinematicMPPICCloud);

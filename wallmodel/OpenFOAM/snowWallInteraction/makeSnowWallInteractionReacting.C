@@ -1,0 +1,5 @@
+/* snowWallInteraction for basicReactingCloud (fireFoam). */
+#include "basicReactingCloud.H"
+#include "SnowWallInteraction.H"
+
+makePatchInteractionModelType(SnowWallInteraction, basicReactingCloud);
