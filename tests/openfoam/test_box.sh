@@ -6,9 +6,16 @@
 # same deposit), restart from t = 0.05 serial and np 2 (same final totals and
 # deposit), and the FatalErrors for a missing wallShearStress field, a missing
 # rhoAir and a bad regime key.
+# Bookkeeping: the mass balance injected = airborne + escaped + deposited closes (the
+# escapes through the open patches top/sides, counted by the cloud); with the wall an
+# escape patch every impact is an escape of the cloud's own counter; errors naming the
+# file and the line (a bad value in regime.coeffs), a patches entry matching no patch, a
+# patch without an entry; the warning for a wall taken by a catch-all escape entry.
 set -euo pipefail
 # shellcheck source=common.sh
 . "$(dirname "$0")/common.sh"
+# shellcheck source=stock.sh
+. "$(dirname "$0")/stock.sh"
 
 # expected: 7 impacts, 3 sticks, 3 bounces, 1 ripoff; 3 parcels of 10 um ice stick
 want_counts="7 3 3 1"
@@ -57,7 +64,20 @@ head -n 1 "$tmp/serial/postProcessing/kinematicCloud:snowWall/0/snowWall.dat" \
 n_end=$(grep "Current number of parcels" "$tmp/serial/log.run" | tail -1 | awk '{ print $NF }')
 n_esc=$(grep -A1 "Parcel fate: system" "$tmp/serial/log.run" | tail -1 | awk '{ print $4 }' | tr -d ,)
 [ -n "$n_esc" ] && [ "$n_end" = "$((7 - 3 - n_esc))" ] || fail "parcels left: $n_end (escaped $n_esc), stuck ones not removed?"
+check_balance "$tmp/serial/log.run" kinematicCloud
 echo "serial: ok ($(series_last "$tmp/serial" 0))"
+
+# 1a. the wall as an escape patch: all 7 parcels escape, 4 of them through the wall
+#     (a wall: OpenFOAM does not count it, the model does), 3 through top/sides
+prep "$tmp/escape"
+sed -i 's/^\( *\)wall { type snow; }/\1wall { type escape; }/' "$tmp/escape/constant/kinematicCloudProperties"
+grep -q 'wall { type escape; }' "$tmp/escape/constant/kinematicCloudProperties" || fail "escape: no wall entry"
+(cd "$tmp/escape" && run log.run icoUncoupledKinematicParcelFoam)
+[ "$(grep -A1 "Parcel fate: system" "$tmp/escape/log.run" | tail -1 | awk '{ print $4 }' | tr -d ,)" = 7 ] \
+    || fail "escape: the cloud counts $(grep -A1 "Parcel fate: system" "$tmp/escape/log.run" | tail -1) escapes, expected 7"
+grep -q "Current number of parcels *= 0$" "$tmp/escape/log.run" || fail "escape: parcels left"
+check_balance "$tmp/escape/log.run" kinematicCloud
+echo "escape: ok (7 escaped, balance closes)"
 
 # 1b. stuckParcels keep: same fates, the stuck parcels stay in the cloud (inactive)
 prep "$tmp/keep"
@@ -126,5 +146,26 @@ expect_fatal "$tmp/noRho" "is kinematic \[m2/s2\] (incompressible solver): add r
 prep "$tmp/badRegime"
 sed -i 's/^\( *vnMin *\)0.2;/\1 9;/' "$tmp/badRegime/constant/regime.coeffs"
 expect_fatal "$tmp/badRegime" "key 'vnMin': value 9 is not below vnMax 6"
+# the error names the file that holds the bad line, regime.coeffs, not the including one
+grep -q "^file: .*/badRegime/constant/regime.coeffs from line [0-9]* to line [0-9]*" "$tmp/badRegime/log.run" \
+    || fail "badRegime: the error does not name regime.coeffs: $(grep '^file:' "$tmp/badRegime/log.run")"
+prep "$tmp/badKey"
+sed -i 's/^\( *mu *\)0.05;/\1 (1 2);/' "$tmp/badKey/constant/regime.coeffs"
+line=$(grep -n '^ *mu ' "$tmp/badKey/constant/regime.coeffs" | cut -d: -f1)
+expect_fatal "$tmp/badKey" "key 'mu': expects one number, got a list of 2"
+grep -q "^file: .*/badKey/constant/regime.coeffs at line $line\." "$tmp/badKey/log.run" \
+    || fail "badKey: not regime.coeffs line $line: $(grep '^file:' "$tmp/badKey/log.run")"
+prep "$tmp/noMatch"
+sed -i 's/"(top|sides)"/"(top|sdes)"/' "$tmp/noMatch/constant/kinematicCloudProperties"
+expect_fatal "$tmp/noMatch" "no entry of patches (...) takes the patch sides (patch)"
+! grep -q "local patch interaction" "$tmp/noMatch/log.run" || fail "noMatch: OpenFOAM's localInteraction message"
+prep "$tmp/misspelt"
+sed -i 's/^\( *\)wall { type snow; }/\1wal { type snow; }/' "$tmp/misspelt/constant/kinematicCloudProperties"
+expect_fatal "$tmp/misspelt" "patches entry wal (type snow) matches no patch of the mesh"
+prep "$tmp/catchAll"
+sed -i 's/^\( *\)wall { type snow; }/\1".*" { type escape; }/' "$tmp/catchAll/constant/kinematicCloudProperties"
+(cd "$tmp/catchAll" && run log.run icoUncoupledKinematicParcelFoam)
+grep -q 'wall patch wall is taken by the entry ".\*" (type escape) of ".*constant/kinematicCloudProperties"' \
+    "$tmp/catchAll/log.run" || fail "catchAll: no warning for the wall taken by the catch-all"
 echo "errors: ok"
 echo "PASS"

@@ -6,8 +6,292 @@
 #include "fvMesh.H"
 #include "Time.H"
 #include "OSspecific.H"
+#include "patchInteractionData.H"
+#include "emptyPolyPatch.H"
+#include "processorPolyPatch.H"
+#include <fstream>
+#include <cctype>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace snowWallDetail
+{
+
+//- The files a dictionary file reads: itself and, recursively (depth 4),
+//  the files its #include / #includeIfPresent lines name (relative to the
+//  including file's folder, environment variables expanded)
+inline void dictFiles(const fileName& f, DynamicList<fileName>& out, int depth)
+{
+    if (depth > 4 || !isFile(f) || out.found(f))
+    {
+        return;
+    }
+    out.append(f);
+    std::ifstream in(f.c_str());
+    std::string line;
+    while (std::getline(in, line))
+    {
+        const std::string::size_type h = line.find_first_not_of(" \t");
+        if (h == std::string::npos || line.compare(h, 8, "#include") != 0)
+        {
+            continue;
+        }
+        if (line.compare(h, 11, "#includeEtc") == 0) continue;
+        const std::string::size_type q0 = line.find('"', h);
+        const std::string::size_type q1 =
+            q0 == std::string::npos ? q0 : line.find('"', q0 + 1);
+        if (q1 == std::string::npos) continue;
+        fileName inc(line.substr(q0 + 1, q1 - q0 - 1));
+        inc.expand();
+        if (!inc.isAbsolute()) inc = f.path()/inc;
+        dictFiles(inc, out, depth + 1);
+    }
+}
+
+//- Line n (1-based) of file f holds keyword key (as a word)
+inline bool lineHasKey(const List<std::string>& lines, label n, const std::string& key)
+{
+    if (n < 1 || n > lines.size()) return false;
+    const std::string& l = lines[n - 1];
+    for
+    (
+        std::string::size_type k = l.find(key);
+        k != std::string::npos;
+        k = l.find(key, k + 1)
+    )
+    {
+        const std::string::size_type e = k + key.size();
+        const bool before =
+            k == 0 || !(std::isalnum(static_cast<unsigned char>(l[k-1])) || l[k-1] == '_');
+        const bool after =
+            e == l.size() || !(std::isalnum(static_cast<unsigned char>(l[e])) || l[e] == '_');
+        if (before && after) return true;
+    }
+    return false;
+}
+
+//- The file dictionary d was read from: its name is <file>.<scope>..., so
+//  the longest '.'-cut prefix of the name that is a file (else the name)
+inline fileName dictFile(const dictionary& d)
+{
+    std::string n(d.name());
+    while (!n.empty())
+    {
+        if (isFile(n)) return fileName(n);
+        const std::string::size_type k = n.rfind('.');
+        if (k == std::string::npos || k == 0) break;
+        n.erase(k);
+    }
+    return fileName(d.name());
+}
+
+//- The file that holds the keys of dictionary block d. OpenFOAM keeps an
+//  entry's line number but names it after the dictionary scope, so the file
+//  of a block read from an #included regime.coeffs is found again here:
+//  among the dictionary's file and the files it #includes (the included
+//  ones first), the first whose lines hold every key of d at its line; else
+//  the first that holds key `key` at line `line`; else the dictionary's file.
+inline fileName blockFile(const dictionary& d, const std::string& key, label line)
+{
+    const fileName top(dictFile(d));
+    DynamicList<fileName> files;
+    dictFiles(top, files, 0);
+    List<List<std::string>> text(files.size());
+    forAll(files, i)
+    {
+        std::ifstream in(files[i].c_str());
+        DynamicList<std::string> lines;
+        std::string l;
+        while (std::getline(in, l)) lines.append(l);
+        text[i].transfer(lines);
+    }
+    forAllReverse(files, i)
+    {
+        bool all = false;
+        for (const entry& e : d)
+        {
+            if (e.isDict()) continue;
+            all = lineHasKey(text[i], e.startLineNumber(), e.keyword());
+            if (!all) break;
+        }
+        if (all) return files[i];
+    }
+    forAllReverse(files, i)
+    {
+        if (lineHasKey(text[i], line, key)) return files[i];
+    }
+    return top;
+}
+
+//- The file of entry e (a key of dictionary d)
+inline fileName entryFile(const dictionary& d, const entry& e)
+{
+    return blockFile(d, e.keyword(), e.startLineNumber());
+}
+
+//- The cloud is a colliding one (KinematicCollidingCloud, which reads a
+//  collisionModel): its parcels keep collision records. The model is
+//  templated on the kinematic base cloud, so the parcel type tells;
+//  overload resolution picks the first where the expression exists.
+template<class P>
+auto collidingParcel(const P* p, int) -> decltype(p->collisionRecords(), bool())
+{
+    return true;
+}
+
+template<class P>
+bool collidingParcel(const P*, long)
+{
+    return false;
+}
+
+} // End namespace snowWallDetail
+} // End namespace Foam
+
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class CloudType>
+const Foam::dictionary&
+Foam::SnowWallInteraction<CloudType>::checkedPatches
+(
+    const polyMesh& mesh,
+    const dictionary& coeffs
+)
+{
+    // patchInteractionDataList (read next) only warns about a pattern that
+    // matches nothing and blames "local patch interaction" for a patch
+    // without an entry: both are errors here, naming the file
+    const polyBoundaryMesh& bm = mesh.boundaryMesh();
+    const List<patchInteractionData> items(coeffs.lookup("patches"));
+
+    // the first entry that takes each patch (patchInteractionDataList's order)
+    labelList first(bm.size(), -1);
+    forAll(items, i)
+    {
+        const keyType& key = items[i].patchName();
+        const labelList ids(bm.indices(key));
+        if (ids.empty())
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "snowWallInteraction: patches entry " << key << " (type "
+                << items[i].interactionTypeName() << ") matches no patch of "
+                << "the mesh (misspelt?); the patches are " << bm.names()
+                << exit(FatalIOError);
+        }
+        for (const label id : ids)
+        {
+            if (first[id] < 0) first[id] = i;
+        }
+    }
+
+    DynamicList<label> missing;
+    forAll(bm, patchi)
+    {
+        const polyPatch& pp = bm[patchi];
+        if (!pp.coupled() && !isA<emptyPolyPatch>(pp) && first[patchi] < 0)
+        {
+            missing.append(patchi);
+        }
+    }
+    if (missing.size())
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "snowWallInteraction: no entry of patches (...) takes the patch";
+        for (const label patchi : missing)
+        {
+            FatalIOError
+                << ' ' << bm[patchi].name() << " (" << bm[patchi].type() << ')';
+        }
+        FatalIOError
+            << ": add an entry for each, e.g. " << bm[missing[0]].name()
+            << " { type snow; }, or a last catch-all \".*\" { type escape; }"
+            << exit(FatalIOError);
+    }
+
+    // a wall that another name's escape/none entry takes: a catch-all (or a
+    // group) swallowing a wall whose own name was left out or misspelt; and
+    // escape on a symmetry, wedge or cyclic patch, which OpenFOAM would
+    // reflect or pass on (type none)
+    forAll(bm, patchi)
+    {
+        const polyPatch& pp = bm[patchi];
+        if (first[patchi] < 0) continue;
+        const patchInteractionData& it = items[first[patchi]];
+        const word& t = it.interactionTypeName();
+        if
+        (
+            t == "escape"
+         && (pp.coupled() || polyPatch::constraintType(pp.type()))
+         && !isA<processorPolyPatch>(pp)
+        )
+        {
+            WarningInFunction
+                << "snowWallInteraction: " << pp.type() << " patch "
+                << pp.name() << " takes type escape from the entry "
+                << it.patchName() << " of " << snowWallDetail::dictFile(coeffs)
+                << ": parcels reaching it are removed instead of "
+                << (pp.coupled() ? "passed on" : "reflected")
+                << ". Give it type none (OpenFOAM's own " << pp.type()
+                << " treatment)" << endl;
+        }
+        if (!isA<wallPolyPatch>(pp)) continue;
+        if ((t == "escape" || t == "none") && it.patchName() != pp.name())
+        {
+            WarningInFunction
+                << "snowWallInteraction: wall patch " << pp.name()
+                << " is taken by the entry " << it.patchName() << " (type "
+                << t << ") of " << snowWallDetail::dictFile(coeffs)
+                << ": parcels reaching it "
+                << (t == "escape" ? "leave the cloud" : "pass through")
+                << " and no snow settles there. Name the patch in patches "
+                << "(...) before that entry if it is a wall the snow meets"
+                << endl;
+        }
+    }
+    return coeffs;
+}
+
+
+template<class CloudType>
+void Foam::SnowWallInteraction<CloudType>::noticeCollision() const
+{
+    typedef typename CloudType::parcelType parcelType;
+    if (!snowWallDetail::collidingParcel(static_cast<const parcelType*>(nullptr), 0))
+    {
+        return;
+    }
+    const dictionary& sm = this->owner().subModelProperties();
+    const word cm(sm.lookupOrDefault<word>("collisionModel", "none"));
+    if (cm == "none")
+    {
+        return;
+    }
+    word wm("?");
+    if (sm.isDict(cm + "Coeffs"))
+    {
+        wm = sm.subDict(cm + "Coeffs").lookupOrDefault<word>("wallModel", "?");
+    }
+    WarningInFunction
+        << "snowWallInteraction: the cloud's collisionModel " << cm
+        << " (wallModel " << wm << ") meets the walls first: it pushes a "
+        << "parcel back before the parcel's centre reaches a wall face, so "
+        << "snowWallInteraction sees few or no impacts and decides none of "
+        << "the others. For the snow model to decide every wall impact set  "
+        << "collisionModel none;  in " << sm.name()
+        << " (doc/wallmodel.md, \"Collision models\")" << endl;
+}
+
+
+template<class CloudType>
+void Foam::SnowWallInteraction<CloudType>::uncountEscape(scalar mass)
+{
+    this->escapedMass_ -= mass;
+    --this->escapedParcels_;
+}
+
 
 template<class CloudType>
 void Foam::SnowWallInteraction<CloudType>::check
@@ -17,12 +301,48 @@ void Foam::SnowWallInteraction<CloudType>::check
     const dictionary& dict
 ) const
 {
-    if (rc != SWW_OK)
+    if (rc == SWW_OK)
     {
-        FatalIOErrorInFunction(dict)
-            << "snowWallInteraction: " << context_.c_str() << sww_errmsg(m)
+        return;
+    }
+    // a dictionary of an #included file (regime.coeffs): name that file
+    for (const entry& e : dict)
+    {
+        if (e.isDict()) continue;
+        FatalIOError
+        (
+            FUNCTION_NAME, __FILE__, __LINE__,
+            snowWallDetail::entryFile(dict, e),
+            dict.startLineNumber(), dict.endLineNumber()
+        )   << "snowWallInteraction: " << context_.c_str() << sww_errmsg(m)
             << exit(FatalIOError);
     }
+    FatalIOErrorInFunction(dict)
+        << "snowWallInteraction: " << context_.c_str() << sww_errmsg(m)
+        << exit(FatalIOError);
+}
+
+
+template<class CloudType>
+void Foam::SnowWallInteraction<CloudType>::check
+(
+    const sww_model* m,
+    int rc,
+    const dictionary& dict,
+    const entry& e
+) const
+{
+    if (rc == SWW_OK)
+    {
+        return;
+    }
+    FatalIOError
+    (
+        FUNCTION_NAME, __FILE__, __LINE__,
+        snowWallDetail::entryFile(dict, e),
+        e.startLineNumber(), e.endLineNumber()
+    )   << "snowWallInteraction: " << context_.c_str() << sww_errmsg(m)
+        << exit(FatalIOError);
 }
 
 
@@ -67,13 +387,24 @@ void Foam::SnowWallInteraction<CloudType>::readRegime
         }
         else
         {
-            FatalIOErrorInFunction(regimeDict)
-                << "snowWallInteraction: regime key '" << e.keyword()
+            FatalIOError
+            (
+                FUNCTION_NAME, __FILE__, __LINE__,
+                snowWallDetail::entryFile(regimeDict, e),
+                e.startLineNumber(), e.endLineNumber()
+            )   << "snowWallInteraction: regime key '" << e.keyword()
                 << "': cannot read value " << is << exit(FatalIOError);
         }
-        check(m, rc, regimeDict);
+        check(m, rc, regimeDict, e);
     }
-    const std::string origin(regimeDict.name());
+    // the C core's messages start with the origin: the file of the block
+    std::string origin(regimeDict.name());
+    for (const entry& e : regimeDict)
+    {
+        if (e.isDict()) continue;
+        origin = snowWallDetail::entryFile(regimeDict, e);
+        break;
+    }
     check(m, sww_regime_commit(m, origin.c_str()), regimeDict);
 }
 
@@ -432,6 +763,13 @@ void Foam::SnowWallInteraction<CloudType>::setup()
 
     // Snow patches and their totals (cumulative, restored on restart)
     const polyBoundaryMesh& bm = this->owner().mesh().boundaryMesh();
+    openPatch_.setSize(bm.size(), false);
+    forAll(bm, patchi)
+    {
+        openPatch_[patchi] =
+            !isA<wallPolyPatch>(bm[patchi])
+         && !polyPatch::constraintType(bm[patchi].type());
+    }
     slotOfPatch_.setSize(bm.size(), -1);
     DynamicList<label> snow;
     forAll(bm, patchi)
@@ -443,8 +781,10 @@ void Foam::SnowWallInteraction<CloudType>::setup()
             {
                 WarningInFunction
                     << "snowWallInteraction: snow patch " << bm[patchi].name()
-                    << " is not of type wall: the cloud also counts every hit "
-                    << "on it as escaped" << endl;
+                    << " is of type " << bm[patchi].type() << ", not wall: "
+                    << "its impacts are decided as on a wall, but a fixed "
+                    << "flow velocity on it is not taken as the wall's"
+                    << endl;
             }
             slotOfPatch_[patchi] = snow.size();
             snow.append(patchi);
@@ -619,7 +959,7 @@ Foam::SnowWallInteraction<CloudType>::SnowWallInteraction
 )
 :
     PatchInteractionModel<CloudType>(dict, cloud, typeName),
-    patchData_(cloud.mesh(), this->coeffDict()),
+    patchData_(cloud.mesh(), checkedPatches(cloud.mesh(), this->coeffDict())),
     groupType_(),
     model_(nullptr),
     patchModels_(),
@@ -633,12 +973,14 @@ Foam::SnowWallInteraction<CloudType>::SnowWallInteraction
     tauName_("wallShearStress"),
     rhoAir_(-1),
     rnd_(1234567 + 7919*Pstream::myProcNo()),
+    openPatch_(),
     slotOfPatch_(),
     snowPatches_(),
     depositPtr_(nullptr),
     seriesPtr_(nullptr)
 {
     setup();
+    noticeCollision();
     (void)deposit();
 }
 
@@ -664,6 +1006,7 @@ Foam::SnowWallInteraction<CloudType>::SnowWallInteraction
     tauName_("wallShearStress"),
     rhoAir_(-1),
     rnd_(pim.rnd_),
+    openPatch_(),
     slotOfPatch_(),
     snowPatches_(),
     depositPtr_(nullptr),
@@ -761,14 +1104,22 @@ bool Foam::SnowWallInteraction<CloudType>::correct
 
     vector& U = p.U();
 
+    // Bookkeeping: the cloud (KinematicParcel::hitPatch) has already counted
+    // a hit on an open patch (neither wall nor constraint) as escaped. A
+    // parcel removed here without a deposit is an escape; one kept, or
+    // deposited, is not.
+    const scalar mp = p.mass()*p.nParticle();
+    const bool open = openPatch_[pp.index()];
+
     switch (groupType_[groupi])
     {
-        case 0: // none
+        case 0: // none: the cloud removes it on an open patch (counted)
         {
             return false;
         }
         case 1: // rebound, as localInteraction
         {
+            if (open) uncountEscape(mp);
             keepParticle = true;
             p.active(true);
             vector nw, Up;
@@ -786,6 +1137,7 @@ bool Foam::SnowWallInteraction<CloudType>::correct
         }
         case 2: // stick, as localInteraction
         {
+            if (open) uncountEscape(mp);
             keepParticle = true;
             p.active(false);
             U = Zero;
@@ -793,6 +1145,7 @@ bool Foam::SnowWallInteraction<CloudType>::correct
         }
         case 3: // escape
         {
+            if (!open) this->addToEscapedParcels(mp);
             keepParticle = false;
             p.active(false);
             U = Zero;
@@ -846,10 +1199,26 @@ bool Foam::SnowWallInteraction<CloudType>::correct
 
     ++nImpact_[s];
     if (out.range != 0) ++nOutside_[s];
+    // deposited or still in the cloud: not an escape
+    if (open) uncountEscape(mp);
+
+    if (debug)
+    {
+        // one line per impact (DebugSwitches { snowWallInteraction 1; })
+        Pout<< "snowWallInteraction: impact patch " << pp.name() << " face "
+            << facei << " x " << p.position() << " n " << nw << " U " << U
+            << " Uwall " << Up << " d " << in.d << " vn " << in.vn << " vt " << in.vt
+            << " u " << in.u << " -> "
+            << (
+                   out.fate == SWW_STICK ? "stick"
+                 : out.fate == SWW_BOUNCE ? "bounce" : "ripoff"
+               )
+            << endl;
+    }
 
     if (out.fate == SWW_STICK)
     {
-        const scalar dm = p.mass()*p.nParticle();
+        const scalar dm = mp;
         ++nStick_[s];
         massDeposit_[s] += dm;
         const scalar area = this->owner().mesh().magSf().boundaryField()
