@@ -6,9 +6,30 @@
 # ends normally, the deposit field and the time series are written.
 # (The case writes once and stops, stopAt writeNow; its 6 mm parcels meet the walls
 # through the pairCollision wall model, so no parcel centre reaches a wall face.)
+# Also: the library registers the model for every cloud type of the stock v1912 Lagrangian
+# solvers (one typeName per parcel type; the stock runs of each family are in
+# test_stock_{mppic,reacting,colliding,spray}.sh; fireFoam's basicReactingCloud is the one
+# no stock case runs with an active cloud, so its registration is checked here only).
 set -euo pipefail
 # shellcheck source=common.sh
 . "$(dirname "$0")/common.sh"
+if command -v nm > /dev/null; then
+    syms=$(nm -DC "$lib" | grep 'Foam::SnowWallInteraction<.*>::typeName$' || true)
+    for parcel in \
+        'KinematicParcel<Foam::particle>' \
+        'CollidingParcel<Foam::KinematicParcel<Foam::particle> >' \
+        'MPPICParcel<Foam::KinematicParcel<Foam::particle> >' \
+        'ThermoParcel<Foam::KinematicParcel<Foam::particle> >' \
+        'ReactingParcel<Foam::ThermoParcel<Foam::KinematicParcel<Foam::particle> > >' \
+        'ReactingMultiphaseParcel<Foam::ReactingParcel<Foam::ThermoParcel<Foam::KinematicParcel<Foam::particle> > > >' \
+        'ReactingHeterogeneousParcel<Foam::ReactingParcel<Foam::ThermoParcel<Foam::KinematicParcel<Foam::particle> > > >' \
+        'SprayParcel<Foam::ReactingParcel<Foam::ThermoParcel<Foam::KinematicParcel<Foam::particle> > > >'; do
+        grep -qF "SnowWallInteraction<Foam::KinematicCloud<Foam::Cloud<Foam::$parcel > > >::typeName" <<< "$syms" \
+            || fail "libsnowWallInteraction.so registers no model for the parcel type $parcel"
+    done
+    [ "$(grep -c . <<< "$syms")" = 8 ] || fail "expected 8 registrations, found: $syms"
+    echo "registered for 8 parcel types (kinematic, colliding, MPPIC, thermo, reacting, reacting-multiphase and coal, heterogeneous reacting, spray)"
+fi
 stock=/usr/share/doc/openfoam-examples/examples/IO/fileHandler
 [ -d "$stock" ] || { echo "SKIP: $stock not installed (openfoam-examples)"; exit 77; }
 
