@@ -138,3 +138,18 @@ same_patch_field() {
             for (i = 1; i <= n1; i++) if (!rel(a[i], b[i])) exit 1
         }' <(patch_values "$1" "$3") <(patch_values "$2" "$3")
 }
+
+# run_np2 CASE SOLVER "N": decomposePar into 2 with the simple method, subdomains N (e.g.
+# "(1 1 2)"; the stock decomposeParDicts ask for scotch, a dummy in Debian's build), mpirun
+# -np 2, reconstructPar of the last time; logs log.decomposePar, log.run, log.reconstructPar
+run_np2() {
+    cat > "$1/system/decomposeParDict" <<EOD
+FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }
+numberOfSubdomains 2;
+method simple;
+simpleCoeffs { n $3; delta 0.001; }
+EOD
+    (cd "$1" && run log.decomposePar decomposePar \
+        && run log.run mpirun -np 2 --oversubscribe "$2" -parallel \
+        && run log.reconstructPar reconstructPar -latestTime)
+}

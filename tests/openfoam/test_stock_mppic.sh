@@ -50,15 +50,7 @@ check_balance "$tmp/snow/log.run" kinematicCloud
 check_balance "$tmp/stock/log.run" kinematicCloud
 
 # 3. np 2
-cat > "$tmp/par/system/decomposeParDict" <<'EOF'
-FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }
-numberOfSubdomains 2;
-method simple;
-simpleCoeffs { n (1 1 2); delta 0.001; }
-EOF
-(cd "$tmp/par" && run log.decomposePar decomposePar \
-    && run log.run mpirun -np 2 --oversubscribe MPPICFoam -parallel \
-    && run log.reconstructPar reconstructPar -latestTime)
+run_np2 "$tmp/par" MPPICFoam "(1 1 2)"
 [ "$(snow_counts "$tmp/par/log.run" bottom)" = "$ni $ns $nb $nr" ] \
     || fail "np 2: bottom $(snow_counts "$tmp/par/log.run" bottom), serial $ni $ns $nb $nr"
 s=$(balance "$tmp/snow/log.run" kinematicCloud | cut -d' ' -f4)

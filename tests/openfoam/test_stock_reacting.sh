@@ -77,16 +77,8 @@ cloud_block "$tmp/snow/log.run" coalCloud1 | grep -q "snowWall: patch bottom: im
 cloud_block "$tmp/snow/log.run" limestoneCloud1 | grep -q "snowWall: patch bottom: impacts [1-9]" \
     || fail "limestoneCloud1: no impact on bottom"
 
-# np 2 (the stock decomposeParDict asks for scotch; Debian's is a dummy: simple)
-cat > "$tmp/par/system/decomposeParDict" <<'EOF'
-FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }
-numberOfSubdomains 2;
-method simple;
-simpleCoeffs { n (2 1 1); delta 0.001; }
-EOF
-(cd "$tmp/par" && run log.decomposePar decomposePar \
-    && run log.run mpirun -np 2 --oversubscribe coalChemistryFoam -parallel \
-    && run log.reconstructPar reconstructPar -latestTime)
+# np 2
+run_np2 "$tmp/par" coalChemistryFoam "(2 1 1)"
 for c in $clouds; do
     s=$(cloud_block "$tmp/snow/log.run" "$c" | grep "snowWall: patch" | sed 's/ deposited mass.*//')
     p=$(cloud_block "$tmp/par/log.run" "$c" | grep "snowWall: patch" | sed 's/ deposited mass.*//')

@@ -120,15 +120,22 @@ inline fileName blockFile(const dictionary& d, const std::string& key, label lin
     }
     forAllReverse(files, i)
     {
-        if (lineHasKey(text[i], line, key)) return files[i];
+        if (!key.empty() && lineHasKey(text[i], line, key)) return files[i];
     }
     return top;
 }
 
-//- The file of entry e (a key of dictionary d)
-inline fileName entryFile(const dictionary& d, const entry& e)
+//- FatalIOError located at entry e of dictionary d (or at d itself when e
+//  is null): the file that holds the lines (blockFile) and their numbers
+inline OSstream& fatalAt(const dictionary& d, const entry* e)
 {
-    return blockFile(d, e.keyword(), e.startLineNumber());
+    const label l0 = e ? e->startLineNumber() : d.startLineNumber();
+    const label l1 = e ? e->endLineNumber() : d.endLineNumber();
+    return FatalIOError
+    (
+        "snowWallInteraction", __FILE__, __LINE__,
+        blockFile(d, e ? std::string(e->keyword()) : std::string(), l0), l0, l1
+    );
 }
 
 //- The cloud is a colliding one (KinematicCollidingCloud, which reads a
@@ -298,51 +305,16 @@ void Foam::SnowWallInteraction<CloudType>::check
 (
     const sww_model* m,
     int rc,
-    const dictionary& dict
+    const dictionary& dict,
+    const entry* e
 ) const
 {
-    if (rc == SWW_OK)
+    if (rc != SWW_OK)
     {
-        return;
-    }
-    // a dictionary of an #included file (regime.coeffs): name that file
-    for (const entry& e : dict)
-    {
-        if (e.isDict()) continue;
-        FatalIOError
-        (
-            FUNCTION_NAME, __FILE__, __LINE__,
-            snowWallDetail::entryFile(dict, e),
-            dict.startLineNumber(), dict.endLineNumber()
-        )   << "snowWallInteraction: " << context_.c_str() << sww_errmsg(m)
+        snowWallDetail::fatalAt(dict, e)
+            << "snowWallInteraction: " << context_.c_str() << sww_errmsg(m)
             << exit(FatalIOError);
     }
-    FatalIOErrorInFunction(dict)
-        << "snowWallInteraction: " << context_.c_str() << sww_errmsg(m)
-        << exit(FatalIOError);
-}
-
-
-template<class CloudType>
-void Foam::SnowWallInteraction<CloudType>::check
-(
-    const sww_model* m,
-    int rc,
-    const dictionary& dict,
-    const entry& e
-) const
-{
-    if (rc == SWW_OK)
-    {
-        return;
-    }
-    FatalIOError
-    (
-        FUNCTION_NAME, __FILE__, __LINE__,
-        snowWallDetail::entryFile(dict, e),
-        e.startLineNumber(), e.endLineNumber()
-    )   << "snowWallInteraction: " << context_.c_str() << sww_errmsg(m)
-        << exit(FatalIOError);
 }
 
 
@@ -387,24 +359,17 @@ void Foam::SnowWallInteraction<CloudType>::readRegime
         }
         else
         {
-            FatalIOError
-            (
-                FUNCTION_NAME, __FILE__, __LINE__,
-                snowWallDetail::entryFile(regimeDict, e),
-                e.startLineNumber(), e.endLineNumber()
-            )   << "snowWallInteraction: regime key '" << e.keyword()
+            snowWallDetail::fatalAt(regimeDict, &e)
+                << "snowWallInteraction: regime key '" << e.keyword()
                 << "': cannot read value " << is << exit(FatalIOError);
         }
-        check(m, rc, regimeDict, e);
+        check(m, rc, regimeDict, &e);
     }
     // the C core's messages start with the origin: the file of the block
-    std::string origin(regimeDict.name());
-    for (const entry& e : regimeDict)
-    {
-        if (e.isDict()) continue;
-        origin = snowWallDetail::entryFile(regimeDict, e);
-        break;
-    }
+    const std::string origin
+    (
+        snowWallDetail::blockFile(regimeDict, std::string(), -1)
+    );
     check(m, sww_regime_commit(m, origin.c_str()), regimeDict);
 }
 
@@ -1218,12 +1183,11 @@ bool Foam::SnowWallInteraction<CloudType>::correct
 
     if (out.fate == SWW_STICK)
     {
-        const scalar dm = mp;
         ++nStick_[s];
-        massDeposit_[s] += dm;
+        massDeposit_[s] += mp;
         const scalar area = this->owner().mesh().magSf().boundaryField()
             [pp.index()][facei];
-        deposit().boundaryFieldRef()[pp.index()][facei] += dm/area;
+        deposit().boundaryFieldRef()[pp.index()][facei] += mp/area;
         keepParticle = !removeStuck_;
         p.active(false);
         U = Zero;
