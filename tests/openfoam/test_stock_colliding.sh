@@ -73,6 +73,7 @@ if [ -x /usr/bin/icoUncoupledKinematicParcelDyMFoam ] && command -v m4 > /dev/nu
         n=$((n + ni))
     done
     [ "$n" -gt 0 ] || fail "mixer: no impact"
+    [ -f "$m/0.01/kinematicCloud:snowDeposit" ] || fail "mixer: no deposit field"
     # impact lines of parcels at rest: x, n, U, Uwall, vn
     res=$(grep "^snowWallInteraction: impact patch" "$m/log.run" | tr '()' '  ' | awk -v wr="$wr" -v ws="$ws" '
         { for (i = 1; i <= NF; i++) k[$i] = i

@@ -50,7 +50,7 @@ inline void dictFiles(const fileName& f, DynamicList<fileName>& out, int depth)
     }
 }
 
-//- Line n (1-based) of file f holds keyword key (as a word)
+//- Line n (1-based) of a file's lines holds keyword key (as a word)
 inline bool lineHasKey(const List<std::string>& lines, label n, const std::string& key)
 {
     if (n < 1 || n > lines.size()) return false;
