@@ -57,6 +57,8 @@ run log.blockMesh blockMesh
 run log.run icoUncoupledKinematicParcelFoam
 grep -q "snowWallInteraction: regime 'test fixture" log.run || fail "model not selected"
 grep -q "snowWall: patch walls: impacts" log.run || fail "no per-patch summary"
+grep -q "snowWallInteraction: the cloud's collisionModel pairCollision (wallModel wallLocalSpringSliderDashpot) meets the walls first" log.run \
+    || fail "no collision-model notice"
 t=$(foamListTimes -latestTime | tail -1)
 [ -f "$t/kinematicCloud:snowDeposit" ] || fail "no deposit field in $t"
 head -n 1 "postProcessing/kinematicCloud:snowWall/0/snowWall.dat" | grep -q "frontAndBack:depositedMass" \
