@@ -8,7 +8,9 @@
 #    impacts, sticks and bounces on bottom; the deposit field is written;
 # 2. the mass balance injected = airborne + escaped + deposited closes to 1e-6;
 # 3. serial equals mpirun -np 2 (counts, deposited mass, deposit field) with the
-#    stochastic isotropy model off (each processor draws its own random numbers).
+#    stochastic isotropy model off (each processor draws its own random numbers);
+# 4. injectionChannel (the case of issue 14 that stopped at start-up): the model loads
+#    and its first time step ends.
 # (The stock MPPICFoam cases injectionChannel and cyclone diverge within 5 time steps
 # with Debian's v1912 build, with or without this model: doc/wallmodel.md.)
 set -euo pipefail
@@ -62,4 +64,18 @@ same_patch_field "$tmp/snow/0.1/kinematicCloud:snowDeposit" \
     "$tmp/par/0.1/kinematicCloud:snowDeposit" bottom \
     || fail "np 2: deposit field differs from the serial one"
 echo "np 2: ok (bottom $ni/$ns/$nb/$nr, deposited $p kg)"
+
+# 4. injectionChannel, the case that used to stop with "Unknown patchInteractionModel
+#    type snowWallInteraction": the model loads and the first time step (2 x 139 parcels
+#    injected) ends. One step only: Debian's MPPICFoam diverges on this mesh from the
+#    second step on, with any patch interaction model (doc/wallmodel.md).
+stock_copy lagrangian/MPPICFoam/injectionChannel "$tmp/channel"
+(cd "$tmp/channel" && run log.blockMesh blockMesh)
+shorten "$tmp/channel" "$(foamDictionary -entry deltaT -value "$tmp/channel/system/controlDict")"
+dropin "$tmp/channel" kinematicCloudProperties 'walls { type snow; }' '".*" { type none; }'
+(cd "$tmp/channel" && run log.run MPPICFoam)
+grep -q "snowWallInteraction: regime 'test fixture" "$tmp/channel/log.run" || fail "injectionChannel: model not selected"
+grep -q "Current number of parcels *= [1-9]" "$tmp/channel/log.run" || fail "injectionChannel: no parcel injected"
+check_balance "$tmp/channel/log.run" kinematicCloud
+echo "injectionChannel: model loaded, first step ended"
 echo PASS
