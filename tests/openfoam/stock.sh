@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # stock.sh - sourced (after common.sh) by the tests that run Debian's stock Lagrangian
 # tutorials with snowWallInteraction (test_stock_*.sh).
 #
