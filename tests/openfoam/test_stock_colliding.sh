@@ -32,7 +32,7 @@ cp -r "$tmp/col" "$tmp/nocol"
 (cd "$tmp/col" && run log.run DPMFoam)
 [ "$(grep -c "snowWallInteraction: the cloud's collisionModel pairCollision (wallModel wallSpringSliderDashpot) meets the walls first" "$tmp/col/log.run")" = 1 ] \
     || fail "Goldschmidt: no (or more than one) collision-model notice"
-grep -q "set  collisionModel none;  in .*kinematicCloudProperties" "$tmp/col/log.run" \
+grep -q 'set  collisionModel none;  in subModels of ".*/constant/kinematicCloudProperties"' "$tmp/col/log.run" \
     || fail "Goldschmidt: the notice does not say the line to change"
 [ "$(snow_counts "$tmp/col/log.run" bottom)" = "0 0 0 0" ] || fail "Goldschmidt with collisions: impacts"
 

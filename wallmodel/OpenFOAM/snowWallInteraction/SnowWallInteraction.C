@@ -287,7 +287,8 @@ void Foam::SnowWallInteraction<CloudType>::noticeCollision() const
         << "parcel back before the parcel's centre reaches a wall face, so "
         << "snowWallInteraction sees few or no impacts and decides none of "
         << "the others. For the snow model to decide every wall impact set  "
-        << "collisionModel none;  in " << sm.name()
+        << "collisionModel none;  in subModels of "
+        << snowWallDetail::dictFile(sm)
         << " (doc/wallmodel.md, \"Collision models\")" << endl;
 }
 
