@@ -105,10 +105,19 @@ check_balance() {
     echo "$2 mass balance (injected airborne escaped deposited transferred relErr): $b"
 }
 
-# snow_counts LOG PATCH: "impacts sticks bounces ripoffs" of PATCH in the last summary
+# snow_counts LOG PATCH [CLOUD]: "impacts sticks bounces ripoffs" of PATCH in the last
+# summary (of CLOUD's last report, when the log has several clouds)
 snow_counts() {
-    grep "snowWall: patch $2: impacts" "$1" | tail -n 1 \
+    if [ -n "${3:-}" ]; then cloud_block "$1" "$3"; else cat "$1"; fi \
+        | grep "snowWall: patch $2: impacts" | tail -n 1 \
         | sed 's/.*impacts \([0-9]*\), sticks \([0-9]*\), bounces \([0-9]*\), ripoffs \([0-9]*\).*/\1 \2 \3 \4/'
+}
+
+# escaped_parcels LOG CLOUD: the escaped parcels of the cloud's "Parcel fate: system" line
+# in its last report
+escaped_parcels() {
+    cloud_block "$1" "$2" | awk '/Parcel fate: system/ { s = 1; next }
+        s && /- escape/ { split($0, a, "="); split(a[2], b, ","); print b[1] + 0; exit }'
 }
 
 # patch_values FILE PATCH: the face values of PATCH's value entry, one per line ("uniform X"

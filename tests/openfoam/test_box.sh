@@ -62,7 +62,7 @@ head -n 1 "$tmp/serial/postProcessing/kinematicCloud:snowWall/0/snowWall.dat" \
     || fail "time series header"
 # stuck parcels left the tracking: 7 injected - 3 stuck - escaped ones remain
 n_end=$(grep "Current number of parcels" "$tmp/serial/log.run" | tail -1 | awk '{ print $NF }')
-n_esc=$(grep -A1 "Parcel fate: system" "$tmp/serial/log.run" | tail -1 | awk '{ print $4 }' | tr -d ,)
+n_esc=$(escaped_parcels "$tmp/serial/log.run" kinematicCloud)
 [ -n "$n_esc" ] && [ "$n_end" = "$((7 - 3 - n_esc))" ] || fail "parcels left: $n_end (escaped $n_esc), stuck ones not removed?"
 check_balance "$tmp/serial/log.run" kinematicCloud
 echo "serial: ok ($(series_last "$tmp/serial" 0))"
@@ -73,8 +73,8 @@ prep "$tmp/escape"
 sed -i 's/^\( *\)wall { type snow; }/\1wall { type escape; }/' "$tmp/escape/constant/kinematicCloudProperties"
 grep -q 'wall { type escape; }' "$tmp/escape/constant/kinematicCloudProperties" || fail "escape: no wall entry"
 (cd "$tmp/escape" && run log.run icoUncoupledKinematicParcelFoam)
-[ "$(grep -A1 "Parcel fate: system" "$tmp/escape/log.run" | tail -1 | awk '{ print $4 }' | tr -d ,)" = 7 ] \
-    || fail "escape: the cloud counts $(grep -A1 "Parcel fate: system" "$tmp/escape/log.run" | tail -1) escapes, expected 7"
+[ "$(escaped_parcels "$tmp/escape/log.run" kinematicCloud)" = 7 ] \
+    || fail "escape: the cloud counts $(escaped_parcels "$tmp/escape/log.run" kinematicCloud) escapes, expected 7"
 grep -q "Current number of parcels *= 0$" "$tmp/escape/log.run" || fail "escape: parcels left"
 check_balance "$tmp/escape/log.run" kinematicCloud
 echo "escape: ok (7 escaped, balance closes)"

@@ -47,10 +47,6 @@ grep -q "snowWallInteraction: regime 'test fixture" "$tmp/snow/log.run" || fail 
 [ -f "$tmp/snow/0.01/coalCloud1:snowDeposit" ] && [ -f "$tmp/snow/0.01/limestoneCloud1:snowDeposit" ] \
     || fail "no deposit fields in 0.01"
 
-# the escaped parcels of a cloud, from its last report
-escaped() { cloud_block "$1" "$2" | awk '/Parcel fate: system/ { s = 1; next }
-    s && /- escape/ { split($0, a, "="); split(a[2], b, ","); print b[1] + 0; exit }'; }
-
 for c in $clouds; do
     for p in top bottom walls; do
         sh=$(hits "$tmp/stock" "$c" "$p"); nh=$(hits "$tmp/snow" "$c" "$p")
@@ -59,13 +55,12 @@ for c in $clouds; do
         fi
         if [ "$p" = walls ]; then
             # every hit on the escape wall is an escaped parcel of the cloud's own counter
-            [ "$(escaped "$tmp/snow/log.run" "$c")" = "$nh" ] \
-                || fail "$c: $nh hits on walls but $(escaped "$tmp/snow/log.run" "$c") escaped"
+            [ "$(escaped_parcels "$tmp/snow/log.run" "$c")" = "$nh" ] \
+                || fail "$c: $nh hits on walls but $(escaped_parcels "$tmp/snow/log.run" "$c") escaped"
             echo "$c walls: stock hits $sh; snow hits $nh = escaped"
         else
             # the two clouds print their summaries in turn: take this cloud's
-            ni=$(cloud_block "$tmp/snow/log.run" "$c" | grep "snowWall: patch $p: impacts" \
-                | sed 's/.*impacts \([0-9]*\),.*/\1/')
+            ni=$(snow_counts "$tmp/snow/log.run" "$p" "$c" | cut -d' ' -f1)
             [ "$ni" = "$nh" ] || fail "$c $p: $ni impacts but $nh wall hits"
             echo "$c $p: stock hits $sh; snow impacts $ni = hits $nh"
         fi

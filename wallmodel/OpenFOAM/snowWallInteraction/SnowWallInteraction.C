@@ -214,7 +214,7 @@ Foam::SnowWallInteraction<CloudType>::checkedPatches
         }
         FatalIOError
             << ": add an entry for each, e.g. " << bm[missing[0]].name()
-            << " { type snow; }, or a last catch-all \".*\" { type escape; }"
+            << " { type snow; }, or a last catch-all \".*\" { type none; }"
             << exit(FatalIOError);
     }
 
@@ -366,11 +366,9 @@ void Foam::SnowWallInteraction<CloudType>::readRegime
         }
         check(m, rc, regimeDict, &e);
     }
-    // the C core's messages start with the origin: the file of the block
-    const std::string origin
-    (
-        snowWallDetail::blockFile(regimeDict, std::string(), -1)
-    );
+    // the C core's message starts with the origin, the dictionary's keyword;
+    // check() adds the file and lines (read only on an error)
+    const std::string origin(regimeDict.dictName());
     check(m, sww_regime_commit(m, origin.c_str()), regimeDict);
 }
 
@@ -730,16 +728,13 @@ void Foam::SnowWallInteraction<CloudType>::setup()
     // Snow patches and their totals (cumulative, restored on restart)
     const polyBoundaryMesh& bm = this->owner().mesh().boundaryMesh();
     openPatch_.setSize(bm.size(), false);
+    slotOfPatch_.setSize(bm.size(), -1);
+    DynamicList<label> snow;
     forAll(bm, patchi)
     {
         openPatch_[patchi] =
             !isA<wallPolyPatch>(bm[patchi])
          && !polyPatch::constraintType(bm[patchi].type());
-    }
-    slotOfPatch_.setSize(bm.size(), -1);
-    DynamicList<label> snow;
-    forAll(bm, patchi)
-    {
         const label groupi = patchData_.applyToPatch(patchi);
         if (groupi >= 0 && groupType_[groupi] == 4)
         {
