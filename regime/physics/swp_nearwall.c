@@ -1,0 +1,121 @@
+/* swp_nearwall.c - the turbulent wall layer in wall units (see swp_nearwall.h). */
+#include "swp_nearwall.h"
+
+#include <math.h>
+
+/* wall-normal rms fit v'+ = A y^2 / (1 + B y^P) (Guha 1997) */
+#define V_A 0.005
+#define V_B 0.002923
+#define V_P 2.128
+
+#define WOOD_PLATEAU 0.13
+#define KBOLTZMANN 1.380649e-23
+
+static int bad(double yplus)
+{
+    return !(yplus >= 0.0) || isinf(yplus);
+}
+
+double swp_urms_plus(double yplus)
+{
+    if (bad(yplus))
+        return NAN;
+    return 0.4 * yplus / (1.0 + 0.0239 * pow(yplus, 1.496));
+}
+
+double swp_vrms_plus(double yplus)
+{
+    if (bad(yplus))
+        return NAN;
+    return V_A * yplus * yplus / (1.0 + V_B * pow(yplus, V_P));
+}
+
+double swp_dvrms_plus(double yplus)
+{
+    if (bad(yplus))
+        return NAN;
+    const double y = yplus;
+    const double den = 1.0 + V_B * pow(y, V_P);
+    const double dden = V_B * V_P * pow(y, V_P - 1.0);
+    return V_A * (2.0 * y * den - y * y * dden) / (den * den);
+}
+
+double swp_wrms_plus(double yplus)
+{
+    if (bad(yplus))
+        return NAN;
+    return 0.19 * yplus / (1.0 + 0.0361 * pow(yplus, 1.21));
+}
+
+double swp_tl_plus(double yplus)
+{
+    if (bad(yplus))
+        return NAN;
+    if (yplus < 5.0)
+        return 10.0;
+    const double y = yplus < 200.0 ? yplus : 200.0;
+    return 7.122 + 0.5731 * y - 0.00129 * y * y;
+}
+
+double swp_uplus(double yplus)
+{
+    if (bad(yplus))
+        return NAN;
+    const double y = yplus;
+    return log1p(SWP_KARMAN * y) / SWP_KARMAN
+        + 7.8 * (1.0 - exp(-y / 11.0) - (y / 11.0) * exp(-y / 3.0));
+}
+
+double swp_duplus(double yplus)
+{
+    if (bad(yplus))
+        return NAN;
+    const double y = yplus;
+    return 1.0 / (1.0 + SWP_KARMAN * y)
+        + 7.8 * (exp(-y / 11.0) / 11.0 - exp(-y / 3.0) / 11.0 + y / 33.0 * exp(-y / 3.0));
+}
+
+static int positive(double x)
+{
+    return x > 0.0 && isfinite(x);
+}
+
+double swp_tau_p(double rho_p, double d, double mu, double re)
+{
+    if (!positive(rho_p) || !positive(d) || !positive(mu) || !(re >= 0.0) || isinf(re))
+        return NAN;
+    return rho_p * d * d / (18.0 * mu) / (1.0 + 0.15 * pow(re, 0.687));
+}
+
+double swp_tau_plus(double rho_p, double d, double mu, double nu, double u_tau)
+{
+    if (!positive(nu) || !positive(u_tau))
+        return NAN;
+    return swp_tau_p(rho_p, d, mu, 0.0) * u_tau * u_tau / nu;
+}
+
+double swp_d_of_tau_plus(double tau_plus, double rho_p, double mu, double nu, double u_tau)
+{
+    if (!positive(tau_plus) || !positive(rho_p) || !positive(mu) || !positive(nu)
+        || !positive(u_tau))
+        return NAN;
+    return sqrt(18.0 * mu * tau_plus * nu / (rho_p * u_tau * u_tau));
+}
+
+double swp_wood_vplus(double tau_plus, double sc)
+{
+    if (!(tau_plus >= 0.0))
+        return NAN;
+    const double turb = 4.5e-4 * tau_plus * tau_plus;
+    const double brown = (sc > 0.0 && isfinite(sc)) ? 0.057 * pow(sc, -2.0 / 3.0) : 0.0;
+    return brown + (turb < WOOD_PLATEAU ? turb : WOOD_PLATEAU);
+}
+
+double swp_brownian_diffusivity(double d, double T, double mu, double lambda)
+{
+    if (!positive(d) || !positive(T) || !positive(mu) || !positive(lambda))
+        return NAN;
+    const double kn = 2.0 * lambda / d;
+    const double cc = 1.0 + kn * (1.257 + 0.4 * exp(-1.1 / kn));
+    return KBOLTZMANN * T * cc / (3.0 * M_PI * mu * d);
+}
