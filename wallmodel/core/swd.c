@@ -1,0 +1,335 @@
+/* swd.c - near-wall particle dispersion (see swd.h). */
+#include "swd.h"
+#include "swp_nearwall.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+enum { K_LAYER, K_BLEND, K_CT, K_CMU, K_N };
+
+static const struct {
+    const char *name;
+    double def, lo, hi;   /* default and accepted range [lo, hi]        */
+    int lo_open;          /* 1: lo itself is refused                    */
+} keys[K_N] = {
+    { "layerYPlus", 100.0, 5.0, 200.0, 0 },
+    { "blendYPlus", 150.0, 5.0, 400.0, 1 },
+    { "CT", 0.3, 0.0, 2.0, 1 },
+    { "Cmu", 0.09, 0.0, 1.0, 0 },
+};
+
+#define SWD_MAX_TABLE 4096
+
+struct swd_model {
+    double v[K_N];
+    double cmu4;   /* Cmu^(1/4) */
+    /* sublayer closure: nodes ln tau+ and Vs+ (n = 0: off) */
+    size_t cl_n;
+    double cl_ysub;
+    double *cl_lnt, *cl_vs;
+    int ready;
+    char err[256];
+};
+
+static int fail(swd_model *m, int code, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(m->err, sizeof m->err, fmt, ap);
+    va_end(ap);
+    return code;
+}
+
+swd_model *swd_alloc(void)
+{
+    swd_model *m = calloc(1, sizeof *m);
+    if (!m)
+        return NULL;
+    for (int i = 0; i < K_N; i++)
+        m->v[i] = keys[i].def;
+    swd_commit(m);
+    return m;
+}
+
+void swd_free(swd_model *m)
+{
+    if (m)
+        swd_closure_off(m);
+    free(m);
+}
+
+const char *swd_errmsg(const swd_model *m)
+{
+    return m ? m->err : "no model";
+}
+
+const char *swd_key(size_t i)
+{
+    return i < K_N ? keys[i].name : NULL;
+}
+
+static int key_index(const char *key)
+{
+    for (int i = 0; key && i < K_N; i++)
+        if (!strcmp(key, keys[i].name))
+            return i;
+    return -1;
+}
+
+int swd_set(swd_model *m, const char *key, double v)
+{
+    const int i = key_index(key);
+    if (i < 0)
+        return fail(m, SWD_EINVAL,
+                    "near-wall dispersion: unknown key '%s' (known: layerYPlus, blendYPlus, CT, Cmu)",
+                    key ? key : "(null)");
+    const int low_ok = keys[i].lo_open ? v > keys[i].lo : v >= keys[i].lo;
+    if (!(low_ok && v <= keys[i].hi))
+        return fail(m, SWD_EINVAL, "near-wall dispersion: %s = %g is outside %s%g, %g]", key, v,
+                    keys[i].lo_open ? "(" : "[", keys[i].lo, keys[i].hi);
+    m->v[i] = v;
+    m->ready = 0;
+    m->err[0] = '\0';
+    return SWD_OK;
+}
+
+double swd_get(const swd_model *m, const char *key)
+{
+    const int i = key_index(key);
+    return i < 0 ? NAN : m->v[i];
+}
+
+int swd_commit(swd_model *m)
+{
+    if (m->cl_n && m->cl_ysub > m->v[K_LAYER])
+        return fail(m, SWD_EINVAL,
+                    "near-wall dispersion: the closure's sublayerYPlus = %g is above layerYPlus = %g",
+                    m->cl_ysub, m->v[K_LAYER]);
+    if (!(m->v[K_BLEND] > m->v[K_LAYER]))
+        return fail(m, SWD_EINVAL,
+                    "near-wall dispersion: blendYPlus = %g must be above layerYPlus = %g",
+                    m->v[K_BLEND], m->v[K_LAYER]);
+    m->cmu4 = pow(m->v[K_CMU], 0.25);
+    m->ready = 1;
+    m->err[0] = '\0';
+    return SWD_OK;
+}
+
+int swd_ready(const swd_model *m)
+{
+    return m && m->ready;
+}
+
+void swd_describe(const swd_model *m, char *buf, size_t n)
+{
+    if (!n)
+        return;
+    snprintf(buf, n,
+             "continuous random walk: wall-layer statistics (v' Guha 1997, u', w', T_L Kallio & Reeks 1989) up to y+ %g, "
+             "isotropic sqrt(2k/3) with T_L = %g k/eps from y+ %g, u* = max(u_tau, %g^(1/4) k^(1/2))",
+             m->v[K_LAYER], m->v[K_CT], m->v[K_BLEND], m->v[K_CMU]);
+}
+
+static int finite_nonneg(double x)
+{
+    return x >= 0.0 && isfinite(x);
+}
+
+int swd_stats_at(const swd_model *m, const swd_local *at, swd_stats *out)
+{
+    if (!swd_ready(m))
+        return SWD_ENOTREADY;
+    if (isnan(at->y) || isinf(at->y) || !finite_nonneg(at->u_tau) || !(at->nu > 0.0)
+        || !isfinite(at->nu) || !finite_nonneg(at->k) || !finite_nonneg(at->eps))
+        return SWD_EINVAL;
+
+    /* the isotropic RANS statistics (bulk) */
+    const double s_iso = sqrt(2.0 * at->k / 3.0);
+    const double tl_iso = (at->k > 0.0 && at->eps > 0.0) ? m->v[K_CT] * at->k / at->eps : INFINITY;
+
+    const double ustar = fmax(at->u_tau, m->cmu4 * sqrt(at->k));
+    out->ustar = ustar;
+    /* below 1e-30 m/s there is no turbulence to speak of (and T_L = nu / u*^2
+       would overflow) */
+    if (at->y < 0.0 || !(ustar > 1e-30)) {
+        for (int i = 0; i < 3; i++)
+            out->sigma[i] = s_iso;
+        out->dsigma_n = 0.0;
+        out->tl = tl_iso;
+        out->yplus = at->y < 0.0 ? -1.0 : 0.0;
+        out->layer = 0.0;
+        return SWD_OK;
+    }
+
+    const double yl = m->v[K_LAYER], yb = m->v[K_BLEND];
+    const double yp = fmin(at->y * ustar / at->nu, 1e300);
+    out->yplus = yp;
+    double wl, dwl;   /* the layer's weight and its derivative d wl / d y+ */
+    if (yp <= yl) {
+        wl = 1.0;
+        dwl = 0.0;
+    } else if (yp >= yb) {
+        wl = 0.0;
+        dwl = 0.0;
+    } else {
+        wl = (yb - yp) / (yb - yl);
+        dwl = -1.0 / (yb - yl);
+    }
+    out->layer = wl;
+    if (wl == 0.0) {
+        for (int i = 0; i < 3; i++)
+            out->sigma[i] = s_iso;
+        out->dsigma_n = 0.0;
+        out->tl = tl_iso;
+        return SWD_OK;
+    }
+
+    /* the wall layer in wall units, blended with the bulk */
+    const double yq = yp < yb ? yp : yb;
+    const double s_l[3] = { ustar * swp_urms_plus(yq), ustar * swp_vrms_plus(yq),
+                            ustar * swp_wrms_plus(yq) };
+    const double tl_l = swp_tl_plus(yq) * at->nu / (ustar * ustar);
+    for (int i = 0; i < 3; i++)
+        out->sigma[i] = wl * s_l[i] + (1.0 - wl) * s_iso;
+    /* d sigma_n / dy = (u*^2 / nu) d(sigma_n / u*) / dy+ */
+    const double ds_plus = wl * swp_dvrms_plus(yq) + dwl * (swp_vrms_plus(yq) - s_iso / ustar);
+    out->dsigma_n = ds_plus * ustar * ustar / at->nu;
+    out->tl = isinf(tl_iso) ? (wl > 0.0 ? tl_l : INFINITY) : wl * tl_l + (1.0 - wl) * tl_iso;
+    return SWD_OK;
+}
+
+int swd_advance(const swd_model *m, const swd_local *at, double dt, double tau_p, double w[3],
+                const double xi[3], double kick[3], swd_stats *st)
+{
+    if (!swd_ready(m))
+        return SWD_ENOTREADY;
+    if (!(dt > 0.0) || !isfinite(dt) || !(tau_p > 0.0) || !isfinite(tau_p))
+        return SWD_EINVAL;
+    for (int i = 0; i < 3; i++)
+        if (!isfinite(w[i]) || !isfinite(xi[i]))
+            return SWD_EINVAL;
+    swd_stats s;
+    const int rc = swd_stats_at(m, at, &s);
+    if (rc != SWD_OK)
+        return rc;
+
+    if (kick) {
+        /* 1 - exp(-dt/tau_p) without cancellation for dt << tau_p */
+        const double f = -expm1(-dt / tau_p);
+        for (int i = 0; i < 3; i++)
+            kick[i] = s.sigma[i] * w[i] * f;
+    }
+    if (isfinite(s.tl) && s.tl > 0.0) {
+        const double r = dt / s.tl;
+        const double a = exp(-r);
+        const double b = sqrt(-expm1(-2.0 * r));   /* sqrt(1 - a^2) */
+        const double one_a = -expm1(-r);            /* 1 - a */
+        for (int i = 0; i < 3; i++)
+            w[i] = a * w[i] + b * xi[i];
+        w[1] += one_a * s.tl * s.dsigma_n;
+    }
+    if (st)
+        *st = s;
+    return SWD_OK;
+}
+
+/* ---- the sublayer deposition closure ------------------------------------ */
+
+void swd_closure_off(swd_model *m)
+{
+    free(m->cl_lnt);
+    free(m->cl_vs);
+    m->cl_lnt = m->cl_vs = NULL;
+    m->cl_n = 0;
+    m->cl_ysub = 0.0;
+}
+
+int swd_closure_on(const swd_model *m)
+{
+    return m && m->cl_n > 0;
+}
+
+int swd_set_closure(swd_model *m, double sublayer_yplus, const double *tau_plus,
+                    const double *vs, size_t n)
+{
+    if (n < 2 || n > SWD_MAX_TABLE)
+        return fail(m, SWD_EINVAL, "near-wall closure: %zu table nodes (2 .. %d)", n,
+                    SWD_MAX_TABLE);
+    if (!(sublayer_yplus > 0.0 && sublayer_yplus <= m->v[K_LAYER]))
+        return fail(m, SWD_EINVAL,
+                    "near-wall closure: sublayerYPlus = %g is outside (0, layerYPlus = %g]",
+                    sublayer_yplus, m->v[K_LAYER]);
+    for (size_t i = 0; i < n; i++) {
+        if (!(tau_plus[i] > 0.0) || !isfinite(tau_plus[i]))
+            return fail(m, SWD_EINVAL, "near-wall closure: tauPlus[%zu] = %g is not finite and > 0",
+                        i, tau_plus[i]);
+        if (i > 0 && !(tau_plus[i] > tau_plus[i - 1]))
+            return fail(m, SWD_EINVAL,
+                        "near-wall closure: tauPlus[%zu] = %g does not follow %g (strictly increasing)",
+                        i, tau_plus[i], tau_plus[i - 1]);
+        if (!(vs[i] >= 0.0) || !isfinite(vs[i]))
+            return fail(m, SWD_EINVAL,
+                        "near-wall closure: vPlusSublayer[%zu] = %g is not finite and >= 0", i,
+                        vs[i]);
+    }
+    double *lnt = malloc(n * sizeof *lnt), *v = malloc(n * sizeof *v);
+    if (!lnt || !v) {
+        free(lnt);
+        free(v);
+        return fail(m, SWD_EINVAL, "near-wall closure: out of memory");
+    }
+    for (size_t i = 0; i < n; i++) {
+        lnt[i] = log(tau_plus[i]);
+        v[i] = vs[i];
+    }
+    swd_closure_off(m);
+    m->cl_lnt = lnt;
+    m->cl_vs = v;
+    m->cl_n = n;
+    m->cl_ysub = sublayer_yplus;
+    m->ready = 0;
+    m->err[0] = '\0';
+    return SWD_OK;
+}
+
+double swd_closure_vs(const swd_model *m, double tau_plus)
+{
+    if (isnan(tau_plus))
+        return NAN;
+    if (!m->cl_n)
+        return 0.0;
+    if (!(tau_plus > 0.0))
+        return m->cl_vs[0];
+    const double x = log(tau_plus);
+    const size_t n = m->cl_n;
+    if (x <= m->cl_lnt[0])
+        return m->cl_vs[0];
+    if (x >= m->cl_lnt[n - 1])
+        return m->cl_vs[n - 1];
+    size_t lo = 0, hi = n - 1;
+    while (hi - lo > 1) {
+        const size_t mid = (lo + hi) / 2;
+        if (m->cl_lnt[mid] <= x)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    const double f = (x - m->cl_lnt[lo]) / (m->cl_lnt[hi] - m->cl_lnt[lo]);
+    const double a = m->cl_vs[lo], b = m->cl_vs[hi];
+    if (a > 0.0 && b > 0.0)
+        return exp((1.0 - f) * log(a) + f * log(b));
+    return (1.0 - f) * a + f * b;
+}
+
+double swd_deposit_rate(const swd_model *m, const swd_stats *st, double nu, double tau_stokes)
+{
+    if (!m->cl_n || !(st->yplus >= 0.0) || st->yplus > m->cl_ysub || !(st->ustar > 0.0)
+        || !(nu > 0.0) || !(tau_stokes > 0.0) || !isfinite(tau_stokes))
+        return 0.0;
+    const double u2 = st->ustar * st->ustar;
+    const double tplus = tau_stokes * u2 / nu;
+    return swd_closure_vs(m, tplus) * u2 / (m->cl_ysub * nu);
+}
