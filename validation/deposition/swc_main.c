@@ -1,0 +1,453 @@
+/* swc_main.c - snowdeposit: turbulent deposition in a fully developed channel
+ * with the C core's near-wall dispersion model, and the calibration of its
+ * sublayer closure (doc/deposition.md). */
+#include "swc_channel.h"
+#include "swp_nearwall.h"
+
+#include <errno.h>
+#include <math.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+static const char *usage =
+"NAME\n"
+"    snowdeposit - turbulent particle deposition in a channel with SnowWall's\n"
+"    near-wall dispersion model; calibration of its sublayer closure\n"
+"\n"
+"SYNOPSIS\n"
+"    snowdeposit channel   [--tau-plus LIST] [--closure LAW] [common options]\n"
+"    snowdeposit calibrate --out FILE [--law LAW] [--tau-plus LIST] [common options]\n"
+"    snowdeposit --help\n"
+"\n"
+"DESCRIPTION\n"
+"    Both commands follow N particles in the wall-normal direction of a fully\n"
+"    developed channel, in wall units (u_tau = nu = 1): the half channel\n"
+"    0 < y+ < Re_tau with a mirror at the centreplane. The fluid velocity a\n"
+"    particle sees is the continuous random walk of the C core (wallmodel/core/\n"
+"    swd.h: anisotropic wall-layer statistics below layerYPlus, isotropic\n"
+"    sqrt(2k/3) of the channel's k above blendYPlus); the particle follows it\n"
+"    with Stokes drag of relaxation time tau+. A particle that reaches the wall\n"
+"    deposits and is replaced by one at a random height, so the mean\n"
+"    concentration C stays fixed, and after the warm-up the deposition velocity\n"
+"    V+ = J / (C u_tau) is the deposits D times Re_tau over N and the window.\n"
+"    Its standard error comes from 20 batch means (never below the Poisson\n"
+"    error of D).\n"
+"\n"
+"    channel prints one line per tau+: V+, its standard error, the deposits by\n"
+"    the particles' own motion (D_track) and the expected deposits of the\n"
+"    sublayer closure (E_closure, its probabilities summed), the law's V+ (Wood 1981, the\n"
+"    correlation of the measurements: 4.5e-4 tau+^2 up to its plateau 0.13,\n"
+"    Brownian term omitted) and their ratio, the sublayer concentration over the\n"
+"    mean, the particle steps and the mean step dt+. With --closure the model's\n"
+"    sublayer closure is calibrated first (as calibrate does) and then used.\n"
+"\n"
+"    calibrate computes the sublayer closure: the CRW alone misses most of the\n"
+"    measured deposition below tau+ of about 5; the closure adds the rest as a\n"
+"    deposition rate of the particles inside the sublayer y+ < S,\n"
+"    lambda+ = Vs+(tau+) / S, with Vs+ = max(0, V+_law - V+_crw) / c_s (c_s the\n"
+"    CRW's sublayer concentration over the mean), corrected once by a run with\n"
+"    the closure. It writes FILE (an OpenFOAM dictionary\n"
+"    depositionClosure { ... }, doc/deposition.md) through a temporary file\n"
+"    renamed at the end, and prints the table.\n"
+"\n"
+"OPTIONS\n"
+"    --tau-plus LIST     comma-separated tau+ values, each in (0, 1e4], strictly\n"
+"                        increasing (default channel 0.1,0.3,1,3,10,30,100;\n"
+"                        calibrate 0.03,0.1,0.2,0.3,0.5,1,2,3,5,7,10,20,30,100,300)\n"
+"    --closure LAW       channel: calibrate the closure for LAW and use it\n"
+"    --law LAW           calibrate: wood (default) or mccoy-hanratty\n"
+"                        (3.5e-4 tau+^2 up to its plateau 0.17, as FDS uses it)\n"
+"    --out FILE          calibrate: the coefficients file to write\n"
+"    --sublayer S        the closure's sublayer y+ < S, in (0, layerYPlus] (default 10)\n"
+"    --re-tau R          channel half-height in wall units, (10, 1e5] (default 314,\n"
+"                        Liu & Agarwal's pipe at Re = 10 000)\n"
+"    --particles N       particles, 1 .. 1e8 (default 2000)\n"
+"    --t-warm T          warm-up t+, [0, 1e9] (default 2000)\n"
+"    --t-run T           measurement window t+, (0, 1e9] (default 20000)\n"
+"    --dt-max D          largest step dt+, (0, 100] (default 2)\n"
+"    --c-tl C            step <= C T_L, (0, 1] (default 0.1)\n"
+"    --c-y C             step <= C y / speed, (0, 1] (default 0.2)\n"
+"    --scheme S          exact (default) or host: the particle's position moved\n"
+"                        with its velocity at the start of a step, as OpenFOAM's\n"
+"                        tracking moves a parcel\n"
+"    --radius            deposit when the particle's surface touches the wall\n"
+"                        (r+ = d+/2 of an ice sphere in air at -15 C, from tau+)\n"
+"                        instead of its centre\n"
+"    --set KEY=VALUE     a setting of the near-wall model: layerYPlus, blendYPlus,\n"
+"                        CT, Cmu (wallmodel/core/swd.h)\n"
+"    --seed S            random seed, an integer >= 0 (default 1)\n"
+"    -h, --help          this text\n"
+"\n"
+"EXIT STATUS\n"
+"    0 success, 2 usage or input error (one line naming the option and the value),\n"
+"    1 other failure. Interrupted (SIGINT, SIGTERM, SIGHUP), calibrate leaves no\n"
+"    file: the signal ends the run at once, and one that comes while FILE is\n"
+"    written is held until the temporary file is removed.\n"
+"\n"
+"EXAMPLES\n"
+"    snowdeposit channel --tau-plus 1,10 --particles 4000\n"
+"    snowdeposit calibrate --out deposition.coeffs\n";
+
+#define MAXTAU 64
+
+typedef struct {
+    swc_params p;
+    double tau[MAXTAU];
+    size_t ntau;
+    const char *out;
+    const char *law;
+    const char *closure;
+    double sublayer;
+    int radius;
+} opts;
+
+static int usage_error(const char *fmt, const char *a, const char *b)
+{
+    fprintf(stderr, "snowdeposit: ");
+    fprintf(stderr, fmt, a, b);
+    fprintf(stderr, " (see snowdeposit --help)\n");
+    return 2;
+}
+
+static int number(const char *opt, const char *s, double *v)
+{
+    char *end;
+    errno = 0;
+    const double x = strtod(s, &end);
+    if (end == s || *end || errno == ERANGE || !isfinite(x) || strpbrk(s, "xXnN"))
+        return usage_error("%s: '%s' is not a finite decimal number", opt, s);
+    *v = x;
+    return 0;
+}
+
+static int parse_list(const char *opt, const char *s, double *v, size_t *n)
+{
+    char buf[1024];
+    if (strlen(s) >= sizeof buf)
+        return usage_error("%s: the list '%.40s...' is too long", opt, s);
+    strcpy(buf, s);
+    *n = 0;
+    char *save = NULL;
+    for (char *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
+        if (*n >= MAXTAU)
+            return usage_error("%s: more than 64 values in '%s'", opt, s);
+        if (number(opt, t, &v[*n]))
+            return 2;
+        if (!(v[*n] > 0.0 && v[*n] <= 1e4))
+            return usage_error("%s: %s is outside (0, 1e4]", opt, t);
+        if (*n > 0 && !(v[*n] > v[*n - 1]))
+            return usage_error("%s: '%s' is not strictly increasing", opt, s);
+        (*n)++;
+    }
+    if (*n == 0)
+        return usage_error("%s: '%s' holds no value", opt, s);
+    return 0;
+}
+
+static double law_value(const char *law, double t)
+{
+    if (!strcmp(law, "mccoy-hanratty")) {
+        const double v = 3.5e-4 * t * t;
+        return v < 0.17 ? v : 0.17;
+    }
+    return swp_wood_vplus(t, 0.0);
+}
+
+static int check_law(const char *opt, const char *law)
+{
+    if (strcmp(law, "wood") && strcmp(law, "mccoy-hanratty"))
+        return usage_error("%s: '%s' is not a law (wood, mccoy-hanratty)", opt, law);
+    return 0;
+}
+
+/* r+ of an ice sphere (920 kg/m3) in air at -15 C with this tau+ at u_tau = 1 m/s:
+ * d+ = d u_tau / nu, d from tau+; r+ = d+/2 (in wall units it depends on tau+ and
+ * the density ratio only) */
+static double radius_plus(double tau_plus)
+{
+    const double mu = 1.641e-5, nu = 1.2e-5, rho_p = 920.0;
+    const double d = swp_d_of_tau_plus(tau_plus, rho_p, mu, nu, 1.0);
+    return 0.5 * d * 1.0 / nu;
+}
+
+static int write_coeffs(const opts *o, const swd_model *m, const double *vs, const double *law,
+                        const double *vcrw, const double *vcrw_se, const double *cs)
+{
+    char tmp[4096];
+    if (snprintf(tmp, sizeof tmp, "%s.tmpXXXXXX", o->out) >= (int)sizeof tmp) {
+        fprintf(stderr, "snowdeposit: --out: '%s' is too long\n", o->out);
+        return 2;
+    }
+    sigset_t block, old;
+    sigemptyset(&block);
+    sigaddset(&block, SIGINT);
+    sigaddset(&block, SIGTERM);
+    sigaddset(&block, SIGHUP);
+    sigprocmask(SIG_BLOCK, &block, &old);
+    const int fd = mkstemp(tmp);
+    if (fd < 0) {
+        sigprocmask(SIG_SETMASK, &old, NULL);
+        fprintf(stderr, "snowdeposit: --out %s: cannot create a file there (%s)\n", o->out,
+                strerror(errno));
+        return 2;
+    }
+    FILE *f = fdopen(fd, "w");
+    int ok = f != NULL;
+    if (ok) {
+        fprintf(f, "// SnowWall near-wall dispersion: sublayer deposition closure\n"
+                   "// written by: snowdeposit calibrate (doc/deposition.md)\n"
+                   "// channel Re_tau %g, %zu particles, window t+ %g, seed %lu\n\n",
+                o->p.re_tau, o->p.n, o->p.t_run, o->p.seed);
+        fprintf(f, "depositionClosure\n{\n    version 1;\n    law %s;\n    reTau %g;\n", o->law,
+                o->p.re_tau);
+        fprintf(f, "    sublayerYPlus %g;\n", o->sublayer);
+        for (size_t k = 0; swd_key(k); k++)
+            fprintf(f, "    %s %.10g;    // the CRW setting calibrated with\n", swd_key(k),
+                    swd_get(m, swd_key(k)));
+        const struct {
+            const char *name;
+            const double *v;
+        } cols[] = { { "tauPlus", o->tau },      { "vPlusSublayer", vs },
+                     { "vPlusLaw", law },        { "vPlusCrw", vcrw },
+                     { "vPlusCrwError", vcrw_se }, { "cSublayer", cs } };
+        for (size_t c = 0; c < sizeof cols / sizeof cols[0]; c++) {
+            fprintf(f, "    %s (", cols[c].name);
+            for (size_t i = 0; i < o->ntau; i++)
+                fprintf(f, " %.9g", cols[c].v[i]);
+            fprintf(f, " );\n");
+        }
+        fprintf(f, "}\n");
+        ok = !ferror(f);
+        ok = (fclose(f) == 0) && ok;
+    } else {
+        close(fd);
+    }
+    /* a signal that came while the file was written: no file, then the
+       signal ends the run when it is unblocked */
+    sigset_t pend;
+    sigpending(&pend);
+    const int interrupted = sigismember(&pend, SIGINT) || sigismember(&pend, SIGTERM)
+                            || sigismember(&pend, SIGHUP);
+    if (ok && !interrupted)
+        ok = rename(tmp, o->out) == 0;
+    if (!ok || interrupted)
+        unlink(tmp);
+    sigprocmask(SIG_SETMASK, &old, NULL);
+    if (!ok) {
+        fprintf(stderr, "snowdeposit: --out %s: writing failed (%s)\n", o->out, strerror(errno));
+        return 1;
+    }
+    return 0;
+}
+
+static int parse(int argc, char **argv, opts *o, swd_model *m)
+{
+    for (int i = 2; i < argc; i++) {
+        const char *a = argv[i];
+        const char *v = i + 1 < argc ? argv[i + 1] : NULL;
+        double x;
+        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
+            fputs(usage, stdout);
+            exit(0);
+        }
+        if (!strcmp(a, "--radius")) {
+            o->radius = 1;
+            continue;
+        }
+        if (!v)
+            return usage_error("%s needs a value%s", a, "");
+        i++;
+        if (!strcmp(a, "--tau-plus")) {
+            if (parse_list(a, v, o->tau, &o->ntau))
+                return 2;
+        } else if (!strcmp(a, "--out")) {
+            o->out = v;
+        } else if (!strcmp(a, "--law")) {
+            if (check_law(a, v))
+                return 2;
+            o->law = v;
+        } else if (!strcmp(a, "--closure")) {
+            if (check_law(a, v))
+                return 2;
+            o->closure = v;
+        } else if (!strcmp(a, "--scheme")) {
+            if (!strcmp(v, "exact"))
+                o->p.scheme = SWC_EXACT;
+            else if (!strcmp(v, "host"))
+                o->p.scheme = SWC_HOST;
+            else
+                return usage_error("%s: '%s' is not a scheme (exact, host)", a, v);
+        } else if (!strcmp(a, "--set")) {
+            const char *eq = strchr(v, '=');
+            char key[64];
+            if (!eq || eq == v || (size_t)(eq - v) >= sizeof key)
+                return usage_error("%s: '%s' is not KEY=VALUE", a, v);
+            memcpy(key, v, (size_t)(eq - v));
+            key[eq - v] = '\0';
+            if (number(a, eq + 1, &x))
+                return 2;
+            if (swd_set(m, key, x) != SWD_OK) {
+                fprintf(stderr, "snowdeposit: --set %s: %s\n", v, swd_errmsg(m));
+                return 2;
+            }
+        } else if (!strcmp(a, "--particles") || !strcmp(a, "--seed")) {
+            if (number(a, v, &x))
+                return 2;
+            const double hi = !strcmp(a, "--seed") ? 4294967295.0 : 1e8;
+            const double lo = !strcmp(a, "--seed") ? 0.0 : 1.0;
+            if (x != floor(x) || x < lo || x > hi)
+                return usage_error("%s: %s is not an integer in range (see --help)", a, v);
+            if (!strcmp(a, "--seed"))
+                o->p.seed = (unsigned long)x;
+            else
+                o->p.n = (size_t)x;
+        } else {
+            /* option, destination, accepted range (lo open?) */
+            const struct {
+                const char *opt;
+                double *dst, lo, hi;
+                int lo_open;
+            } num[] = {
+                { "--re-tau", &o->p.re_tau, 10, 1e5, 1 },  { "--t-warm", &o->p.t_warm, 0, 1e9, 0 },
+                { "--t-run", &o->p.t_run, 0, 1e9, 1 },     { "--dt-max", &o->p.dt_max, 0, 100, 1 },
+                { "--c-tl", &o->p.c_tl, 0, 1, 1 },         { "--c-y", &o->p.c_y, 0, 1, 1 },
+                { "--sublayer", &o->sublayer, 0, 200, 1 },
+            };
+            size_t k = 0;
+            while (k < sizeof num / sizeof num[0] && strcmp(a, num[k].opt))
+                k++;
+            if (k == sizeof num / sizeof num[0])
+                return usage_error("unknown option '%s'%s", a, "");
+            if (number(a, v, &x))
+                return 2;
+            if (!((num[k].lo_open ? x > num[k].lo : x >= num[k].lo) && x <= num[k].hi)) {
+                fprintf(stderr, "snowdeposit: %s: %s is outside %s%g, %g] (see snowdeposit --help)\n",
+                        a, v, num[k].lo_open ? "(" : "[", num[k].lo, num[k].hi);
+                return 2;
+            }
+            *num[k].dst = x;
+        }
+    }
+    if (swd_commit(m) != SWD_OK) {
+        fprintf(stderr, "snowdeposit: --set: %s\n", swd_errmsg(m));
+        return 2;
+    }
+    char err[256];
+    swc_params q = o->p;
+    if (swc_params_check(&q, err, sizeof err)) {
+        fprintf(stderr, "snowdeposit: %s (see snowdeposit --help)\n", err);
+        return 2;
+    }
+    if (!(o->sublayer > 0.0 && o->sublayer <= swd_get(m, "layerYPlus")))
+        return usage_error("--sublayer: %s is outside (0, layerYPlus]%s",
+                           (snprintf(err, sizeof err, "%g", o->sublayer), err), "");
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        fputs(usage, stderr);
+        return 2;
+    }
+    if (!strcmp(argv[1], "-h") || !strcmp(argv[1], "--help")) {
+        fputs(usage, stdout);
+        return 0;
+    }
+    const int cal = !strcmp(argv[1], "calibrate");
+    if (!cal && strcmp(argv[1], "channel"))
+        return usage_error("unknown command '%s'%s (channel, calibrate)", argv[1], "");
+
+    opts o;
+    memset(&o, 0, sizeof o);
+    swc_params_default(&o.p);
+    o.law = "wood";
+    o.sublayer = 10.0;
+    if (cal) {
+        const double t[] = { 0.03, 0.1, 0.2, 0.3, 0.5, 1, 2, 3, 5, 7, 10, 20, 30, 100, 300 };
+        o.ntau = sizeof t / sizeof t[0];
+        memcpy(o.tau, t, sizeof t);
+    } else {
+        const double t[] = { 0.1, 0.3, 1, 3, 10, 30, 100 };
+        o.ntau = sizeof t / sizeof t[0];
+        memcpy(o.tau, t, sizeof t);
+    }
+    swd_model *m = swd_alloc();
+    if (!m) {
+        fprintf(stderr, "snowdeposit: out of memory\n");
+        return 1;
+    }
+    int rc = parse(argc, argv, &o, m);
+    if (rc) {
+        swd_free(m);
+        return rc;
+    }
+    if (cal && !o.out) {
+        swd_free(m);
+        return usage_error("calibrate needs --out FILE%s%s", "", "");
+    }
+    if (!cal && o.out) {
+        swd_free(m);
+        return usage_error("--out is an option of calibrate, not of channel%s%s", "", "");
+    }
+    const size_t n = o.ntau;
+    double law[MAXTAU], vs[MAXTAU], vcrw[MAXTAU], vcrw_se[MAXTAU], cs[MAXTAU], vt[MAXTAU],
+        vt_se[MAXTAU];
+    const char *lawname = cal ? o.law : (o.closure ? o.closure : "wood");
+    for (size_t i = 0; i < n; i++)
+        law[i] = law_value(lawname, o.tau[i]);
+    char err[256];
+    if (cal || o.closure) {
+        if (o.radius)
+            fprintf(stderr, "snowdeposit: note: the closure is calibrated for point particles "
+                            "(--radius is used by channel's own runs only)\n");
+        rc = swc_calibrate(m, &o.p, o.sublayer, o.tau, law, n, vs, vcrw, vcrw_se, cs, vt, vt_se,
+                           err, sizeof err);
+        if (rc) {
+            fprintf(stderr, "snowdeposit: %s\n", err);
+            swd_free(m);
+            return rc == -1 ? 2 : 1;
+        }
+    }
+    if (cal) {
+        printf("# law %s, sublayer y+ < %g, Re_tau %g, %zu particles, window t+ %g\n", o.law,
+               o.sublayer, o.p.re_tau, o.p.n, o.p.t_run);
+        printf("%10s %12s %12s %10s %10s %12s\n", "tau+", "V+_law", "V+_crw", "se", "c_s",
+               "Vs+");
+        for (size_t i = 0; i < n; i++)
+            printf("%10.4g %12.4e %12.4e %10.2e %10.3f %12.4e\n", o.tau[i], law[i], vcrw[i],
+                   vcrw_se[i], cs[i], vs[i]);
+        rc = write_coeffs(&o, m, vs, law, vcrw, vcrw_se, cs);
+        swd_free(m);
+        return rc;
+    }
+    if (o.closure && swd_set_closure(m, o.sublayer, o.tau, vs, n) == SWD_OK)
+        swd_commit(m);
+    printf("# Re_tau %g, %zu particles, warm-up t+ %g, window t+ %g, scheme %s%s%s\n",
+           o.p.re_tau, o.p.n, o.p.t_warm, o.p.t_run, o.p.scheme == SWC_EXACT ? "exact" : "host",
+           o.closure ? ", closure " : "", o.closure ? o.closure : "");
+    printf("%10s %12s %10s %9s %10s %12s %8s %8s %10s %7s\n", "tau+", "V+", "se", "D_track",
+           "E_closure", "V+_wood", "ratio", "c_sub", "steps", "dt+");
+    for (size_t i = 0; i < n; i++) {
+        swc_params q = o.p;
+        swc_result r;
+        q.tau_plus = o.tau[i];
+        q.r_plus = o.radius ? radius_plus(o.tau[i]) : 0.0;
+        q.seed = o.p.seed + 7919 * (i + 1);
+        if (swc_run(m, &q, &r, err, sizeof err)) {
+            fprintf(stderr, "snowdeposit: %s\n", err);
+            swd_free(m);
+            return 2;
+        }
+        const double w = swp_wood_vplus(o.tau[i], 0.0);
+        printf("%10.4g %12.4e %10.2e %9zu %10.2f %12.4e %8.3g %8.3f %10.3e %7.3f\n", o.tau[i],
+               r.vplus, r.vplus_se, r.deposits, r.expected_closure, w, r.vplus / w, r.c_sub,
+               r.steps, r.dt_mean);
+        fflush(stdout);
+    }
+    swd_free(m);
+    return 0;
+}
