@@ -1116,14 +1116,56 @@ bool Foam::SnowWallInteraction<CloudType>::correct
             break;
     }
 
-    // snow: the C core decides, in the wall frame
+    // snow: deposited or kept in the cloud, so not an escape
+    if (open) uncountEscape(mp);
+    return impactSnow(p, pp, pp.whichFace(p.face()), keepParticle);
+}
+
+
+template<class CloudType>
+bool Foam::SnowWallInteraction<CloudType>::impactSnow
+(
+    typename CloudType::parcelType& p,
+    const polyPatch& pp,
+    const label facei,
+    bool& keepParticle
+)
+{
+    const label s = slotOfPatch_[pp.index()];
+    if (s < 0)
+    {
+        return false;
+    }
+
+    vector& U = p.U();
+    const scalar mp = p.mass()*p.nParticle();
+
+    // the C core decides, in the wall frame (patchData reads the parcel's
+    // face; a parcel away from the wall, from the near-wall closure, takes
+    // the face's normal and the wall's velocity there)
     vector nw, Up;
-    this->owner().patchData(p, pp, nw, Up);
+    if (p.face() >= 0 && pp.whichFace(p.face()) == facei)
+    {
+        this->owner().patchData(p, pp, nw, Up);
+    }
+    else
+    {
+        nw = pp.faceNormals()[facei];
+        Up = Zero;
+        const polyMesh& mesh = this->owner().mesh();
+        if (mesh.moving())
+        {
+            const label gf = pp.start() + facei;
+            const face& f = mesh.faces()[gf];
+            const pointField& oldPts = mesh.oldPoints();
+            const pointField& pts = mesh.points();
+            const scalar dt = mesh.time().deltaTValue();
+            Up = (f.centre(pts) - f.centre(oldPts))/dt;
+        }
+    }
     const vector Urel = U - Up;
     const scalar Un = Urel & nw;            // > 0: towards the wall
     const vector Ut = Urel - Un*nw;
-    const label facei = pp.whichFace(p.face());
-    const label s = slotOfPatch_[pp.index()];
 
     sww_impact in;
     in.d = p.d();
@@ -1160,8 +1202,6 @@ bool Foam::SnowWallInteraction<CloudType>::correct
 
     ++nImpact_[s];
     if (out.range != 0) ++nOutside_[s];
-    // deposited or still in the cloud: not an escape
-    if (open) uncountEscape(mp);
 
     if (debug)
     {
