@@ -1,0 +1,593 @@
+/*---------------------------------------------------------------------------*\
+  SnowWall: wallmodel/OpenFOAM/snowNearWall (see SnowNearWall.H)
+\*---------------------------------------------------------------------------*/
+
+#include "SnowNearWall.H"
+#include "SnowWallInteraction.H"
+#include "turbulenceModel.H"
+#include "indexedOctree.H"
+#include "treeDataFace.H"
+#include "Pstream.H"
+#include "OSspecific.H"
+
+#include "swp_nearwall.h"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::SnowNearWall<CloudType>::readSettings(const dictionary& dict)
+{
+    // every key of this dictionary is known: a misspelt one is an error
+    wordList known({"type", "patches", "closure", "depositionClosure"});
+    for (size_t k = 0; swd_key(k); ++k)
+    {
+        known.append(word(swd_key(k)));
+    }
+    for (const entry& e : dict)
+    {
+        if (!known.found(e.keyword()))
+        {
+            FatalIOErrorInFunction(dict)
+                << "snowNearWall: unknown key '" << e.keyword()
+                << "' (known: " << known << ")" << exit(FatalIOError);
+        }
+    }
+
+    for (size_t k = 0; swd_key(k); ++k)
+    {
+        const word key(swd_key(k));
+        scalar v;
+        if (dict.readIfPresent(key, v))
+        {
+            if (swd_set(model_, key.c_str(), v) != SWD_OK)
+            {
+                FatalIOErrorInFunction(dict)
+                    << "snowNearWall: " << swd_errmsg(model_)
+                    << exit(FatalIOError);
+            }
+        }
+    }
+
+    const bool closure = dict.lookupOrDefault<bool>("closure", true);
+    const dictionary* cd = dict.findDict("depositionClosure");
+    if (closure && cd)
+    {
+        // the CRW the closure was calibrated with must be the one in use
+        for (size_t k = 0; swd_key(k); ++k)
+        {
+            const word key(swd_key(k));
+            const scalar cal = cd->get<scalar>(key);
+            const scalar use = swd_get(model_, key.c_str());
+            if (mag(cal - use) > 1e-9*max(mag(cal), scalar(1)))
+            {
+                FatalIOErrorInFunction(*cd)
+                    << "snowNearWall: the closure was calibrated with " << key
+                    << " " << cal << ", the model uses " << use
+                    << ": recalibrate (snowdeposit calibrate --set " << key
+                    << "=" << use << ") or use the same setting"
+                    << exit(FatalIOError);
+            }
+        }
+        const scalarList tau(cd->lookup("tauPlus"));
+        const scalarList vs(cd->lookup("vPlusSublayer"));
+        if (tau.size() != vs.size())
+        {
+            FatalIOErrorInFunction(*cd)
+                << "snowNearWall: tauPlus has " << tau.size()
+                << " values, vPlusSublayer " << vs.size()
+                << exit(FatalIOError);
+        }
+        const scalar ysub = cd->get<scalar>("sublayerYPlus");
+        if
+        (
+            swd_set_closure(model_, ysub, tau.cdata(), vs.cdata(), tau.size())
+         != SWD_OK
+        )
+        {
+            FatalIOErrorInFunction(*cd)
+                << "snowNearWall: " << swd_errmsg(model_) << exit(FatalIOError);
+        }
+    }
+    else if (closure && dict.found("closure"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "snowNearWall: closure on needs the coefficients"
+            << " depositionClosure { ... } (#include \"deposition.coeffs\","
+            << " written by snowdeposit calibrate)" << exit(FatalIOError);
+    }
+    if (swd_commit(model_) != SWD_OK)
+    {
+        FatalIOErrorInFunction(dict)
+            << "snowNearWall: " << swd_errmsg(model_) << exit(FatalIOError);
+    }
+
+    // the walls
+    const polyBoundaryMesh& bm = this->owner().mesh().boundaryMesh();
+    const wordRes sel(dict.get<wordRes>("patches"));
+    if (sel.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "snowNearWall: 'patches' is empty: name the walls whose"
+            << " layer the model resolves" << exit(FatalIOError);
+    }
+    for (const wordRe& w : sel)
+    {
+        bool any = false;
+        for (const polyPatch& pp : bm)
+        {
+            any = any || w.match(pp.name());
+        }
+        if (!any)
+        {
+            FatalIOErrorInFunction(dict)
+                << "snowNearWall: patches: '" << w << "' matches no patch"
+                << " (patches: " << bm.names() << ")" << exit(FatalIOError);
+        }
+    }
+    DynamicList<label> ids;
+    for (const polyPatch& pp : bm)
+    {
+        if (sel.match(pp.name()))
+        {
+            ids.append(pp.index());
+        }
+    }
+    patches_ = ids;
+    for (const label pi : patches_)
+    {
+        if (bm[pi].coupled() || polyPatch::constraintType(bm[pi].type()))
+        {
+            FatalIOErrorInFunction(dict)
+                << "snowNearWall: patch " << bm[pi].name() << " is a "
+                << bm[pi].type() << " patch, not a wall" << exit(FatalIOError);
+        }
+    }
+
+    // this object is the dispersion: the cloud's own must be off (the cloud
+    // functions are built before the dispersion model: read its keyword)
+    const word disp
+    (
+        this->owner().subModelProperties().template
+            lookupOrDefault<word>("dispersionModel", "none")
+    );
+    if (disp != "none")
+    {
+        FatalIOErrorInFunction(dict)
+            << "snowNearWall replaces the dispersion model: set"
+            << " dispersionModel none; in the subModels of "
+            << this->owner().name() << "Properties (it is " << disp << ")"
+            << exit(FatalIOError);
+    }
+
+    char buf[512];
+    swd_describe(model_, buf, sizeof buf);
+    Info<< "    snowNearWall " << this->modelName() << ": " << buf << nl
+        << "        walls " << UIndirectList<word>(bm.names(), patches_)
+        << ", sublayer closure ";
+    if (swd_closure_on(model_))
+    {
+        Info<< "on (law " << cd->lookupOrDefault<word>("law", "?")
+            << ", sublayer y+ < " << cd->get<scalar>("sublayerYPlus") << ")";
+    }
+    else
+    {
+        Info<< "off";
+    }
+    Info<< endl;
+}
+
+
+template<class CloudType>
+void Foam::SnowNearWall<CloudType>::buildNearest()
+{
+    const polyMesh& mesh = this->owner().mesh();
+    const polyBoundaryMesh& bm = mesh.boundaryMesh();
+
+    DynamicList<label> faces;
+    for (const label pi : patches_)
+    {
+        const polyPatch& pp = bm[pi];
+        forAll(pp, i)
+        {
+            faces.append(pp.start() + i);
+        }
+    }
+    nearestFace_.setSize(mesh.nCells());
+    nearestFace_ = -1;
+    if (faces.empty())
+    {
+        return;     // no wall of these patches on this processor
+    }
+
+    treeBoundBox bb(mesh.points());
+    Random rndGen(123456);
+    bb = bb.extend(rndGen, 1e-4);
+    bb.min() -= point::uniform(ROOTVSMALL);
+    bb.max() += point::uniform(ROOTVSMALL);
+
+    const labelList faceLabels(faces);
+    indexedOctree<treeDataFace> tree
+    (
+        treeDataFace(false, mesh, faceLabels),
+        bb, 8, 10, 3.0
+    );
+    const pointField& cc = mesh.cellCentres();
+    const scalar span2 = magSqr(bb.span());
+    forAll(cc, celli)
+    {
+        const pointIndexHit hit = tree.findNearest(cc[celli], span2);
+        if (hit.hit())
+        {
+            nearestFace_[celli] = faceLabels[hit.index()];
+        }
+    }
+}
+
+
+template<class CloudType>
+void Foam::SnowNearWall<CloudType>::refreshFlow()
+{
+    const CloudType& cloud = this->owner();
+    const fvMesh& mesh = cloud.mesh();
+    const word turbName =
+        IOobject::groupName(turbulenceModel::propertiesName, cloud.U().group());
+    const turbulenceModel* turb =
+        mesh.template findObject<turbulenceModel>(turbName);
+    if (!turb)
+    {
+        FatalErrorInFunction
+            << "snowNearWall: no turbulence model " << turbName
+            << " in the registry: the model needs its k, epsilon and wall"
+            << " shear stress" << exit(FatalError);
+    }
+    k_ = turb->k()().primitiveField();
+    epsilon_ = turb->epsilon()().primitiveField();
+    nu_ = turb->nu()().primitiveField();
+
+    // friction velocity of every face of the patches:
+    // u_tau^2 = nuEff |d U_t / dn| at the wall (the wall function's value on
+    // a wall-function mesh)
+    const volVectorField& U = turb->U();
+    uTau_.setSize(mesh.nBoundaryFaces());
+    uTau_ = 0;
+    for (const label pi : patches_)
+    {
+        const polyPatch& pp = mesh.boundaryMesh()[pi];
+        const vectorField snGradU(U.boundaryField()[pi].snGrad());
+        const scalarField nuEff(turb->nuEff(pi));
+        const vectorField& n = pp.faceNormals();
+        forAll(pp, i)
+        {
+            const vector g = snGradU[i] - (snGradU[i] & n[i])*n[i];
+            uTau_[pp.start() + i - mesh.nInternalFaces()] =
+                sqrt(nuEff[i]*mag(g));
+        }
+    }
+}
+
+
+template<class CloudType>
+Foam::label Foam::SnowNearWall<CloudType>::patchSlot(const label f) const
+{
+    const polyBoundaryMesh& bm = this->owner().mesh().boundaryMesh();
+    const label pi = bm.whichPatch(f);
+    forAll(patches_, s)
+    {
+        if (patches_[s] == pi) return s;
+    }
+    return -1;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::SnowNearWall<CloudType>::SnowNearWall
+(
+    const dictionary& dict,
+    CloudType& owner,
+    const word& modelName
+)
+:
+    CloudFunctionObject<CloudType>(dict, owner, modelName, typeName),
+    model_(swd_alloc()),
+    patches_(),
+    nearestFace_(),
+    uTau_(),
+    k_(),
+    epsilon_(),
+    nu_(),
+    nClosure_(),
+    mClosure_(),
+    nClosure0_(),
+    mClosure0_(),
+    eClosure_(),
+    eClosure0_(),
+    seriesPtr_()
+{
+    if (!model_)
+    {
+        FatalErrorInFunction << "snowNearWall: out of memory" << exit(FatalError);
+    }
+    readSettings(this->coeffDict());
+    buildNearest();
+    nClosure_.setSize(patches_.size(), Zero);
+    mClosure_.setSize(patches_.size(), Zero);
+    nClosure0_.setSize(patches_.size(), Zero);
+    mClosure0_.setSize(patches_.size(), Zero);
+    eClosure_.setSize(patches_.size(), Zero);
+    eClosure0_.setSize(patches_.size(), Zero);
+    this->getModelProperty("nClosure", nClosure0_);
+    this->getModelProperty("massClosure", mClosure0_);
+    this->getModelProperty("expectedClosure", eClosure0_);
+    if
+    (
+        nClosure0_.size() != patches_.size()
+     || mClosure0_.size() != patches_.size()
+     || eClosure0_.size() != patches_.size()
+    )
+    {
+        // another set of walls than the run restarted from: start at 0
+        nClosure0_ = labelList(patches_.size(), label(0));
+        mClosure0_ = scalarList(patches_.size(), scalar(0));
+        eClosure0_ = scalarList(patches_.size(), scalar(0));
+    }
+}
+
+
+template<class CloudType>
+Foam::SnowNearWall<CloudType>::SnowNearWall(const SnowNearWall<CloudType>& nw)
+:
+    CloudFunctionObject<CloudType>(nw),
+    model_(nullptr),
+    patches_(nw.patches_),
+    nearestFace_(nw.nearestFace_),
+    uTau_(nw.uTau_),
+    k_(nw.k_),
+    epsilon_(nw.epsilon_),
+    nu_(nw.nu_),
+    nClosure_(nw.nClosure_),
+    mClosure_(nw.mClosure_),
+    nClosure0_(nw.nClosure0_),
+    mClosure0_(nw.mClosure0_),
+    eClosure_(nw.eClosure_),
+    eClosure0_(nw.eClosure0_),
+    seriesPtr_()
+{
+    // a fresh C model with the same settings (the core has no copy)
+    model_ = swd_alloc();
+    readSettings(this->coeffDict());
+}
+
+
+template<class CloudType>
+Foam::SnowNearWall<CloudType>::~SnowNearWall()
+{
+    swd_free(model_);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::SnowNearWall<CloudType>::preEvolve()
+{
+    refreshFlow();
+}
+
+
+template<class CloudType>
+void Foam::SnowNearWall<CloudType>::postMove
+(
+    parcelType& p,
+    const scalar dt,
+    const point& position0,
+    bool& keepParticle
+)
+{
+    if (!keepParticle || !p.active() || !(dt > ROOTVSMALL))
+    {
+        return;
+    }
+    CloudType& cloud = this->owner();
+    const fvMesh& mesh = cloud.mesh();
+    const label celli = p.cell();
+    const label f = nearestFace_[celli];
+
+    // the place at the start of the step: wall distance and wall frame
+    swd_local at;
+    at.nu = nu_[celli];
+    at.k = max(k_[celli], scalar(0));
+    at.eps = max(epsilon_[celli], scalar(0));
+    const vector Uc = cloud.U()[celli];
+    vector en, es, ez;          // wall-normal (into the fluid), streamwise, spanwise
+    if (f >= 0)
+    {
+        const vector n = mesh.faceAreas()[f]/mag(mesh.faceAreas()[f]);
+        en = -n;
+        at.y = max((position0 - mesh.faceCentres()[f]) & en, scalar(0));
+        at.u_tau = uTau_[f - mesh.nInternalFaces()];
+    }
+    else
+    {
+        en = vector(0, 1, 0);
+        at.y = -1;
+        at.u_tau = 0;
+    }
+    es = Uc - (Uc & en)*en;
+    if (mag(es) < SMALL*(mag(Uc) + VSMALL) || mag(es) < VSMALL)
+    {
+        // no flow along the wall: any direction in its plane
+        es = (mag(en.x()) < 0.9 ? vector(1, 0, 0) : vector(0, 1, 0));
+        es -= (es & en)*en;
+    }
+    es /= mag(es);
+    ez = es ^ en;
+
+    Random& rnd = cloud.rndGen();
+    // the parcel's normalized fluctuation (tTurb 1: drawn by this object)
+    double w[3];
+    if (p.tTurb() != 1)
+    {
+        for (int i = 0; i < 3; ++i) w[i] = rnd.GaussNormal<scalar>();
+        p.tTurb() = 1;
+    }
+    else
+    {
+        const vector& wg = p.UTurb();
+        w[0] = wg & es;
+        w[1] = wg & en;
+        w[2] = wg & ez;
+    }
+
+    // relaxation time with the parcel's slip (Schiller-Naumann)
+    const scalar rhoc = cloud.rho()[celli];
+    const scalar muc = cloud.mu()[celli];
+    const scalar Re = rhoc*mag(Uc - p.U())*p.d()/muc;
+    const scalar tauP = swp_tau_p(p.rho(), p.d(), muc, Re);
+
+    const double xi[3] =
+    {
+        rnd.GaussNormal<scalar>(),
+        rnd.GaussNormal<scalar>(),
+        rnd.GaussNormal<scalar>()
+    };
+    double kick[3];
+    swd_stats st;
+    const int rc = swd_advance(model_, &at, dt, tauP, w, xi, kick, &st);
+    if (rc != SWD_OK)
+    {
+        FatalErrorInFunction
+            << "snowNearWall: invalid state of parcel " << p.origId()
+            << " at " << p.position() << ": y " << at.y << " u_tau "
+            << at.u_tau << " nu " << at.nu << " k " << at.k << " epsilon "
+            << at.eps << " dt " << dt << " tau_p " << tauP << exit(FatalError);
+    }
+    p.U() += kick[0]*es + kick[1]*en + kick[2]*ez;
+    p.UTurb() = w[0]*es + w[1]*en + w[2]*ez;
+
+    // the sublayer closure: reaches the wall at the rate lambda
+    if (f < 0 || !swd_closure_on(model_))
+    {
+        return;
+    }
+    const scalar tauStokes = swp_tau_p(p.rho(), p.d(), muc, 0);
+    const scalar lambda = swd_deposit_rate(model_, &st, at.nu, tauStokes);
+    if (!(lambda > 0))
+    {
+        return;
+    }
+    const scalar prob = -std::expm1(-lambda*dt);
+    const label s = patchSlot(f);
+    eClosure_[s] += prob;
+    if (rnd.sample01<scalar>() >= prob)
+    {
+        return;
+    }
+
+    const polyPatch& pp = mesh.boundaryMesh()[patches_[s]];
+    const scalar mp = p.mass()*p.nParticle();
+    typedef SnowWallInteraction<CloudType> snowType;
+    snowType* snow = dynamic_cast<snowType*>(&cloud.patchInteraction());
+    if (snow)
+    {
+        // the impact: the parcel's own wall-normal velocity towards the wall,
+        // and along the wall the fluid's speed at contact height (the
+        // viscous sublayer carries it: u+ = y+ at y = d/2)
+        const scalar rPlus = 0.5*p.d()*st.ustar/at.nu;
+        const scalar Un = -(p.U() & en);
+        const vector Uimp =
+            -max(Un, scalar(0))*en + es*st.ustar*swp_uplus(rPlus);
+        const vector Usave = p.U();
+        p.U() = Uimp;
+        bool keep = true;
+        if (!snow->impactSnow(p, pp, f - pp.start(), keep))
+        {
+            p.U() = Usave;      // not a snow wall: the closure leaves it
+            return;
+        }
+        keepParticle = keep;
+        if (p.active())
+        {
+            // bounced or ripped off: on its way with the rebound velocity
+            // plus the wall's velocity along it
+            p.U() += (Usave - (Usave & en)*en) - es*st.ustar*swp_uplus(rPlus);
+        }
+    }
+    else
+    {
+        // any other patch interaction model: every wall contact a deposit
+        cloud.patchInteraction().addToEscapedParcels(mp);
+        keepParticle = false;
+    }
+    ++nClosure_[s];
+    mClosure_[s] += mp;
+}
+
+
+template<class CloudType>
+void Foam::SnowNearWall<CloudType>::write()
+{
+    labelList n(nClosure_);
+    scalarList m(mClosure_);
+    scalarList e(eClosure_);
+    Pstream::listCombineGather(n, plusEqOp<label>());
+    Pstream::listCombineScatter(n);
+    Pstream::listCombineGather(m, plusEqOp<scalar>());
+    Pstream::listCombineScatter(m);
+    Pstream::listCombineGather(e, plusEqOp<scalar>());
+    Pstream::listCombineScatter(e);
+    forAll(n, s)
+    {
+        n[s] += nClosure0_[s];
+        m[s] += mClosure0_[s];
+        e[s] += eClosure0_[s];
+    }
+    this->setModelProperty("nClosure", n);
+    this->setModelProperty("massClosure", m);
+    this->setModelProperty("expectedClosure", e);
+
+    const polyBoundaryMesh& bm = this->owner().mesh().boundaryMesh();
+    Info<< "    snowNearWall " << this->modelName()
+        << ": reached the wall through the sublayer closure:";
+    forAll(patches_, s)
+    {
+        Info<< " " << bm[patches_[s]].name() << " " << n[s] << " (" << m[s]
+            << " kg; expected " << e[s] << ")";
+    }
+    Info<< endl;
+
+    if (Pstream::master())
+    {
+        if (!seriesPtr_.valid())
+        {
+            const Time& time = this->owner().time();
+            const fileName dir =
+                this->outputDir()/time.timeName(time.startTime().value());
+            mkDir(dir);
+            seriesPtr_.reset(new OFstream(dir/"snowNearWall.dat"));
+            OFstream& os = seriesPtr_();
+            os  << "# snowNearWall " << this->modelName()
+                << ": parcels (and mass, kg) that reached each wall through"
+                << " the sublayer closure, cumulative, and the expected"
+                << " number" << nl << "# time";
+            forAll(patches_, s)
+            {
+                os  << tab << bm[patches_[s]].name() << ":n" << tab
+                    << bm[patches_[s]].name() << ":mass" << tab
+                    << bm[patches_[s]].name() << ":expected";
+            }
+            os  << nl;
+        }
+        OFstream& os = seriesPtr_();
+        os  << this->owner().time().timeName();
+        forAll(patches_, s)
+        {
+            os  << tab << n[s] << tab << m[s] << tab << e[s];
+        }
+        os  << endl;
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,5 @@
+/* snowNearWall for basicKinematicCollidingCloud. */
+#include "basicKinematicCollidingCloud.H"
+#include "SnowNearWall.H"
+
+makeCloudFunctionObjectType(SnowNearWall, basicKinematicCollidingCloud);

@@ -1,0 +1,5 @@
+/* snowNearWall for basicKinematicCloud. */
+#include "basicKinematicCloud.H"
+#include "SnowNearWall.H"
+
+makeCloudFunctionObjectType(SnowNearWall, basicKinematicCloud);
