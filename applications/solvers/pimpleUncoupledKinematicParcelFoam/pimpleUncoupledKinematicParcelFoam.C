@@ -24,13 +24,17 @@ Description
     its own constant/<name>Properties, e.g. the same spray with different
     wall-interaction settings, so a comparison costs one flow solution.
 
+    With -frozen the flow is not solved: the fields of the start time (a
+    converged steady flow, say) are held, and the time loop only evolves
+    the clouds, as icoUncoupledKinematicParcelFoam does for one cloud.
+
     Required: the pimpleFoam fields (U, p, turbulence fields),
     transportProperties with nu and rhoInf (the carrier density seen by the
     cloud), constant/g and <cloud>Properties.
 
 Usage
     pimpleUncoupledKinematicParcelFoam [-cloud NAME | -clouds '(NAME ...)']
-                                       [-parallel] [-help]
+                                       [-frozen] [-parallel] [-help]
 
     -cloud NAME         the cloud (default kinematicCloud)
     -clouds '(A B ..)'  several clouds, evolved one after the other in every
@@ -68,6 +72,12 @@ int main(int argc, char *argv[])
         "several clouds in the same flow, each from constant/<name>Properties"
     );
 
+    argList::addBoolOption
+    (
+        "frozen",
+        "hold the flow of the start time: evolve the clouds only"
+    );
+
     #include "postProcess.H"
 
     #include "addCheckCaseOptions.H"
@@ -85,6 +95,13 @@ int main(int argc, char *argv[])
 
     turbulence->validate();
 
+    const bool frozen = args.found("frozen");
+    if (frozen)
+    {
+        Info<< "Frozen flow: the fields of time " << runTime.timeName()
+            << " are held; only the clouds are evolved" << nl << endl;
+    }
+
     // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
     Info<< "\nStarting time loop\n" << endl;
@@ -100,7 +117,7 @@ int main(int argc, char *argv[])
         Info<< "Time = " << runTime.timeName() << nl << endl;
 
         // --- The flow: pimpleFoam's pressure-velocity PIMPLE loop
-        while (pimple.loop())
+        while (!frozen && pimple.loop())
         {
             #include "UEqn.H"
 
