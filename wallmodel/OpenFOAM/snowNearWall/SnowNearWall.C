@@ -405,7 +405,10 @@ void Foam::SnowNearWall<CloudType>::postMove
     {
         const vector n = mesh.faceAreas()[f]/mag(mesh.faceAreas()[f]);
         en = -n;
-        at.y = max((position0 - mesh.faceCentres()[f]) & en, scalar(0));
+        // the distance to the face itself (its nearest point), not to its
+        // plane: away from the face's edges the two are the same, beyond them
+        // the plane would bring a far parcel into the wall layer
+        at.y = mesh.faces()[f].nearestPoint(position0, mesh.points()).distance();
         at.u_tau = uTau_[f - mesh.nInternalFaces()];
     }
     else
