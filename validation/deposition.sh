@@ -1,0 +1,326 @@
+#!/usr/bin/env bash
+# deposition.sh - turbulent deposition in a channel: the CFD chain against the
+# measured deposition velocities (issue 20, doc/deposition.md)
+#
+# Usage: validation/deposition.sh --out DIR [--mesh resolved|wf|both]
+#            [--tau-plus LIST] [--models LIST] [--parcels N] [--t-run T]
+#            [--coeffs FILE | --calibrate] [--short] [--help]
+#
+# A fully developed channel flow between two walls, periodic along the flow
+# and across it, at the Reynolds number of Liu & Agarwal's pipe at Re = 10 000
+# (Re_tau about 314, air at 20 C), held by a mean pressure gradient; the flow
+# is a steady RANS (kOmegaSST, simpleFoam), then frozen. In it, for every
+# tau+ of the list and every dispersion treatment, one cloud of ice spheres
+# (920 kg/m3, the density of Liu & Agarwal's olive oil) released uniformly
+# over the channel; every wall contact is a deposit (localInteraction escape).
+# The clouds ride the frozen flow together (pimpleUncoupledKinematicParcelFoam
+# -frozen); the deposition velocity of each is
+#   V+ = (D + E) h / (u_tau Int N dt)     over the window after the warm-up,
+# D the parcels that left through the walls by tracking, E the expected
+# number that the sublayer closure of snowNearWall brought there (its
+# probabilities summed; 0 for the other treatments), N the parcels in the
+# channel, h its half height; standard error V+/sqrt(D + E) (Poisson).
+#
+# Treatments (--models, comma-separated): stochastic (stochasticDispersionRAS),
+# gradient (gradientDispersionRAS), none (no dispersion), nearwall
+# (snowNearWall: the C core's continuous random walk with the sublayer
+# closure of --coeffs), crw (snowNearWall without the closure).
+# Meshes (--mesh): resolved (first cell y+ about 0.5, 60 cells per half
+# height, graded), wf (a wall-function mesh: 10 uniform cells, first cell
+# centre y+ about 30, as on the wedge), both (default).
+#
+# Writes into DIR (created; an existing DIR is replaced only when the run
+# succeeds): vplus.csv and vplus.md (V+ per mesh, treatment and tau+, with the
+# counts, the error and Wood's correlation), vplus.png (V+ against tau+ with
+# the correlations of the measurements), flow.md (u_tau, Re_tau, y+ of the
+# first cell, the run times) and the cases (<mesh>/case, logs included).
+# --tau-plus: default 0.3,1,3,10,30; --parcels per cloud (default 2000);
+# --t-run: the window in wall units t+ = t u_tau^2/nu (default 20000, after a
+# warm-up of 2000); --coeffs: the closure (default etc/deposition.coeffs, the
+# shipped calibration); --calibrate: calibrate it anew first (bin/snowdeposit
+# calibrate, about 4 min; into DIR/deposition.coeffs); --short: the test (wf
+# mesh, tau+ 1,10, nearwall only, 1000 parcels, window 8000).
+# Exit status: 0 done, 1 a run failed, 2 usage error.
+set -euo pipefail
+top=$(cd "$(dirname "$0")/.." && pwd)
+here="$top/validation/deposition"
+out=
+meshes=both
+taus=0.3,1,3,10,30
+models=stochastic,gradient,none,nearwall
+parcels=2000
+trun=20000
+twarm=2000
+coeffs=
+calibrate=0
+while [ $# -gt 0 ]; do
+    case "$1" in
+        -h|--help) sed -n '2,43p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        --out) out=${2:?"--out needs a folder"}; shift ;;
+        --mesh) meshes=${2:?"--mesh needs resolved, wf or both"}; shift ;;
+        --tau-plus) taus=${2:?"--tau-plus needs a list"}; shift ;;
+        --models) models=${2:?"--models needs a list"}; shift ;;
+        --parcels) parcels=${2:?"--parcels needs a number"}; shift ;;
+        --t-run) trun=${2:?"--t-run needs a number"}; shift ;;
+        --coeffs) coeffs=${2:?"--coeffs needs a file"}; shift ;;
+        --calibrate) calibrate=1 ;;
+        --short) meshes=wf; taus=1,10; models=nearwall; parcels=1000; trun=8000; twarm=1000 ;;
+        *) echo "deposition.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
+    esac
+    shift
+done
+die2() { echo "deposition.sh: $*" >&2; exit 2; }
+[ -n "$out" ] || die2 "--out DIR is required (see --help)"
+case "$meshes" in resolved|wf) ;; both) meshes="resolved wf" ;; *) die2 "--mesh: '$meshes' is not resolved, wf or both" ;; esac
+[[ "$parcels" =~ ^[1-9][0-9]{0,5}$ ]] || die2 "--parcels: '$parcels' is not a whole number in 1..999999"
+[[ "$trun" =~ ^[1-9][0-9]{0,6}$ ]] || die2 "--t-run: '$trun' is not a whole number of wall units in 1..9999999"
+IFS=, read -r -a tauList <<< "$taus"
+[ "${#tauList[@]}" -ge 1 ] && [ "${#tauList[@]}" -le 12 ] || die2 "--tau-plus: 1 to 12 values"
+for t in "${tauList[@]}"; do
+    awk -v t="$t" 'BEGIN { exit !(t ~ /^[0-9]*\.?[0-9]+([eE][-+]?[0-9]+)?$/ && t + 0 > 0 && t + 0 <= 1000) }' \
+        || die2 "--tau-plus: '$t' is not a number in (0, 1000]"
+done
+IFS=, read -r -a modelList <<< "$models"
+for m in "${modelList[@]}"; do
+    case "$m" in stochastic|gradient|none|nearwall|crw) ;; *) die2 "--models: '$m' is not stochastic, gradient, none, nearwall or crw" ;; esac
+done
+[ -z "$coeffs" ] || [ "$calibrate" = 0 ] || die2 "--coeffs and --calibrate exclude each other"
+[ -n "$coeffs" ] || coeffs="$top/etc/deposition.coeffs"
+[ -r "$coeffs" ] || die2 "--coeffs: cannot read '$coeffs'"
+for exe in simpleFoam blockMesh; do
+    command -v "$exe" >/dev/null || { echo "deposition.sh: $exe not found (OpenFOAM: etc/setup.sh)" >&2; exit 1; }
+done
+[ -x "$top/platforms/bin/pimpleUncoupledKinematicParcelFoam" ] && [ -f "$top/platforms/lib/libsnowWallInteraction.so" ] \
+    || { echo "deposition.sh: the project's solver and wrapper are missing: run ./Allwmake" >&2; exit 1; }
+[ -x "$top/bin/snowdeposit" ] || { echo "deposition.sh: bin/snowdeposit missing: run ./Allwmake" >&2; exit 1; }
+command -v gnuplot >/dev/null || { echo "deposition.sh: gnuplot not found" >&2; exit 1; }
+# shellcheck source=outdir.sh
+. "$top/validation/outdir.sh"
+outdir_begin deposition "$out"
+# shellcheck source=../etc/openfoam-env.sh
+. "$top/etc/openfoam-env.sh" >/dev/null
+t_start=$(date +%s)
+
+# the channel: half height h (Liu & Agarwal's pipe radius), bulk velocity for
+# Re_tau about 314 with nu = 1.5e-5 m2/s
+h=0.00635
+ubar=13.3
+nu=1.5e-5
+rhop=920
+mu=1.8e-5   # nu * rhoInf (1.2)
+
+if [ "$calibrate" = 1 ]; then
+    echo "deposition.sh: calibrating the sublayer closure (snowdeposit calibrate)"
+    "$top/bin/snowdeposit" calibrate --out "$tmp/deposition.coeffs" > "$tmp/calibrate.txt"
+    coeffs="$tmp/deposition.coeffs"
+else
+    cp "$coeffs" "$tmp/deposition.coeffs"
+    coeffs="$tmp/deposition.coeffs"
+fi
+
+# blockMeshDict of a mesh: 2 x NY x 2 cells, y graded symmetrically to the walls
+write_mesh() {   # case ny grading
+    cat > "$1/system/blockMeshDict" <<EOF
+FoamFile { version 2.0; format ascii; class dictionary; object blockMeshDict; }
+// validation/deposition: channel 0 < y < 2h, h = $h m, periodic in x and z
+convertToMeters $h;
+vertices ((0 0 0) (2 0 0) (2 2 0) (0 2 0) (0 0 2) (2 0 2) (2 2 2) (0 2 2));
+blocks (hex (0 1 2 3 4 5 6 7) (2 $2 2) simpleGrading (1 ((0.5 0.5 $3) (0.5 0.5 $(awk -v g="$3" 'BEGIN { printf "%.10g", 1/g }'))) 1));
+boundary
+(
+    walls { type wall; faces ((0 1 5 4) (3 7 6 2)); }
+    left  { type cyclic; neighbourPatch right; faces ((0 4 7 3)); }
+    right { type cyclic; neighbourPatch left;  faces ((1 2 6 5)); }
+    front { type cyclic; neighbourPatch back;  faces ((0 3 2 1)); }
+    back  { type cyclic; neighbourPatch front; faces ((4 5 6 7)); }
+);
+EOF
+}
+
+control() {   # case app endTime deltaT writeInterval
+    cat > "$1/system/controlDict" <<EOF
+FoamFile { version 2.0; format ascii; class dictionary; object controlDict; }
+application     $2;
+startFrom       startTime;
+startTime       0;
+stopAt          endTime;
+endTime         $3;
+deltaT          $4;
+writeControl    timeStep;
+writeInterval   $5;
+purgeWrite      0;
+writeFormat     ascii;
+writePrecision  10;
+timeFormat      general;
+timePrecision   10;
+runTimeModifiable false;
+adjustTimeStep  no;
+libs            ("libsnowWallInteraction.so");
+EOF
+}
+
+# cloud properties: one tau+ and treatment
+write_cloud() {   # case name d model
+    local c=$1 name=$2 d=$3 model=$4 disp=stochasticDispersionRAS funcs=
+    case "$model" in
+        stochastic) disp=stochasticDispersionRAS ;;
+        gradient) disp=gradientDispersionRAS ;;
+        none) disp=none ;;
+        nearwall|crw)
+            disp=none
+            local inc='#include "deposition.coeffs"' cl=on
+            [ "$model" = nearwall ] || { inc=; cl=off; }
+            funcs="nearWall { type snowNearWall; patches (walls); closure $cl; $inc }"
+            ;;
+    esac
+    cat > "$c/constant/${name}Properties" <<EOF
+FoamFile { version 2.0; format ascii; class dictionary; object ${name}Properties; }
+solution
+{
+    active          true;
+    coupled         false;
+    transient       yes;
+    cellValueSourceCorrection off;
+    maxCo           0.3;
+    interpolationSchemes { rho cell; U cellPoint; mu cell; k cell; epsilon cell; }
+    integrationSchemes { U analytical; }
+}
+constantProperties { rho0 $rhop; }
+subModels
+{
+    particleForces { sphereDrag; gravity; }
+    injectionModels
+    {
+        uniform
+        {
+            type            manualInjection;
+            massTotal       1;
+            parcelBasisType fixed;
+            nParticle       1;
+            SOI             0;
+            positionsFile   "positions";
+            U0              ($ubar 0 0);
+            sizeDistribution { type fixedValue; fixedValueDistribution { value $d; } }
+        }
+    }
+    dispersionModel $disp;
+    patchInteractionModel localInteraction;
+    localInteractionCoeffs { patches ( walls { type escape; } ); }
+    surfaceFilmModel none;
+    stochasticCollisionModel none;
+    collisionModel  none;
+}
+cloudFunctions { $funcs }
+EOF
+}
+
+# parcels released uniformly over the channel (away from the walls by 1e-6 h)
+write_positions() {   # case n seed
+    awk -v n="$2" -v s="$3" -v h="$h" 'BEGIN {
+        srand(s)
+        print "FoamFile { version 2.0; format ascii; class vectorField; object positions; }"
+        print n; print "("
+        for (i = 0; i < n; i++) {
+            y = h * (1e-6 + (2 - 2e-6) * rand())
+            printf "(%.10g %.10g %.10g)\n", 2 * h * rand(), y, 2 * h * rand()
+        }
+        print ")"
+    }' > "$1/constant/positions"
+}
+
+rows="$tmp/rows.csv"
+echo "mesh,model,tau_plus,d_m,parcels,deposits_tracked,closure_drawn,closure_expected,int_N_dt_s,vplus,vplus_se,wood" > "$rows"
+flowmd="$tmp/flow.md"
+{
+    echo "# The channel flow (validation/deposition.sh)"
+    echo
+    echo "| mesh | cells across | first cell y+ (centre) | u_tau [m/s] | Re_tau | bulk U [m/s] | flow run [s] | particle run [s] | parcel steps |"
+    echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|"
+} > "$flowmd"
+
+for mesh in $meshes; do
+    c="$tmp/$mesh/case"
+    mkdir -p "$c"
+    cp -r "$here/channel/system" "$here/channel/constant" "$here/channel/0.orig" "$c/"
+    if [ "$mesh" = resolved ]; then
+        ny=120; grading=38; kwall=fixedValue; nutwall=nutLowReWallFunction
+    else
+        ny=10; grading=1; kwall=kqRWallFunction; nutwall=nutkWallFunction
+    fi
+    cat > "$c/constant/channelParameters" <<EOF
+Ubar    $ubar;
+kWall   $kwall;
+nutWall $nutwall;
+EOF
+    write_mesh "$c" "$ny" "$grading"
+    cp "$c/system/fvSchemes.flow" "$c/system/fvSchemes"
+    control "$c" simpleFoam 4000 1 4000
+    echo "deposition.sh: $mesh mesh: blockMesh, simpleFoam"
+    t0=$(date +%s)
+    (cd "$c" && blockMesh > log.blockMesh 2>&1 && rm -rf 0 && cp -r 0.orig 0 \
+        && simpleFoam > log.simpleFoam 2>&1) || { echo "deposition.sh: $mesh: the flow failed (see $c/log.*)" >&2; exit 1; }
+    tflow=$(( $(date +%s) - t0 ))
+    last=$(cd "$c" && foamListTimes -latestTime 2>/dev/null | tail -1)
+    # u_tau from the mean pressure gradient: u_tau^2 = h dp/dx (kinematic)
+    gradp=$(awk '/Pressure gradient source/ { for (i = 1; i <= NF; i++) if ($i == "gradient") g = $(i + 2) } END { print g }' "$c/log.simpleFoam")
+    utau=$(awk -v g="$gradp" -v h="$h" 'BEGIN { printf "%.6g", sqrt(g * h) }')
+    retau=$(awk -v u="$utau" -v h="$h" -v nu="$nu" 'BEGIN { printf "%.4g", u * h / nu }')
+    (cd "$c" && simpleFoam -postProcess -func yPlus -time "$last" > log.yPlus 2>&1) || true
+    yplus=$(awk '/y\+ : min/ { for (i = 1; i <= NF; i++) if ($i == "average") a = $(i + 2) } END { print a }' "$c/log.yPlus")
+    # the converged flow becomes time 0 for the particles
+    (cd "$c" && rm -rf 0 && mv "$last" 0 && rm -rf 0/uniform)
+
+    # the clouds
+    tnu=$(awk -v u="$utau" -v nu="$nu" 'BEGIN { printf "%.10g", nu / (u * u) }')
+    dt=$(awk -v t="$tnu" 'BEGIN { printf "%.6g", 2 * t }')
+    tend=$(awk -v t="$tnu" -v w="$twarm" -v r="$trun" 'BEGIN { printf "%.6g", (w + r) * t }')
+    nsteps=$(awk -v a="$tend" -v b="$dt" 'BEGIN { printf "%d", a / b + 0.5 }')
+    tend=$(awk -v n="$nsteps" -v b="$dt" 'BEGIN { printf "%.10g", n * b }')
+    nwarm=$(awk -v w="$twarm" 'BEGIN { printf "%d", w / 2 + 0.5 }')
+    write_positions "$c" "$parcels" 7
+    cp "$coeffs" "$c/constant/deposition.coeffs"
+    clouds=()
+    for m in "${modelList[@]}"; do
+        for i in "${!tauList[@]}"; do
+            t=${tauList[$i]}
+            d=$(awk -v t="$t" -v u="$utau" -v nu="$nu" -v mu="$mu" -v r="$rhop" 'BEGIN { printf "%.6g", sqrt(18 * mu * t * nu / (r * u * u)) }')
+            name="c_${m}_$i"
+            write_cloud "$c" "$name" "$d" "$m"
+            clouds+=("$name")
+            echo "$name $m $t $d" >> "$c/clouds.txt"
+        done
+    done
+    # the particle run: steps of 2 t+, written at the end of the warm-up and the end
+    control "$c" pimpleUncoupledKinematicParcelFoam "$tend" "$dt" "$nwarm"
+    cat > "$c/system/fvSchemes" <<'EOF'
+FoamFile { version 2.0; format ascii; class dictionary; object fvSchemes; }
+ddtSchemes      { default Euler; }
+gradSchemes     { default Gauss linear; }
+divSchemes      { default none; div(phi,U) Gauss linear; div(phi,k) Gauss linear; div(phi,omega) Gauss linear; div((nuEff*dev2(T(grad(U))))) Gauss linear; }
+laplacianSchemes { default Gauss linear corrected; }
+interpolationSchemes { default linear; }
+snGradSchemes   { default corrected; }
+wallDist        { method meshWave; }
+EOF
+    echo "deposition.sh: $mesh mesh: u_tau $utau m/s, Re_tau $retau; ${#clouds[@]} clouds of $parcels parcels, $nsteps steps of 2 t+"
+    t0=$(date +%s)
+    (cd "$c" && pimpleUncoupledKinematicParcelFoam -frozen -clouds "($(echo "${clouds[@]}"))" > log.particles 2>&1) \
+        || { echo "deposition.sh: $mesh: the particle run failed (see $c/log.particles)" >&2; exit 1; }
+    tpart=$(( $(date +%s) - t0 ))
+
+    # per cloud: V+ from the parcels left at every step and the closure's counts
+    "$here/channel-vplus" --case "$c" --mesh "$mesh" --h "$h" --utau "$utau" --dt "$dt" \
+        --nwarm "$nwarm" --parcels "$parcels" | sort -t, -k2,2 -k3,3g >> "$rows" \
+        || { echo "deposition.sh: $mesh: reading the particle run failed" >&2; exit 1; }
+    steps=$(awk '/^Time = /' "$c/log.particles" | wc -l)
+    echo "| $mesh | $ny | $yplus | $utau | $retau | $ubar | $tflow | $tpart | $steps time steps x ${#clouds[@]} clouds |" >> "$flowmd"
+done
+t_total=$(( $(date +%s) - t_start ))
+echo >> "$flowmd"
+echo "Whole run: $t_total s (2 cores available, the runs are serial)." >> "$flowmd"
+cp "$rows" "$tmp/vplus.csv"
+rm -f "$rows"
+"$here/deposition-report" --out "$tmp" "$tmp/vplus.csv" || { echo "deposition.sh: the report failed" >&2; exit 1; }
+echo "deposition.sh: done in $t_total s"
+cat "$tmp/vplus.md"
+outdir_commit "$out"
