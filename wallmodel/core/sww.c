@@ -3,6 +3,7 @@
 #include "swp_cor.h"
 #include "swp_detach.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -670,6 +671,31 @@ double sww_oblique_slide(const sww_model *m)
     return m->ob_ready && m->has[K_OBSLIDE] ? m->num[K_OBSLIDE] : NAN;
 }
 
+int sww_check_oblique_slide(sww_model *m, double slide)
+{
+    m->err[0] = '\0'; /* the message is of the last call only */
+    if (!isfinite(slide) || slide < 0.0)
+        return sww_fail(m, SWW_EINVAL, "tangentialGate slideLength %g must be a finite length "
+                        ">= 0 m", slide);
+    if (!m->ob_ready)
+        return sww_fail(m, SWW_EMISSING, "tangentialGate slideLength %g m: the regime has no "
+                        "oblique table (obliqueVt, obliqueVn, obliqueDCrit) to check it against: "
+                        "make regime.coeffs with snowregime map --vt 0,... --max-slide %g", slide,
+                        slide);
+    if (!m->has[K_OBSLIDE])
+        return sww_fail(m, SWW_EMISSING, "tangentialGate slideLength %g m: the regime's oblique "
+                        "table has no obliqueSlide (the slide length it was made with), so it "
+                        "cannot be checked: remake regime.coeffs with snowregime map --vt 0,... "
+                        "--max-slide %g (which writes obliqueSlide), or remove slideLength",
+                        slide, slide);
+    const double made = m->num[K_OBSLIDE];
+    if (!(fabs(slide - made) <= 1e-9 * made))
+        return sww_fail(m, SWW_EINVAL, "tangentialGate slideLength %g m differs from the regime "
+                        "table's obliqueSlide %g m: remake regime.coeffs with snowregime map "
+                        "--max-slide %g", slide, made, slide);
+    return SWW_OK;
+}
+
 int sww_oblique_table(const sww_model *m, size_t *nvt, size_t *nvn)
 {
     if (nvt)
@@ -921,8 +947,11 @@ int sww_decide(const sww_model *m, const sww_impact *in, sww_outcome *out)
 
 double sww_monolayer_mass(double rho, double d)
 {
-    if (!(rho > 0.0) || !(d > 0.0) || isinf(rho) || isinf(d))
+    /* isfinite first: an ordered comparison of a NaN raises FE_INVALID */
+    if (!isfinite(rho) || !isfinite(d) || rho <= 0.0 || d <= 0.0)
         return NAN;
+    if (rho > DBL_MAX / d)
+        return INFINITY; /* the product would overflow */
     /* hexagonally close-packed spheres on a plane: area fraction pi/(2 sqrt 3),
      * a sphere's mass over its projected area (2/3) rho d */
     return M_PI / (2.0 * sqrt(3.0)) * (2.0 / 3.0) * rho * d;
@@ -930,12 +959,12 @@ double sww_monolayer_mass(double rho, double d)
 
 double sww_cover_fraction(double mass_per_area, double cover_mass)
 {
-    if (isnan(mass_per_area) || !(cover_mass > 0.0))
+    if (isnan(mass_per_area) || isnan(cover_mass) || cover_mass <= 0.0)
         return NAN;
-    if (!(mass_per_area > 0.0))
+    if (mass_per_area <= 0.0)
         return 0.0;
-    const double w = mass_per_area / cover_mass;
-    return w < 1.0 ? w : 1.0;
+    /* compared before dividing: a tiny cover_mass cannot overflow the ratio */
+    return mass_per_area < cover_mass ? mass_per_area / cover_mass : 1.0;
 }
 
 int sww_decide_blend(const sww_model *bare, const sww_model *covered, double w,

@@ -147,7 +147,8 @@ int sww_decide_blend(const sww_model *bare, const sww_model *covered, double w,
 double sww_cover_fraction(double mass_per_area, double cover_mass);
 /* Mass per area of one monolayer of spheres of diameter d and density rho,
  * hexagonally close packed: m_c = (pi / (2 sqrt 3)) (2/3) rho d = 0.6046 rho d
- * [kg/m2] (NaN for non-positive or infinite input). */
+ * [kg/m2] (NaN for non-positive or non-finite input, INFINITY where rho d
+ * overflows). */
 double sww_monolayer_mass(double rho, double d);
 
 /* d_crit(v_n) [m]: the fit inside [vnMin, vnMax]; outside it the power law
@@ -167,8 +168,16 @@ double sww_dcrit(const sww_model *m, double vn);
  * every v_t. NaN only for NaN input or a model that is not ready. */
 double sww_dcrit_oblique(const sww_model *m, double vn, double vt);
 /* The slide length the oblique table was made with [m] (obliqueSlide; NaN
- * without a table or the key). */
+ * without a table or the key: test it with isnan(), never with an ordered
+ * comparison, which raises FE_INVALID on a NaN). */
 double sww_oblique_slide(const sww_model *m);
+/* Check a slide length [m] that a case states for the oblique table (the
+ * wrapper's tangentialGate slideLength) against the table's obliqueSlide:
+ * SWW_OK when they agree to 1e-9 relative (exactly, for 0); SWW_EINVAL for a
+ * slide that is not finite and >= 0, or one that differs; SWW_EMISSING without
+ * an oblique table or without obliqueSlide in it. The message names both values
+ * and the remedy. Forms no NaN and compares none. */
+int sww_check_oblique_slide(sww_model *m, double slide);
 /* 1 when the regime has an oblique table (sizes into *nvt, *nvn; may be NULL). */
 int sww_oblique_table(const sww_model *m, size_t *nvt, size_t *nvn);
 /* 1 when the regime has a stick-probability table (probabilityD, probabilityVn,
