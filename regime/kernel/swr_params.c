@@ -37,11 +37,15 @@ static const num_key num_keys[] = {
     NK(xi_crit,  1.0e-12, 1.0e-6, "critical rolling displacement [m]"),
     NK(accuracy, 10.0,   1.0e5,  "steps per Hertz contact time [-]"),
 };
+/* Largest asperity spacing [m] (its range below; the lower bound on a lattice
+ * is 2 asperity_r, checked in swr_params_validate). */
+#define ASPERITY_SPACING_MAX 10.0
+
 /* The rough-wall keys: set and validated like the others, printed only for
  * wall lattice (a flat-wall output lists no wall keys, as before). */
 static const num_key wall_keys[] = {
     NK(asperity_r,       1.0e-9, 1.0,  "asperity radius [m]"),
-    NK(asperity_spacing, 1.0e-9, 10.0, "asperity spacing [m]"),
+    NK(asperity_spacing, 1.0e-9, ASPERITY_SPACING_MAX, "asperity spacing [m]"),
     NK(asperity_jitter,  0.0,    0.5,  "random lateral offset of an asperity / spacing [-]"),
     NK(asperity_dz,      0.0,    1.0,  "random sinking depth of an asperity [m]"),
     NK(wall_seed,        0.0,    9.007199254740992e15, "seed of the random wall (integer)"),
@@ -341,6 +345,15 @@ int swr_params_validate(const swr_params *p, char *err, size_t errlen)
         return fail(err, errlen, "lattice: invalid value %d", (int)p->lattice);
     if (check_ranges(p, wall_keys, N_WALL, err, errlen) != 0)
         return -1;
+    /* Overlapping asperities (spacing below 2 r) put ever more asperities
+     * under one contact patch as the spacing shrinks, and the contact search of
+     * one impact grows as (R/s)^2 without bound (issue 22: hours for one
+     * impact); the lattice is defined for asperities that at most touch. */
+    if (p->wall == SWR_WALL_KIND_LATTICE && p->asperity_spacing < 2.0 * p->asperity_r)
+        return fail(err, errlen, "asperity_spacing: %g m is below 2 asperity_r = %g m: the "
+                    "asperities would overlap (accepted on a lattice: 2 asperity_r <= "
+                    "asperity_spacing <= %g m)", p->asperity_spacing, 2.0 * p->asperity_r,
+                    ASPERITY_SPACING_MAX);
     if (p->wall == SWR_WALL_KIND_LATTICE && p->cor == SWR_COR_THORNTON_NING)
         return fail(err, errlen, "cor: thornton-ning is not available on a rough wall (wall lattice): "
                                  "its contact history is kept for one contact only; use thornton");

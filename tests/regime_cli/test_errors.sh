@@ -34,6 +34,9 @@ check "--vmin: 'inf'" "$SR" map --vmin inf
 check "--vmax" "$SR" map --vmin 2 --vmax 1
 check "--angle: '95'" "$SR" map --angle 95
 check "unknown option '--frob'" "$SR" map --frob
+# overlapping asperities (issue 22: one impact ran for hours): refused before any work
+check "asperity_spacing: 1.5e-06 m is below 2 asperity_r = 2e-06 m: the asperities would overlap" \
+    "$SR" map --set wall=lattice --set asperity_spacing=1.5e-6
 check "--set: gamma" "$SR" sensitivity --set gamma=1e9
 check "--nd: '0'" "$SR" sensitivity --nd 0
 check "--accuracy: '-3'" "$SR" convergence --accuracy -3
@@ -43,7 +46,9 @@ for a in "vcrit --d -2e-5|--d: '-2e-5'" "vcrit --d 1e-5,,2e-5|empty item" "vcrit
          "vcrit --d 1e-5 --set mu=-1|mu" "collide --d 1e-5 --vn -1|--vn: '-1'" "collide --vn 1|--d: missing" \
          "collide --d 1e-5 --vn 1 --set E=abc|abc" "vcrit --d|--d: missing value" \
          "collide --d 5e-5 --vn 5000|--vn: '5000'" "vcrit --d 1e-5 --vmax 1e4|--vmax: '1e4'" \
-         "collide --d 5e-5 --vn 1e-90 --set adhesion=none|--vn = 1e-90 is invalid" "collide --d 0.5 --vn 1|--d: '0.5'"; do
+         "collide --d 5e-5 --vn 1e-90 --set adhesion=none|--vn = 1e-90 is invalid" "collide --d 0.5 --vn 1|--d: '0.5'" \
+         "collide --d 1e-3 --vn 1 --set wall=lattice --set asperity_spacing=1e-9|asperity_spacing: 1e-09 m is below 2 asperity_r" \
+         "vcrit --d 1e-5 --set wall=lattice --set lattice=hex --set asperity_r=2e-6 --set asperity_spacing=3e-6|below 2 asperity_r = 4e-06 m"; do
     args=${a%%|*}; want=${a#*|}
     "$SR" $args >/dev/null 2>"$WORK/err"; rc=$?
     [ $rc -eq 2 ] || fail "'$args': exit $rc, want 2"
