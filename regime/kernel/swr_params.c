@@ -144,12 +144,19 @@ static double value_of(const swr_params *p, const num_key *k)
     return *(const double *)((const char *)p + k->off);
 }
 
+/* v in [lo, hi], false for NaN without comparing it: an ordered comparison of a
+ * NaN raises FE_INVALID, which OpenFOAM and the tests trap (issue 22). */
+static int in_range(double v, double lo, double hi)
+{
+    return !isnan(v) && v >= lo && v <= hi;
+}
+
 /* Every key of table t within its range: 0, or -1 naming the first that is not. */
 static int check_ranges(const swr_params *p, const num_key *t, size_t n, char *err, size_t errlen)
 {
     for (size_t i = 0; i < n; i++) {
         const double v = value_of(p, &t[i]);
-        if (!(v >= t[i].lo && v <= t[i].hi))
+        if (!in_range(v, t[i].lo, t[i].hi))
             return fail(err, errlen, "%s: %g is out of range [%g, %g] (%s)", t[i].key, v, t[i].lo,
                         t[i].hi, t[i].what);
     }
@@ -171,7 +178,7 @@ int swr_params_set(swr_params *p, const char *key, const char *value, char *err,
         double v;
         if (parse_number(value, &v) != 0)
             return fail(err, errlen, "%s: '%s' is not a finite number (%s)", key, value, k->what);
-        if (!(v >= k->lo && v <= k->hi))
+        if (!in_range(v, k->lo, k->hi))
             return fail(err, errlen, "%s: %s is out of range [%g, %g] (%s)", key, value,
                         k->lo, k->hi, k->what);
         if (k->off == offsetof(swr_params, wall_seed) && v != floor(v))
@@ -213,7 +220,7 @@ int swr_params_set(swr_params *p, const char *key, const char *value, char *err,
                 return fail(err, errlen,
                             "cor: '%s' is neither elastic, thornton, thornton-asymptote, "
                             "thornton-ning nor a number", value);
-            if (!(v >= COR_MIN && v <= COR_MAX))
+            if (!in_range(v, COR_MIN, COR_MAX))
                 return fail(err, errlen, "cor: %s is out of range [%g, %g] (constant restitution)",
                             value, COR_MIN, COR_MAX);
             p->cor = SWR_COR_CONSTANT;
@@ -330,7 +337,7 @@ int swr_params_validate(const swr_params *p, char *err, size_t errlen)
         return -1;
     if (p->cor < SWR_COR_ELASTIC || p->cor > SWR_COR_THORNTON_NING)
         return fail(err, errlen, "cor: invalid mode %d", (int)p->cor);
-    if (p->cor == SWR_COR_CONSTANT && !(p->cor_value >= COR_MIN && p->cor_value <= COR_MAX))
+    if (p->cor == SWR_COR_CONSTANT && !in_range(p->cor_value, COR_MIN, COR_MAX))
         return fail(err, errlen, "cor: %g is out of range [%g, %g] (constant restitution)",
                     p->cor_value, COR_MIN, COR_MAX);
     if (p->cor_pair != SWR_PAIR_WALL && p->cor_pair != SWR_PAIR_PARTICLE)

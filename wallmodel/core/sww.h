@@ -100,7 +100,8 @@ int sww_regime_commit(sww_model *m, const char *origin);
 void sww_regime_clear(sww_model *m);
 
 /* ---- options (each off / neutral by default) ----------------------------- */
-/* Tangential gate: a stick candidate sticks only if vt <= vt_max (d/d_ref)^exponent. */
+/* Tangential gate: a stick candidate sticks only if vt <= vt_max (d/d_ref)^exponent
+ * (vt_max finite >= 0, d_ref finite > 0, |exponent| <= 1000; SWW_EINVAL otherwise). */
 int sww_set_tangential_gate(sww_model *m, double vt_max, double d_ref, double exponent);
 /* Tangential gate from the regime map's oblique table (model regime): a stick
  * candidate sticks only if d <= sww_dcrit_oblique(vn, vt). Needs a committed
@@ -153,7 +154,8 @@ double sww_monolayer_mass(double rho, double d);
 
 /* d_crit(v_n) [m]: the fit inside [vnMin, vnMax]; outside it the power law
  * d_crit(vn_end) (v_n/vn_end)^slope anchored at the range end; INFINITY for
- * v_n <= 0; NaN only for NaN input or a model that is not ready. */
+ * v_n <= 0 and where the power law exceeds e^709 = 8e307 m (a subnormal v_n),
+ * without an overflow; NaN only for NaN input or a model that is not ready. */
 double sww_dcrit(const sww_model *m, double vn);
 /* d_crit(v_n, v_t) [m] with the oblique table: min(d_crit(v_n), D_t(v^_n, v_t)),
  * d_crit(v_n) the normal interface (above), D_t the tangential limit taken
@@ -191,7 +193,11 @@ double sww_rebound_normal(const sww_model *m, double vn);
  * that is not finite and > 0. */
 double sww_vt_max(const sww_model *m, double d);
 /* Critical wall shear stress tau_c(d) [Pa] (INFINITY when the gate is off);
- * NaN for a d that is not finite and > 0. */
+ * NaN for a d outside [SWW_TAU_D_MIN, SWW_TAU_D_MAX] = [1e-12, 1e3] m (NaN and
+ * infinities included), where the detachment formulas leave the doubles' range;
+ * sww_decide then refuses a stick candidate that reaches the shear gate. */
+#define SWW_TAU_D_MIN 1e-12
+#define SWW_TAU_D_MAX 1e3
 double sww_tau_crit(const sww_model *m, double d);
 /* 1 when sww_decide may be called. */
 int sww_ready(const sww_model *m);
