@@ -34,6 +34,10 @@ check "--vmin: 'inf'" "$SR" map --vmin inf
 check "--vmax" "$SR" map --vmin 2 --vmax 1
 check "--angle: '95'" "$SR" map --angle 95
 check "unknown option '--frob'" "$SR" map --frob
+# an unsorted or repeated --vt / --angle list (issue 22: found after the maps, exit 1)
+check "--vt: '0,0.5,0.5,1': value 0.5 (item 3) is not above 0.5 (item 2)" "$SR" map --vt 0,0.5,0.5,1
+check "--vt: '0,1,0.5': value 0.5 (item 3) is not above 1 (item 2)" "$SR" map --vt 0,1,0.5
+check "--angle: '30,0': value 0 (item 2) is not above 30" "$SR" map --angle 30,0
 # overlapping asperities (issue 22: one impact ran for hours): refused before any work
 check "asperity_spacing: 1.5e-06 m is below 2 asperity_r = 2e-06 m: the asperities would overlap" \
     "$SR" map --set wall=lattice --set asperity_spacing=1.5e-6
