@@ -14,7 +14,8 @@
 # Set-up inputs that crashed with SIGFPE (issue 22) are FatalIOErrors naming the key,
 # the value and the range: buildUp coverDiameter / coverMass out of range or both
 # given, tangentialGate slideLength against an oblique table without obliqueSlide, a
-# different obliqueSlide, a negative slideLength (expect_fatal_io of common.sh).
+# different obliqueSlide, a negative slideLength, shearGate rhoAir out of range
+# (expect_fatal_io of common.sh).
 set -euo pipefail
 # shellcheck source=common.sh
 . "$(dirname "$0")/common.sh"
@@ -199,6 +200,11 @@ for v in 0 -1; do
 done
 with_buildup "$tmp/coverBoth" "coverMass 0.01; coverDiameter 3e-05;"
 expect_fatal_io "$tmp/coverBoth" "buildUp: give coverDiameter or coverMass, not both"
+# shearGate rhoAir: checked at set-up (a huge one overflowed rhoAir * tau at an impact)
+case_from_base "$tmp/rhoHuge"
+sed -i 's/^\( *rhoAir *\)1;/\1 1e300;/' "$tmp/rhoHuge/$cpr"
+grep -q "rhoAir *1e300;" "$tmp/rhoHuge/$cpr" || fail "rhoHuge: rhoAir not set"
+expect_fatal_io "$tmp/rhoHuge" "shearGate: rhoAir 1e+300 is outside the accepted range \[1e-06, 10000\] kg/m3"
 # an oblique table with (SLIDE) or without obliqueSlide, and tangentialGate { GATE }
 with_oblique() { # CASE SLIDE GATE
     case_from_base "$1"

@@ -533,7 +533,16 @@ void Foam::SnowWallInteraction<CloudType>::applyGates
             }
             shearOn_ = true;
             tauName_ = g.lookupOrDefault<word>("field", "wallShearStress");
-            rhoAir_ = g.lookupOrDefault<scalar>("rhoAir", -1.0);
+            // checked here, not at the first impact: a huge value would
+            // overflow rhoAir*tau there (SIGFPE under OpenFOAM's traps)
+            rhoAir_ =
+                g.found("rhoAir", keyType::LITERAL)
+              ? snowWallDetail::checkedNumber
+                (
+                    g, "rhoAir", 1e-6, 1e4, "kg/m3",
+                    "the air density that turns a kinematic wall shear stress into Pa"
+                )
+              : -1.0;
         }
     }
 }
