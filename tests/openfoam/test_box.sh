@@ -189,14 +189,14 @@ with_buildup() { # CASE BODY: the box with buildUp { #include "regime-snow.coeff
 for v in 0 -3.3e-05 1e+300; do
     with_buildup "$tmp/coverD$v" "coverDiameter $v;"
     expect_fatal_io "$tmp/coverD$v" \
-        "buildUp: coverDiameter $v is outside the accepted range \[1e-07, 0.1\] m (the mean particle diameter"
+        "buildUp: coverDiameter $v is outside the accepted range (0, 0.1\] m (the mean particle diameter"
 done
 line=$(grep -n "coverDiameter 0;" "$tmp/coverD0/$cpr" | cut -d: -f1)
 grep -q "^file: .*/coverD0/$cpr at line $line\." "$tmp/coverD0/log.run" \
     || fail "coverDiameter 0: the error is not located at $cpr line $line: $(grep '^file:' "$tmp/coverD0/log.run")"
 for v in 0 -1; do
     with_buildup "$tmp/coverM$v" "coverMass $v;"
-    expect_fatal_io "$tmp/coverM$v" "buildUp: coverMass $v is outside the accepted range \[1e-09, 10000\] kg/m2"
+    expect_fatal_io "$tmp/coverM$v" "buildUp: coverMass $v is outside the accepted range (0, 10000\] kg/m2"
 done
 with_buildup "$tmp/coverBoth" "coverMass 0.01; coverDiameter 3e-05;"
 expect_fatal_io "$tmp/coverBoth" "buildUp: give coverDiameter or coverMass, not both"

@@ -139,10 +139,10 @@ inline OSstream& fatalAt(const dictionary& d, const entry* e)
 }
 
 //- Number `key` of dictionary d, read and checked before it is used: a
-//  finite value in [lo, hi], else a FatalIOError at the entry that names the
-//  key, its sub-dictionary, the value and the accepted range. isfinite comes
-//  first: an ordered comparison of a NaN raises FE_INVALID, which OpenFOAM
-//  traps (SIGFPE, no message).
+//  finite value in [lo, hi] (in (lo, hi] with openLo), else a FatalIOError
+//  at the entry that names the key, its sub-dictionary, the value and the
+//  accepted range. isfinite comes first: an ordered comparison of a NaN
+//  raises FE_INVALID, which OpenFOAM traps (SIGFPE, no message).
 inline scalar checkedNumber
 (
     const dictionary& d,
@@ -150,25 +150,28 @@ inline scalar checkedNumber
     scalar lo,
     scalar hi,
     const char* unit,
-    const char* what
+    const char* what,
+    bool openLo = false
 )
 {
     const scalar v = d.get<scalar>(key);    // a missing / unreadable value: OpenFOAM's error
-    if (!std::isfinite(v) || v < lo || v > hi)
+    if (!std::isfinite(v) || v < lo || (openLo && v == lo) || v > hi)
     {
         fatalAt(d, d.findEntry(key, keyType::LITERAL))
             << "snowWallInteraction: " << d.dictName() << ": " << key << ' ' << v
-            << " is outside the accepted range [" << lo << ", " << hi << "] " << unit
-            << " (" << what << ")" << exit(FatalIOError);
+            << " is outside the accepted range " << (openLo ? '(' : '[') << lo
+            << ", " << hi << "] " << unit << " (" << what << ")"
+            << exit(FatalIOError);
     }
     return v;
 }
 
-//- Accepted ranges of buildUp's covering mass (doc/wallmodel.md): one
-//  monolayer of ice spheres of the kernel's diameters (1e-7 .. 0.1 m) is
-//  5.6e-5 .. 56 kg/m2; the mass range is wider, the diameter's is the kernel's
-static const scalar coverDMin = 1e-7, coverDMax = 0.1;
-static const scalar coverMassMin = 1e-9, coverMassMax = 1e4;
+//- Accepted ranges of buildUp's covering mass (doc/wallmodel.md): positive
+//  (any small value: the cover fraction compares before it divides, so
+//  nothing overflows) and at most a 0.1 m diameter (the kernel's largest) or
+//  1e4 kg/m2 (one monolayer of 0.1 m ice spheres is 56 kg/m2)
+static const scalar coverDMax = 0.1;
+static const scalar coverMassMax = 1e4;
 
 //- The cloud is a colliding one (KinematicCollidingCloud, which reads a
 //  collisionModel): its parcels keep collision records. The model is
@@ -718,25 +721,23 @@ void Foam::SnowWallInteraction<CloudType>::setup()
             {
                 coverMass_ = snowWallDetail::checkedNumber
                 (
-                    b, "coverMass", snowWallDetail::coverMassMin,
-                    snowWallDetail::coverMassMax, "kg/m2",
-                    "the covering mass per area of a face"
+                    b, "coverMass", 0, snowWallDetail::coverMassMax, "kg/m2",
+                    "the covering mass per area of a face", true
                 );
             }
             else if (hasD)
             {
                 dCover = snowWallDetail::checkedNumber
                 (
-                    b, "coverDiameter", snowWallDetail::coverDMin,
-                    snowWallDetail::coverDMax, "m",
-                    "the mean particle diameter: one monolayer covers a face"
+                    b, "coverDiameter", 0, snowWallDetail::coverDMax, "m",
+                    "the mean particle diameter: one monolayer covers a face", true
                 );
                 const scalar rho = this->owner().constProps().rho0();
                 coverMass_ = sww_monolayer_mass(rho, dCover);
                 if
                 (
                     !std::isfinite(coverMass_)
-                 || coverMass_ < snowWallDetail::coverMassMin
+                 || coverMass_ <= 0
                  || coverMass_ > snowWallDetail::coverMassMax
                 )
                 {
@@ -744,8 +745,7 @@ void Foam::SnowWallInteraction<CloudType>::setup()
                         << "snowWallInteraction: buildUp: coverDiameter " << dCover
                         << " m with the cloud's particle density rho0 " << rho
                         << " kg/m3 (constantProperties) gives a covering mass "
-                        << coverMass_ << " kg/m2 outside the accepted range ["
-                        << snowWallDetail::coverMassMin << ", "
+                        << coverMass_ << " kg/m2 outside the accepted range (0, "
                         << snowWallDetail::coverMassMax << "] kg/m2: check rho0, "
                         << "or give coverMass directly" << exit(FatalIOError);
                 }
