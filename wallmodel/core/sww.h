@@ -89,8 +89,10 @@ int sww_regime_load(sww_model *m, const char *path);
  * list keys: coeffs vn dCrit obliqueVt obliqueVn obliqueDCrit probabilityD
  *   probabilityVn probabilityStick;
  * word keys: representation basis label
- * Unknown keys are accepted and ignored (forward compatibility). Setting any key
- * makes the model not ready until the next successful sww_regime_commit. */
+ * An unknown key, or a key given as the wrong kind (a number for a list key, ...),
+ * is SWW_EINVAL with a message naming it (a misspelt key is an error, not a silent
+ * default). Setting any key makes the model not ready until the next successful
+ * sww_regime_commit. */
 int sww_regime_number(sww_model *m, const char *key, double v);
 int sww_regime_list(sww_model *m, const char *key, const double *v, size_t n);
 int sww_regime_word(sww_model *m, const char *key, const char *w);
