@@ -24,12 +24,13 @@ top=$(cd "$(dirname "$0")/.." && pwd)
 reps=7
 build=
 sets=()
+missing_value() { echo "regime.sh: $1 (see --help)" >&2; exit 2; }   # a usage error: exit 2
 while [ $# -gt 0 ]; do
     case "$1" in
         -h|--help) sed -n '2,24p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-        --set) sets+=(--set "${2:?"--set needs KEY=VALUE"}"); shift ;;
-        --reps) reps=${2:?"--reps needs a number"}; shift ;;
-        --build) build=${2:?"--build needs a folder"}; shift ;;
+        --set) [ -n "${2:-}" ] || missing_value "--set needs KEY=VALUE"; sets+=(--set "$2"); shift ;;
+        --reps) [ -n "${2:-}" ] || missing_value "--reps needs a number"; reps=$2; shift ;;
+        --build) [ -n "${2:-}" ] || missing_value "--build needs a folder"; build=$2; shift ;;
         *) echo "bench/regime.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
     esac
     shift

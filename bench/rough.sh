@@ -20,12 +20,13 @@ sr=${SNOWREGIME:-$top/bin/snowregime}
 reps=3
 plist=16,64
 sets=()
+missing_value() { echo "rough.sh: $1 (see --help)" >&2; exit 2; }   # a usage error: exit 2
 while [ $# -gt 0 ]; do
     case "$1" in
         -h|--help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-        --reps) reps=${2:?"--reps needs a number"}; shift ;;
-        --points) plist=${2:?"--points needs a list"}; shift ;;
-        --set) sets+=(--set "${2:?"--set needs KEY=VALUE"}"); shift ;;
+        --reps) [ -n "${2:-}" ] || missing_value "--reps needs a number"; reps=$2; shift ;;
+        --points) [ -n "${2:-}" ] || missing_value "--points needs a list"; plist=$2; shift ;;
+        --set) [ -n "${2:-}" ] || missing_value "--set needs KEY=VALUE"; sets+=(--set "$2"); shift ;;
         *) echo "bench/rough.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
     esac
     shift

@@ -25,12 +25,13 @@ top=$(cd "$(dirname "$0")/.." && pwd)
 sr=${SNOWREGIME:-$top/bin/snowregime}
 out=
 sets=()
+missing_value() { echo "contact-laws.sh: $1 (see --help)" >&2; exit 2; }   # a usage error: exit 2
 while [ $# -gt 0 ]; do
     case "$1" in
         -h|--help) sed -n '2,25p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-        --out) out=${2:?"--out needs a folder"}; shift ;;
-        --config) sets+=(--config "${2:?"--config needs a file"}"); shift ;;
-        --set) sets+=(--set "${2:?"--set needs KEY=VALUE"}"); shift ;;
+        --out) [ -n "${2:-}" ] || missing_value "--out needs a folder"; out=$2; shift ;;
+        --config) [ -n "${2:-}" ] || missing_value "--config needs a file"; sets+=(--config "$2"); shift ;;
+        --set) [ -n "${2:-}" ] || missing_value "--set needs KEY=VALUE"; sets+=(--set "$2"); shift ;;
         *) echo "contact-laws.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
     esac
     shift

@@ -32,16 +32,17 @@ points=64
 nd=46
 nv=50
 sets=()
+missing_value() { echo "rough-wall.sh: $1 (see --help)" >&2; exit 2; }   # a usage error: exit 2
 while [ $# -gt 0 ]; do
     case "$1" in
         -h|--help) sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-        --out) out=${2:?"--out needs a folder"}; shift ;;
-        --points) points=${2:?"--points needs a number"}; shift ;;
-        --nd) nd=${2:?"--nd needs a number"}; shift ;;
-        --nv) nv=${2:?"--nv needs a number"}; shift ;;
+        --out) [ -n "${2:-}" ] || missing_value "--out needs a folder"; out=$2; shift ;;
+        --points) [ -n "${2:-}" ] || missing_value "--points needs a number"; points=$2; shift ;;
+        --nd) [ -n "${2:-}" ] || missing_value "--nd needs a number"; nd=$2; shift ;;
+        --nv) [ -n "${2:-}" ] || missing_value "--nv needs a number"; nv=$2; shift ;;
         --quick) points=8; nd=8; nv=8; quick=1 ;;
-        --config) sets+=(--config "${2:?"--config needs a file"}"); shift ;;
-        --set) sets+=(--set "${2:?"--set needs KEY=VALUE"}"); shift ;;
+        --config) [ -n "${2:-}" ] || missing_value "--config needs a file"; sets+=(--config "$2"); shift ;;
+        --set) [ -n "${2:-}" ] || missing_value "--set needs KEY=VALUE"; sets+=(--set "$2"); shift ;;
         *) echo "rough-wall.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
     esac
     shift

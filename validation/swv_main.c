@@ -11,6 +11,10 @@
 #include <string.h>
 #include <unistd.h>
 
+/* accepted --parcel-mass [kg] */
+#define SWV_PARCEL_MASS_MIN 1e-20
+#define SWV_PARCEL_MASS_MAX 1e3
+
 static const char *usage =
 "NAME\n"
 "    snowphoto - compare a photo of the wedge's rear face with the simulated snow map\n"
@@ -77,7 +81,7 @@ static const char *usage =
 "    --label TEXT            first column of the regions rows (default: the CSV path);\n"
 "                            '|', '\\', '`' and '<' are backslash-escaped, newlines\n"
 "                            and other control characters become spaces\n"
-"    --parcel-mass KG        mass of one parcel [kg], > 0 (a parcelBasisType mass\n"
+"    --parcel-mass KG        mass of one parcel [kg], 1e-20 .. 1000 (a parcelBasisType mass\n"
 "                            spray: every parcel carries the same mass); adds\n"
 "                            parcel counts and Poisson errors per region\n"
 "    -h, --help              this text\n"
@@ -249,8 +253,12 @@ int main(int argc, char **argv)
             hold = d;
         } else if (!strcmp(o, "--parcel-mass") && is_regions) {
             if (parse_double(o, a, &d)) return 2;
-            if (!(d > 0)) {
-                fprintf(stderr, "snowphoto: --parcel-mass %s is not > 0\n", a);
+            /* from one 0.1 um ice sphere (4.8e-19 kg) to a tonne: outside it the
+             * parcel counts mass / parcel mass are not counts of anything
+             * (issue 22: 1e-300 and 1e300 were taken) */
+            if (!(d >= SWV_PARCEL_MASS_MIN && d <= SWV_PARCEL_MASS_MAX)) {
+                fprintf(stderr, "snowphoto: --parcel-mass %s is outside [%g, %g] kg\n", a,
+                        SWV_PARCEL_MASS_MIN, SWV_PARCEL_MASS_MAX);
                 return 2;
             }
             parcel_mass = d;

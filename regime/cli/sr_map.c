@@ -369,6 +369,16 @@ int sr_cmd_map(int argc, char **argv)
                                      &naxis, a.err, sizeof a.err)) {
                 rc = sr_usage_error(cmd, a.err); goto out;
             }
+            /* checked here, before any map is computed (issue 22: an unsorted or
+             * repeated --vt list was found only by the oblique table, after the
+             * maps, with exit 1; a repeated value wrote one map's files twice) */
+            for (int k = 1; k < naxis; k++)
+                if (!(axis[k] > axis[k - 1])) {
+                    snprintf(a.err, sizeof a.err, "%s: '%s': value %g (item %d) is not above %g "
+                             "(item %d): the list must increase strictly, each value once",
+                             ang ? "--angle" : "--vt", v, axis[k], k + 1, axis[k - 1], k);
+                    rc = sr_usage_error(cmd, a.err); goto out;
+                }
             axis_angle = ang;
             continue;
         }

@@ -177,20 +177,22 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
     r->e_t = NAN;
     if (!m || !in)
         return bad_input(r, "model or impact", NAN, NULL);
-    if (!(in->d >= SWR_D_MIN && in->d <= SWR_D_MAX))
+    /* each NaN is refused before it is compared: an ordered comparison of a NaN
+     * raises FE_INVALID, which OpenFOAM traps (issue 22) */
+    if (isnan(in->d) || !(in->d >= SWR_D_MIN && in->d <= SWR_D_MAX))
         return bad_input(r, "d", in->d, "1e-07 .. 0.1 m");
-    if (!(in->vn > 0.0 && in->vn <= SWR_V_MAX))
+    if (isnan(in->vn) || !(in->vn > 0.0 && in->vn <= SWR_V_MAX))
         return bad_input(r, "vn", in->vn, "(0, 1000] m/s");
     if (!m->adhesive && in->vn < SWR_V_MIN)
         return bad_input(r, "vn", in->vn, "1e-60 .. 1000 m/s without adhesion (below 1e-60 m/s a "
                                           "Hertz contact's scaled radii overflow)");
-    if (!(in->vt >= 0.0 && in->vt <= SWR_V_MAX))
+    if (isnan(in->vt) || !(in->vt >= 0.0 && in->vt <= SWR_V_MAX))
         return bad_input(r, "vt", in->vt, "0 .. 1000 m/s");
-    if (!(fabs(in->omega) <= SWR_V_MAX / (0.5 * in->d)))
+    if (isnan(in->omega) || !(fabs(in->omega) <= SWR_V_MAX / (0.5 * in->d)))
         return bad_input(r, "omega", in->omega, "|omega| <= 1000 m/s / (d/2)");
-    if (!(fabs(in->x) <= 1.0))
+    if (isnan(in->x) || !(fabs(in->x) <= 1.0))
         return bad_input(r, "x", in->x, "|x| <= 1 m");
-    if (!(fabs(in->y) <= 1.0))
+    if (isnan(in->y) || !(fabs(in->y) <= 1.0))
         return bad_input(r, "y", in->y, "|y| <= 1 m");
     r->contacts = 1;
     if (m->wall.type == SWR_WALL_LATTICE)

@@ -37,11 +37,15 @@ static const num_key num_keys[] = {
     NK(xi_crit,  1.0e-12, 1.0e-6, "critical rolling displacement [m]"),
     NK(accuracy, 10.0,   1.0e5,  "steps per Hertz contact time [-]"),
 };
+/* Largest asperity spacing [m] (its range below; the lower bound on a lattice
+ * is 2 asperity_r, checked in swr_params_validate). */
+#define ASPERITY_SPACING_MAX 10.0
+
 /* The rough-wall keys: set and validated like the others, printed only for
  * wall lattice (a flat-wall output lists no wall keys, as before). */
 static const num_key wall_keys[] = {
     NK(asperity_r,       1.0e-9, 1.0,  "asperity radius [m]"),
-    NK(asperity_spacing, 1.0e-9, 10.0, "asperity spacing [m]"),
+    NK(asperity_spacing, 1.0e-9, ASPERITY_SPACING_MAX, "asperity spacing [m]"),
     NK(asperity_jitter,  0.0,    0.5,  "random lateral offset of an asperity / spacing [-]"),
     NK(asperity_dz,      0.0,    1.0,  "random sinking depth of an asperity [m]"),
     NK(wall_seed,        0.0,    9.007199254740992e15, "seed of the random wall (integer)"),
@@ -140,12 +144,19 @@ static double value_of(const swr_params *p, const num_key *k)
     return *(const double *)((const char *)p + k->off);
 }
 
+/* v in [lo, hi], false for NaN without comparing it: an ordered comparison of a
+ * NaN raises FE_INVALID, which OpenFOAM and the tests trap (issue 22). */
+static int in_range(double v, double lo, double hi)
+{
+    return !isnan(v) && v >= lo && v <= hi;
+}
+
 /* Every key of table t within its range: 0, or -1 naming the first that is not. */
 static int check_ranges(const swr_params *p, const num_key *t, size_t n, char *err, size_t errlen)
 {
     for (size_t i = 0; i < n; i++) {
         const double v = value_of(p, &t[i]);
-        if (!(v >= t[i].lo && v <= t[i].hi))
+        if (!in_range(v, t[i].lo, t[i].hi))
             return fail(err, errlen, "%s: %g is out of range [%g, %g] (%s)", t[i].key, v, t[i].lo,
                         t[i].hi, t[i].what);
     }
@@ -167,7 +178,7 @@ int swr_params_set(swr_params *p, const char *key, const char *value, char *err,
         double v;
         if (parse_number(value, &v) != 0)
             return fail(err, errlen, "%s: '%s' is not a finite number (%s)", key, value, k->what);
-        if (!(v >= k->lo && v <= k->hi))
+        if (!in_range(v, k->lo, k->hi))
             return fail(err, errlen, "%s: %s is out of range [%g, %g] (%s)", key, value,
                         k->lo, k->hi, k->what);
         if (k->off == offsetof(swr_params, wall_seed) && v != floor(v))
@@ -209,7 +220,7 @@ int swr_params_set(swr_params *p, const char *key, const char *value, char *err,
                 return fail(err, errlen,
                             "cor: '%s' is neither elastic, thornton, thornton-asymptote, "
                             "thornton-ning nor a number", value);
-            if (!(v >= COR_MIN && v <= COR_MAX))
+            if (!in_range(v, COR_MIN, COR_MAX))
                 return fail(err, errlen, "cor: %s is out of range [%g, %g] (constant restitution)",
                             value, COR_MIN, COR_MAX);
             p->cor = SWR_COR_CONSTANT;
@@ -326,7 +337,7 @@ int swr_params_validate(const swr_params *p, char *err, size_t errlen)
         return -1;
     if (p->cor < SWR_COR_ELASTIC || p->cor > SWR_COR_THORNTON_NING)
         return fail(err, errlen, "cor: invalid mode %d", (int)p->cor);
-    if (p->cor == SWR_COR_CONSTANT && !(p->cor_value >= COR_MIN && p->cor_value <= COR_MAX))
+    if (p->cor == SWR_COR_CONSTANT && !in_range(p->cor_value, COR_MIN, COR_MAX))
         return fail(err, errlen, "cor: %g is out of range [%g, %g] (constant restitution)",
                     p->cor_value, COR_MIN, COR_MAX);
     if (p->cor_pair != SWR_PAIR_WALL && p->cor_pair != SWR_PAIR_PARTICLE)
@@ -341,6 +352,15 @@ int swr_params_validate(const swr_params *p, char *err, size_t errlen)
         return fail(err, errlen, "lattice: invalid value %d", (int)p->lattice);
     if (check_ranges(p, wall_keys, N_WALL, err, errlen) != 0)
         return -1;
+    /* Overlapping asperities (spacing below 2 r) put ever more asperities
+     * under one contact patch as the spacing shrinks, and the contact search of
+     * one impact grows as (R/s)^2 without bound (issue 22: hours for one
+     * impact); the lattice is defined for asperities that at most touch. */
+    if (p->wall == SWR_WALL_KIND_LATTICE && p->asperity_spacing < 2.0 * p->asperity_r)
+        return fail(err, errlen, "asperity_spacing: %g m is below 2 asperity_r = %g m: the "
+                    "asperities would overlap (accepted on a lattice: 2 asperity_r <= "
+                    "asperity_spacing <= %g m)", p->asperity_spacing, 2.0 * p->asperity_r,
+                    ASPERITY_SPACING_MAX);
     if (p->wall == SWR_WALL_KIND_LATTICE && p->cor == SWR_COR_THORNTON_NING)
         return fail(err, errlen, "cor: thornton-ning is not available on a rough wall (wall lattice): "
                                  "its contact history is kept for one contact only; use thornton");

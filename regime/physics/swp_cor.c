@@ -20,8 +20,10 @@ double swp_yield_velocity_pp(double p_y, double Estar, double Rstar, double msta
 
 double swp_cor_thornton(double x)
 {
-    if (!(x < 1.0)) /* V_i <= V_y (or NaN input: no plastic loss claimed) */
-        return x >= 1.0 ? 1.0 : NAN;
+    if (isnan(x)) /* tested first: comparing a NaN raises FE_INVALID (trapped) */
+        return NAN;
+    if (x >= 1.0) /* V_i <= V_y: no plastic loss claimed */
+        return 1.0;
     if (x <= 0.0)
         return 0.0;
     const double pre = sqrt(6.0 * sqrt(3.0) / 5.0);

@@ -33,7 +33,7 @@ double swp_tau_slide(double Gamma, double R, double mu_s, double k)
 double swp_tau_detach(double Gamma, double Estar, double R, double mu_s, double k)
 {
     const double roll = swp_tau_roll(Gamma, Estar, R, k);
-    if (!(mu_s > 0.0))
+    if (isnan(mu_s) || mu_s <= 0.0) /* NaN tested, not compared (FE_INVALID) */
         return roll;
     const double slide = swp_tau_slide(Gamma, R, mu_s, k);
     return slide < roll ? slide : roll;

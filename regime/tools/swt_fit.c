@@ -2,7 +2,6 @@
 #include "swt_fit.h"
 
 #include <gsl/gsl_errno.h>
-#include <gsl/gsl_fit.h>
 #include <gsl/gsl_multifit.h>
 #include <math.h>
 #include <string.h>
@@ -31,16 +30,25 @@ static int fit_degree(const swt_interface *it, int deg, swt_fit *f, char *err, s
     gsl_matrix *X = gsl_matrix_alloc((size_t)n, (size_t)deg + 1);
     gsl_vector *y = gsl_vector_alloc((size_t)n);
     gsl_vector *c = gsl_vector_alloc((size_t)deg + 1);
-    gsl_matrix *cov = gsl_matrix_alloc((size_t)deg + 1, (size_t)deg + 1);
     gsl_multifit_linear_workspace *w = gsl_multifit_linear_alloc((size_t)n, (size_t)deg + 1);
     int rc = -1;
-    if (!X || !y || !c || !cov || !w) { snprintf(err, errlen, "out of memory"); goto done; }
+    if (!X || !y || !c || !w) { snprintf(err, errlen, "out of memory"); goto done; }
     for (int k = 0; k < n; k++) {
         double x = log(it->vn[k]), p = 1.0;
         for (int i = 0; i <= deg; i++) { gsl_matrix_set(X, (size_t)k, (size_t)i, p); p *= x; }
         gsl_vector_set(y, (size_t)k, log(it->dcrit[k]));
     }
-    int st = gsl_multifit_linear(X, y, c, cov, &f->chisq, w);
+    /* gsl_multifit_linear's solution exactly (balanced SVD, singular values
+     * below GSL_DBL_EPSILON s_0 dropped: what gsl_multifit_linear_tsvd does
+     * with lambda < 0 and gsl_multifit_linear_solve with lambda 0), without its
+     * covariance matrix: unused here, it divides by n - rank, 0/0 for an exact
+     * fit (as many points as coefficients), a NaN that the floating-point traps
+     * of the tests and of OpenFOAM catch (issue 22) */
+    double rnorm = 0.0, snorm = 0.0;
+    int st = gsl_multifit_linear_bsvd(X, w);
+    if (st == GSL_SUCCESS)
+        st = gsl_multifit_linear_solve(0.0, X, y, c, &rnorm, &snorm, w);
+    f->chisq = rnorm * rnorm;
     if (st != GSL_SUCCESS) {
         snprintf(err, errlen, "interface fit of degree %d failed: %s", deg, gsl_strerror(st));
         goto done;
@@ -64,12 +72,15 @@ static int fit_degree(const swt_interface *it, int deg, swt_fit *f, char *err, s
     }
     rc = 0;
 done:
-    gsl_matrix_free(X); gsl_vector_free(y); gsl_vector_free(c); gsl_matrix_free(cov);
+    gsl_matrix_free(X); gsl_vector_free(y); gsl_vector_free(c);
     if (w) gsl_multifit_linear_free(w);
     return rc;
 }
 
-/* log-log slope of the (up to) 4 points at one end, by gsl_fit_linear */
+/* log-log slope of the (up to) 4 points at one end: the least-squares slope
+ * with gsl_fit_linear's running means, so the same number, but without its
+ * parameter variances, which divide by count - 2: 0/0 for two points, a NaN
+ * that the floating-point traps catch (issue 22) */
 static double end_slope(const swt_interface *it, int from, int count)
 {
     double x[4], y[4];
@@ -77,9 +88,17 @@ static double end_slope(const swt_interface *it, int from, int count)
         x[k] = log(it->vn[from + k]);
         y[k] = log(it->dcrit[from + k]);
     }
-    double c0, c1, c00, c01, c11, sumsq;
-    gsl_fit_linear(x, 1, y, 1, (size_t)count, &c0, &c1, &c00, &c01, &c11, &sumsq);
-    return c1;
+    double mx = 0.0, my = 0.0, mdx2 = 0.0, mdxdy = 0.0;
+    for (int k = 0; k < count; k++) {
+        mx += (x[k] - mx) / (k + 1.0);
+        my += (y[k] - my) / (k + 1.0);
+    }
+    for (int k = 0; k < count; k++) {
+        const double dx = x[k] - mx, dy = y[k] - my;
+        mdx2 += (dx * dx - mdx2) / (k + 1.0);
+        mdxdy += (dx * dy - mdxdy) / (k + 1.0);
+    }
+    return mdxdy / mdx2; /* the interface's v_n are distinct: mdx2 > 0 */
 }
 
 int swt_fit_interface(const swt_interface *it, int degree, swt_fit *f, char *err, size_t errlen)

@@ -26,12 +26,13 @@ here=$(cd "$(dirname "$0")" && pwd)
 top=$(cd "$here/../.." && pwd)
 time_s=600 jobs=2 out=$top/build/fuzz
 targets=()
+missing_value() { echo "run.sh: $1 (see --help)" >&2; exit 2; }   # a usage error: exit 2
 while [ $# -gt 0 ]; do
     case "$1" in
         -h|--help) sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
         --time) time_s=${2:-}; shift ;;
         --jobs) jobs=${2:-}; shift ;;
-        --out) out=${2:?--out needs a folder}; shift ;;
+        --out) [ -n "${2:-}" ] || missing_value "--out needs a folder"; out=$2; shift ;;
         config|coeffs|simcsv|image) targets+=("$1") ;;
         *) echo "run.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
     esac

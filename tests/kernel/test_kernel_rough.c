@@ -211,7 +211,7 @@ static void extreme_inputs(void **state)
     const char *walls[][7] = {
         { "wall=lattice", NULL },
         { "wall=lattice", "lattice=hex", "asperity_r=1e-8", "asperity_spacing=5e-8", NULL },
-        { "wall=lattice", "asperity_r=1e-3", "asperity_spacing=1e-3", "asperity_jitter=0.5",
+        { "wall=lattice", "asperity_r=1e-3", "asperity_spacing=2e-3", "asperity_jitter=0.5",
           "asperity_dz=5e-4", NULL },
         { "wall=lattice", "asperity_spacing=1e-5", "adhesion=none", "cor=0.5", NULL },
         { "wall=lattice", "gamma=10", "E=1e8", "mu=2", "dashpot=both", NULL },
@@ -286,6 +286,22 @@ static void rough_params(void **state)
     assert_int_equal(swr_params_set_kv(&p, "wall_seed=1.5", err, sizeof err), -1);
     assert_non_null(strstr(err, "integer"));
     assert_int_equal(swr_params_set_kv(&p, "rough_hold=nan", err, sizeof err), -1);
+    assert_int_equal(swr_params_set_kv(&p, "wall=lattice", err, sizeof err), 0);
+    /* overlapping asperities (issue 22: one impact ran for hours): spacing below
+     * 2 r is refused on a lattice, naming both; touching (s = 2 r) is accepted;
+     * on a flat wall the asperity keys are not used */
+    assert_int_equal(swr_params_set_kv(&p, "asperity_spacing=1.5e-6", err, sizeof err), 0);
+    assert_int_equal(swr_params_validate(&p, err, sizeof err), -1);
+    assert_non_null(strstr(err, "asperity_spacing: 1.5e-06 m is below 2 asperity_r = 2e-06 m"));
+    assert_null(swr_model_alloc(&p, err, sizeof err));
+    assert_int_equal(swr_params_set_kv(&p, "asperity_r=0.75e-6", err, sizeof err), 0);
+    assert_int_equal(swr_params_validate(&p, err, sizeof err), 0);
+    assert_int_equal(swr_params_set_kv(&p, "lattice=hex", err, sizeof err), 0);
+    assert_int_equal(swr_params_set_kv(&p, "asperity_spacing=1e-9", err, sizeof err), 0);
+    assert_int_equal(swr_params_validate(&p, err, sizeof err), -1);
+    assert_int_equal(swr_params_set_kv(&p, "wall=flat", err, sizeof err), 0);
+    assert_int_equal(swr_params_validate(&p, err, sizeof err), 0);
+    swr_params_default(&p);
     assert_int_equal(swr_params_set_kv(&p, "wall=lattice", err, sizeof err), 0);
     assert_int_equal(swr_params_set_kv(&p, "cor=thornton-ning", err, sizeof err), 0);
     assert_null(swr_model_alloc(&p, err, sizeof err));

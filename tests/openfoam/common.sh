@@ -27,6 +27,25 @@ run() {
     fi
 }
 
+# expect_fatal_io CASE PATTERN [SOLVER]: in CASE the solver (default
+# icoUncoupledKinematicParcelFoam) must stop with a FatalIOError (exit 1, "FOAM FATAL IO
+# ERROR") whose text holds PATTERN (grep); success, any other exit, or a signal (SIGFPE
+# 136, abort 134: a crash without a message) fails, with the log's tail
+expect_fatal_io() {
+    local rc=0
+    (cd "$1" && "${3:-icoUncoupledKinematicParcelFoam}" > log.run 2>&1) || rc=$?
+    if [ "$rc" = 0 ]; then
+        fail "$1: the solver succeeded, expected a FatalIOError ('$2')"
+    elif [ "$rc" -gt 128 ]; then
+        tail -20 "$1/log.run" >&2
+        fail "$1: the solver died of signal $((rc - 128)) (exit $rc), expected a FatalIOError ('$2')"
+    elif [ "$rc" != 1 ] || ! grep -q "FOAM FATAL IO ERROR" "$1/log.run"; then
+        tail -20 "$1/log.run" >&2
+        fail "$1: exit $rc without a FatalIOError, expected one with '$2'"
+    fi
+    grep -q -- "$2" "$1/log.run" || { tail -20 "$1/log.run" >&2; fail "$1: no '$2' in the error"; }
+}
+
 # snow_cloud INJECTIONS COEFFS: in the current box case, rewrite
 # constant/kinematicCloudProperties with these injection models and this body of
 # snowWallInteractionCoeffs (both text), the box's solution and properties kept

@@ -11,6 +11,11 @@
 # escape patch every impact is an escape of the cloud's own counter; errors naming the
 # file and the line (a bad value in regime.coeffs), a patches entry matching no patch, a
 # patch without an entry; the warning for a wall taken by a catch-all escape entry.
+# Set-up inputs that crashed with SIGFPE (issue 22) are FatalIOErrors naming the key,
+# the value and the range: buildUp coverDiameter / coverMass out of range or both
+# given, tangentialGate slideLength against an oblique table without obliqueSlide, a
+# different obliqueSlide, a negative slideLength, shearGate rhoAir out of range
+# (expect_fatal_io of common.sh).
 set -euo pipefail
 # shellcheck source=common.sh
 . "$(dirname "$0")/common.sh"
@@ -168,4 +173,56 @@ sed -i 's/^\( *\)wall { type snow; }/\1".*" { type escape; }/' "$tmp/catchAll/co
 grep -q 'wall patch wall is taken by the entry ".\*" (type escape) of ".*constant/kinematicCloudProperties"' \
     "$tmp/catchAll/log.run" || fail "catchAll: no warning for the wall taken by the catch-all"
 echo "errors: ok"
+
+# 5. set-up inputs that ended in SIGFPE without a message (issue 22): each must be a
+#    FatalIOError (exit 1, not a signal) naming the key, its value and the accepted range
+prep "$tmp/base"
+cpr=constant/kinematicCloudProperties
+case_from_base() { cp -r "$tmp/base" "$1"; }
+with_buildup() { # CASE BODY: the box with buildUp { #include "regime-snow.coeffs" BODY }
+    case_from_base "$1"
+    cp "$1/constant/regime.coeffs" "$1/constant/regime-snow.coeffs"
+    sed -i "s/^\( *\)tangentialGate { vtMax 0.5; }/&\n\1buildUp { #include \"regime-snow.coeffs\"\n\1    $2 }/" \
+        "$1/$cpr"
+    grep -q "^ *$2 }" "$1/$cpr" || fail "buildUp not written into $1/$cpr"
+}
+for v in 0 -3.3e-05 1e+300; do
+    with_buildup "$tmp/coverD$v" "coverDiameter $v;"
+    expect_fatal_io "$tmp/coverD$v" \
+        "buildUp: coverDiameter $v is outside the accepted range (0, 0.1\] m (the mean particle diameter"
+done
+line=$(grep -n "coverDiameter 0;" "$tmp/coverD0/$cpr" | cut -d: -f1)
+grep -q "^file: .*/coverD0/$cpr at line $line\." "$tmp/coverD0/log.run" \
+    || fail "coverDiameter 0: the error is not located at $cpr line $line: $(grep '^file:' "$tmp/coverD0/log.run")"
+for v in 0 -1; do
+    with_buildup "$tmp/coverM$v" "coverMass $v;"
+    expect_fatal_io "$tmp/coverM$v" "buildUp: coverMass $v is outside the accepted range (0, 10000\] kg/m2"
+done
+with_buildup "$tmp/coverBoth" "coverMass 0.01; coverDiameter 3e-05;"
+expect_fatal_io "$tmp/coverBoth" "buildUp: give coverDiameter or coverMass, not both"
+# shearGate rhoAir: checked at set-up (a huge one overflowed rhoAir * tau at an impact)
+case_from_base "$tmp/rhoHuge"
+sed -i 's/^\( *rhoAir *\)1;/\1 1e300;/' "$tmp/rhoHuge/$cpr"
+grep -q "rhoAir *1e300;" "$tmp/rhoHuge/$cpr" || fail "rhoHuge: rhoAir not set"
+expect_fatal_io "$tmp/rhoHuge" "shearGate: rhoAir 1e+300 is outside the accepted range \[1e-06, 10000\] kg/m3"
+# an oblique table with (SLIDE) or without obliqueSlide, and tangentialGate { GATE }
+with_oblique() { # CASE SLIDE GATE
+    case_from_base "$1"
+    sed -i "s/^}/    obliqueVt (0 0.5 1);\n    obliqueVn (0.1 1 10);\n    obliqueDCrit (1e-4 3e-5 1e-5 5e-5 2e-5 8e-6 2e-5 1e-5 5e-6);\n    $2\n}/" \
+        "$1/constant/regime.coeffs"
+    sed -i "s/tangentialGate { vtMax 0.5; }/tangentialGate { $3 }/" "$1/$cpr"
+    grep -q "obliqueDCrit" "$1/constant/regime.coeffs" && grep -q "tangentialGate { $3 }" "$1/$cpr" \
+        || fail "$1: oblique table or gate not written"
+}
+with_oblique "$tmp/noSlide" "" "model regime; slideLength 1e-4;"
+expect_fatal_io "$tmp/noSlide" "tangentialGate slideLength 0.0001 m: the regime's oblique table has no obliqueSlide"
+with_oblique "$tmp/otherSlide" "obliqueSlide 2e-4;" "model regime; slideLength 1e-4;"
+expect_fatal_io "$tmp/otherSlide" "tangentialGate slideLength 0.0001 m differs from the regime table's obliqueSlide 0.0002 m"
+with_oblique "$tmp/negSlide" "obliqueSlide 1e-4;" "model regime; slideLength -1;"
+expect_fatal_io "$tmp/negSlide" "tangentialGate slideLength -1 must be a finite length >= 0 m"
+# the same table with its slide length stated: the case runs (the gate is on)
+with_oblique "$tmp/slideOk" "obliqueSlide 1e-4;" "model regime; slideLength 1e-4;"
+(cd "$tmp/slideOk" && foamDictionary -entry endTime -set 0.005 system/controlDict > /dev/null \
+    && run log.run icoUncoupledKinematicParcelFoam)
+echo "set-up inputs: ok (buildUp cover numbers, slideLength against obliqueSlide)"
 echo "PASS"

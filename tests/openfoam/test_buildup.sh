@@ -142,9 +142,16 @@ foamDictionary -entry subModels/snowWallInteractionCoeffs/buildUp/coverDiameter 
     "$tmp/noMass/constant/kinematicCloudProperties" > /dev/null
 expect_fatal "$tmp/noMass" "buildUp: give coverDiameter"
 prep "$tmp/badMass"
+foamDictionary -entry subModels/snowWallInteractionCoeffs/buildUp/coverDiameter -remove \
+    "$tmp/badMass/constant/kinematicCloudProperties" > /dev/null
 foamDictionary -entry subModels/snowWallInteractionCoeffs/buildUp/coverMass -add -1 \
     "$tmp/badMass/constant/kinematicCloudProperties" > /dev/null
-expect_fatal "$tmp/badMass" "buildUp: coverMass -1 must be a mass per area > 0"
+expect_fatal_io "$tmp/badMass" "buildUp: coverMass -1 is outside the accepted range (0, 10000\] kg/m2"
+# both keys: coverMass used to win silently (issue 22)
+prep "$tmp/bothKeys"
+foamDictionary -entry subModels/snowWallInteractionCoeffs/buildUp/coverMass -add 0.01 \
+    "$tmp/bothKeys/constant/kinematicCloudProperties" > /dev/null
+expect_fatal_io "$tmp/bothKeys" "buildUp: give coverDiameter or coverMass, not both"
 prep "$tmp/badSel"
 foamDictionary -entry subModels/snowWallInteractionCoeffs/buildUp/patches -add "(top)" \
     "$tmp/badSel/constant/kinematicCloudProperties" > /dev/null

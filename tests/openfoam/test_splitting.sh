@@ -15,23 +15,28 @@
 # fates (p1 sticks, p2 bounces, p3 is ripped off; p4-p7: 2 sticks, 2 bounces) the
 # split run has 2+113+14+4 = 133 impacts, 4 sticks, 115 bounces, 14 rip-offs and
 # exactly the reference deposit. Checked serial, with mpirun -np 2 and across a
-# restart, the maxParcels cap, plus the input errors.
+# restart, the maxParcels cap (before and within a step), the maxCopies cap (a parcel
+# too heavy to split stays whole; copies are not split again), plus the input errors
+# as FatalIOErrors (regions in dictionary form and a region named twice: issue 22).
 set -euo pipefail
 # shellcheck source=common.sh
 . "$(dirname "$0")/common.sh"
 [ -f "$top/platforms/lib/libparcelSplitting.so" ] || { echo "SKIP: libparcelSplitting.so not built (run ./Allwmake)"; exit 77; }
 
-prep() {  # prep CASE [FACTOR [REGION]]: the box, with splitting when FACTOR is given
+lower="box (-1 0.025 -1) (1 0.06 1);"
+prep() {  # prep CASE [FACTOR [REGION [EXTRA]]]: the box, with splitting when FACTOR is given
     cp -r "$top/tests/openfoam/box" "$1"
     cp "$fixture" "$1/constant/regime.coeffs"
     if [ -n "${2:-}" ]; then
-        foamDictionary -entry libs -set '("libsnowWallInteraction.so" "libparcelSplitting.so")' \
-            "$1/system/controlDict" > /dev/null
-        foamDictionary -entry cloudFunctions -set \
-            "{ split { type parcelSplitting; regions ( lower { ${3:-box (-1 0.025 -1) (1 0.06 1);} factor $2; } ); } }" \
-            "$1/constant/kinematicCloudProperties" > /dev/null
+        split_with "$1" "regions ( lower { ${3:-$lower} factor $2; } ); ${4:-}"
     fi
     (cd "$1" && run log.blockMesh blockMesh)
+}
+split_with() {  # split_with CASE BODY: cloudFunctions { split { type parcelSplitting; BODY } }
+    foamDictionary -entry libs -set '("libsnowWallInteraction.so" "libparcelSplitting.so")' \
+        "$1/system/controlDict" > /dev/null
+    foamDictionary -entry cloudFunctions -set "{ split { type parcelSplitting; $2 } }" \
+        "$1/constant/kinematicCloudProperties" > /dev/null
 }
 deposit_sum() { deposit_values "$1" wall | awk '{ s += $1 * 6.25e-04 } END { printf "%.12g", s }'; }
 same_field() {  # same_field FILE_A FILE_B: per-face values equal within 1e-9 relative
@@ -91,28 +96,84 @@ echo "restart: ok"
 
 # 3b. maxParcels 1: more parcels than that are in the cloud while p1-p3 cross the
 # splitting layer, so nothing is split; the log says so
-prep "$tmp/capped" 20
-foamDictionary -entry cloudFunctions/split/maxParcels -add 1 \
-    "$tmp/capped/constant/kinematicCloudProperties" > /dev/null
+prep "$tmp/capped" 20 "$lower" "maxParcels 1;"
 (cd "$tmp/capped" && run log.run icoUncoupledKinematicParcelFoam)
 [ "$(series_last "$tmp/capped" 0 | cut -d' ' -f2-5)" = "7 3 3 1" ] || fail "maxParcels: totals $(series_last "$tmp/capped" 0)"
-grep -q "parcels > maxParcels 1: no splitting" "$tmp/capped/log.run" || fail "maxParcels: no notice in the log"
-echo "maxParcels: ok"
+grep -q "parcels >= maxParcels 1: no splitting" "$tmp/capped/log.run" || fail "maxParcels: no notice in the log"
+echo "maxParcels 1: ok"
 
-# 4. input errors name the region and the value
-expect_fatal() {  # CASE PATTERN
-    if (cd "$1" && icoUncoupledKinematicParcelFoam > log.run 2>&1); then
-        fail "$1: solver succeeded, expected a FatalError"
-    fi
-    grep -q -- "$2" "$1/log.run" || { tail -20 "$1/log.run" >&2; fail "$1: no '$2' in the error"; }
-}
+# 3c. maxParcels 60 binds within the step where p1-p3 ask for 1 + 112 + 13 copies: the
+# cloud never holds more than 60; p1 and p3 are split, p2 (112 copies) is left whole
+# and stays whole while the cap binds; the deposit is still the reference one
+prep "$tmp/cap60" 20 "$lower" "maxParcels 60;"
+(cd "$tmp/cap60" && run log.run icoUncoupledKinematicParcelFoam)
+most1=$(grep "Current number of parcels" "$tmp/cap60/log.run" | awk '$NF > m { m = $NF } END { print m + 0 }')
+[ "$most1" -le 60 ] || fail "maxParcels 60: the cloud held $most1 parcels"
+[ "$(series_last "$tmp/cap60" 0 | cut -d' ' -f2-5)" = "21 4 3 14" ] || fail "maxParcels 60: totals $(series_last "$tmp/cap60" 0), expected 21 4 3 14"
+grep -q "parcelSplitting split: 1 parcels left whole: their copies would take the cloud past maxParcels 60" \
+    "$tmp/cap60/log.run" || fail "maxParcels 60: no notice of the parcel left whole"
+same_field "$ref" "$tmp/cap60/0.1/kinematicCloud:snowDeposit" || fail "maxParcels 60: deposit differs from the reference"
+prep "$tmp/cap60par" 20 "$lower" "maxParcels 60;"
+(cd "$tmp/cap60par" && run log.decomposePar decomposePar \
+    && run log.run mpirun -np 2 --oversubscribe icoUncoupledKinematicParcelFoam -parallel \
+    && run log.reconstructPar reconstructPar -latestTime)
+most2=$(grep "Current number of parcels" "$tmp/cap60par/log.run" | awk '$NF > m { m = $NF } END { print m + 0 }')
+[ "$most2" -le 60 ] || fail "maxParcels 60, np 2: the cloud held $most2 parcels"
+same_field "$ref" "$tmp/cap60par/0.1/kinematicCloud:snowDeposit" || fail "maxParcels 60, np 2: deposit differs from the reference"
+echo "maxParcels 60: ok (at most $most1 parcels, 21 4 3 14; np 2: at most $most2, same deposit)"
+
+# 3d. maxCopies: one split makes at most maxCopies parcels. With maxCopies 100, p2
+# (113 needed) is left whole and said so once; p1 and p3 give 2 + 14: 21 4 3 14 again.
+# With factor 1000 (the default maxCopies 1000), p1 -> 88 and p3 -> 706 parcels of the
+# target mass, p2 (5644) whole; the copies are never split again (one split line)
+prep "$tmp/copies100" 20 "$lower" "maxCopies 100;"
+(cd "$tmp/copies100" && run log.run icoUncoupledKinematicParcelFoam)
+[ "$(series_last "$tmp/copies100" 0 | cut -d' ' -f2-5)" = "21 4 3 14" ] || fail "maxCopies 100: totals $(series_last "$tmp/copies100" 0)"
+[ "$(grep -c "parcels left whole: heavier than maxCopies/F reference masses" "$tmp/copies100/log.run")" = 1 ] \
+    || fail "maxCopies 100: the heavy parcel is not noticed once"
+same_field "$ref" "$tmp/copies100/0.1/kinematicCloud:snowDeposit" || fail "maxCopies 100: deposit differs from the reference"
+prep "$tmp/f1000" 1000
+(cd "$tmp/f1000" && run log.run icoUncoupledKinematicParcelFoam)
+[ "$(grep -c "parcelSplitting split: .* split into" "$tmp/f1000/log.run")" = 1 ] \
+    || fail "factor 1000: parcels split in more than one step: $(grep "split into" "$tmp/f1000/log.run")"
+grep -q "parcelSplitting split: 2 parcels split into 794 (totals 2, +792)" "$tmp/f1000/log.run" \
+    || fail "factor 1000: $(grep "split into" "$tmp/f1000/log.run")"
+same_field "$ref" "$tmp/f1000/0.1/kinematicCloud:snowDeposit" || fail "factor 1000: deposit differs from the reference"
+echo "maxCopies: ok (p2 left whole; factor 1000 splits once, copies not split again)"
+
+# 4. input errors: FatalIOErrors (exit 1, not a signal) naming the key and the value
 prep "$tmp/badFactor" 0.5
-expect_fatal "$tmp/badFactor" "region lower: factor 0.5 must be in \[1, 1e6\]"
+expect_fatal_io "$tmp/badFactor" "region lower: factor 0.5 must be in \[1, maxCopies 1000\]"
+prep "$tmp/bigFactor" 1e6
+expect_fatal_io "$tmp/bigFactor" "region lower: factor 1000000 must be in \[1, maxCopies 1000\]: .* raise maxCopies (at most 1000000)"
+prep "$tmp/badCopies" 20 "$lower" "maxCopies 2000000;"
+expect_fatal_io "$tmp/badCopies" "parcelSplitting split: maxCopies 2000000 must be in \[2, 1000000\]"
+prep "$tmp/badParcels" 20 "$lower" "maxParcels 0;"
+expect_fatal_io "$tmp/badParcels" "parcelSplitting split: maxParcels 0 must be in \[1, "
 prep "$tmp/badBox" 20 "box (1 0.025 -1) (-1 0.06 1);"
-expect_fatal "$tmp/badBox" "region lower: box (1 0.025 -1) (-1 0.06 1) needs min < max"
+expect_fatal_io "$tmp/badBox" "region lower: box (1 0.025 -1) (-1 0.06 1) needs min < max"
 prep "$tmp/oddBoxes" 20 "boxes ((0 0 0) (1 1 1) (2 2 2));"
-expect_fatal "$tmp/oddBoxes" "region lower: 'boxes' holds 3 points"
+expect_fatal_io "$tmp/oddBoxes" "region lower: 'boxes' holds 3 points"
 prep "$tmp/noBox" 20 " "
-expect_fatal "$tmp/noBox" "needs 'box (min) (max);'"
+expect_fatal_io "$tmp/noBox" "needs 'box (min) (max);'"
+# issue 22: regions in dictionary form aborted (exit 134) with OpenFOAM's generic
+# "Attempt to return dictionary entry as a primitive"; a name given twice was accepted
+prep "$tmp/regionsDict"
+split_with "$tmp/regionsDict" "regions { lower { $lower factor 20; } }"
+expect_fatal_io "$tmp/regionsDict" "parcelSplitting split: 'regions' is a dictionary { ... } but must be a list in parentheses:  regions ( name { box (min) (max); factor F; } ... );"
+grep -q "^file: .*/regionsDict/constant/kinematicCloudProperties.cloudFunctions.split.regions from line" \
+    "$tmp/regionsDict/log.run" || fail "regionsDict: the error is not located at regions: $(grep '^file:' "$tmp/regionsDict/log.run")"
+prep "$tmp/regionsWord"
+split_with "$tmp/regionsWord" "regions lower;"
+expect_fatal_io "$tmp/regionsWord" "'regions' must be a list in parentheses: .* got  .lower."
+prep "$tmp/noRegions"
+split_with "$tmp/noRegions" "maxCopies 10;"
+expect_fatal_io "$tmp/noRegions" "parcelSplitting split: missing 'regions'"
+prep "$tmp/notDict"
+split_with "$tmp/notDict" "regions ( lower 20; );"
+expect_fatal_io "$tmp/notDict" "parcelSplitting split: region entry 'lower' is not a dictionary"
+prep "$tmp/twice"
+split_with "$tmp/twice" "regions ( lower { $lower factor 20; } lower { $lower factor 2; } );"
+expect_fatal_io "$tmp/twice" "parcelSplitting split: region 'lower' is given twice in 'regions'"
 echo "errors: ok"
 echo "PASS"

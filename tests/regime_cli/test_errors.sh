@@ -34,6 +34,13 @@ check "--vmin: 'inf'" "$SR" map --vmin inf
 check "--vmax" "$SR" map --vmin 2 --vmax 1
 check "--angle: '95'" "$SR" map --angle 95
 check "unknown option '--frob'" "$SR" map --frob
+# an unsorted or repeated --vt / --angle list (issue 22: found after the maps, exit 1)
+check "--vt: '0,0.5,0.5,1': value 0.5 (item 3) is not above 0.5 (item 2)" "$SR" map --vt 0,0.5,0.5,1
+check "--vt: '0,1,0.5': value 0.5 (item 3) is not above 1 (item 2)" "$SR" map --vt 0,1,0.5
+check "--angle: '30,0': value 0 (item 2) is not above 30" "$SR" map --angle 30,0
+# overlapping asperities (issue 22: one impact ran for hours): refused before any work
+check "asperity_spacing: 1.5e-06 m is below 2 asperity_r = 2e-06 m: the asperities would overlap" \
+    "$SR" map --set wall=lattice --set asperity_spacing=1.5e-6
 check "--set: gamma" "$SR" sensitivity --set gamma=1e9
 check "--nd: '0'" "$SR" sensitivity --nd 0
 check "--accuracy: '-3'" "$SR" convergence --accuracy -3
@@ -43,7 +50,9 @@ for a in "vcrit --d -2e-5|--d: '-2e-5'" "vcrit --d 1e-5,,2e-5|empty item" "vcrit
          "vcrit --d 1e-5 --set mu=-1|mu" "collide --d 1e-5 --vn -1|--vn: '-1'" "collide --vn 1|--d: missing" \
          "collide --d 1e-5 --vn 1 --set E=abc|abc" "vcrit --d|--d: missing value" \
          "collide --d 5e-5 --vn 5000|--vn: '5000'" "vcrit --d 1e-5 --vmax 1e4|--vmax: '1e4'" \
-         "collide --d 5e-5 --vn 1e-90 --set adhesion=none|--vn = 1e-90 is invalid" "collide --d 0.5 --vn 1|--d: '0.5'"; do
+         "collide --d 5e-5 --vn 1e-90 --set adhesion=none|--vn = 1e-90 is invalid" "collide --d 0.5 --vn 1|--d: '0.5'" \
+         "collide --d 1e-3 --vn 1 --set wall=lattice --set asperity_spacing=1e-9|asperity_spacing: 1e-09 m is below 2 asperity_r" \
+         "vcrit --d 1e-5 --set wall=lattice --set lattice=hex --set asperity_r=2e-6 --set asperity_spacing=3e-6|below 2 asperity_r = 4e-06 m"; do
     args=${a%%|*}; want=${a#*|}
     "$SR" $args >/dev/null 2>"$WORK/err"; rc=$?
     [ $rc -eq 2 ] || fail "'$args': exit $rc, want 2"

@@ -71,6 +71,9 @@ bad "empty map" "empty.csv" compare --photo "$tmp/photo.png" --corners $corners 
 printf 'y,z,d\n0,0,1\n1,0,1\n0,1,oops\n1,1,1\n' > "$tmp/malformed.csv"
 bad "malformed map" "malformed.csv:4" regions --sim "$tmp/malformed.csv"
 bad "zero parcel mass" "--parcel-mass 0" regions --sim "$tmp/left.csv" --parcel-mass 0
+# issue 22: 1e-300 and 1e300 were taken; the range is [1e-20, 1000] kg
+bad "tiny parcel mass" "--parcel-mass 1e-300 is outside .1e-20, 1000. kg" regions --sim "$tmp/left.csv" --parcel-mass 1e-300
+bad "huge parcel mass" "--parcel-mass 1e300 is outside .1e-20, 1000. kg" regions --sim "$tmp/left.csv" --parcel-mass 1e300
 echo "not an image" > "$tmp/text.png"
 bad "not an image" "neither PNG nor JPEG" compare --photo "$tmp/text.png" --corners $corners --sim "$tmp/sim.csv" --out "$tmp/bad.png"
 bad "missing photo" "nothere.jpg" compare --photo "$tmp/nothere.jpg" --corners $corners --sim "$tmp/sim.csv" --out "$tmp/bad.png"

@@ -330,6 +330,13 @@ static void buildup_blend(void **s)
     ASSERT_REL(sww_cover_fraction(0.005, 0.02), 0.25, 1e-15);
     assert_true(sww_cover_fraction(0.02, 0.02) == 1.0 && sww_cover_fraction(1e9, 0.02) == 1.0);
     assert_true(isnan(sww_cover_fraction(NAN, 0.02)) && isnan(sww_cover_fraction(0.01, 0.0)));
+    /* issue 22: NaN or zero inputs give a NaN result without forming one by
+     * arithmetic; a tiny covering mass saturates instead of overflowing; an
+     * overflowing monolayer is INFINITY */
+    assert_true(isnan(sww_monolayer_mass(NAN, 1e-5)) && isnan(sww_monolayer_mass(920.0, 0.0)));
+    assert_true(isnan(sww_cover_fraction(0.01, NAN)));
+    assert_true(sww_cover_fraction(1.0, 1e-320) == 1.0 && sww_cover_fraction(1e300, 1e-300) == 1.0);
+    assert_true(isinf(sww_monolayer_mass(1e300, 1e300)));
     sww_free(bare);
     sww_free(cov);
 }
@@ -363,10 +370,35 @@ static void oblique_gate(void **s)
     assert_non_null(strstr(sww_errmsg(m), "oblique table"));
     assert_true(sww_dcrit_oblique(m, 1.0, 5.0) == sww_dcrit(m, 1.0));
     assert_false(sww_oblique_table(m, NULL, NULL));
+    assert_int_equal(sww_check_oblique_slide(m, 1e-4), SWW_EMISSING);
+    assert_non_null(strstr(sww_errmsg(m), "has no oblique table"));
+    {
+        /* a table without obliqueSlide: the slide length cannot be checked
+         * (issue 22: the wrapper compared the NaN it got and died of SIGFPE) */
+        sww_model *t = load_fixture();
+        const double tvt[] = { 0.0, 1.0 }, tvn[] = { 0.1, 1.0 }, td[] = { 1e-4, 3e-5, 5e-5, 2e-5 };
+        assert_int_equal(sww_regime_list(t, "obliqueVt", tvt, 2), SWW_OK);
+        assert_int_equal(sww_regime_list(t, "obliqueVn", tvn, 2), SWW_OK);
+        assert_int_equal(sww_regime_list(t, "obliqueDCrit", td, 4), SWW_OK);
+        assert_int_equal(sww_regime_commit(t, "code"), SWW_OK);
+        assert_true(isnan(sww_oblique_slide(t)));
+        assert_int_equal(sww_check_oblique_slide(t, 1e-4), SWW_EMISSING);
+        assert_non_null(strstr(sww_errmsg(t), "oblique table has no obliqueSlide"));
+        sww_free(t);
+    }
     const double vt[] = { 0.0, 0.5, 1.0, 2.0 };
     set_oblique(m, vt, 4);
     size_t nvt, nvn;
     assert_true(sww_oblique_table(m, &nvt, &nvn) && nvt == 4 && nvn == 5);
+    /* a case's slide length against the table's obliqueSlide (1e-4) */
+    assert_int_equal(sww_check_oblique_slide(m, 1e-4), SWW_OK);
+    assert_int_equal(sww_check_oblique_slide(m, 1e-4 * (1.0 + 1e-12)), SWW_OK);
+    assert_int_equal(sww_check_oblique_slide(m, 2e-4), SWW_EINVAL);
+    assert_non_null(strstr(sww_errmsg(m), "slideLength 0.0002 m differs from the regime table's obliqueSlide 0.0001 m"));
+    assert_int_equal(sww_check_oblique_slide(m, -1.0), SWW_EINVAL);
+    assert_int_equal(sww_check_oblique_slide(m, NAN), SWW_EINVAL);
+    assert_non_null(strstr(sww_errmsg(m), "slideLength nan must be a finite length >= 0 m"));
+    assert_int_equal(sww_check_oblique_slide(m, INFINITY), SWW_EINVAL);
     assert_int_equal(sww_set_tangential_regime(m), SWW_OK);
     assert_int_equal(sww_tangential_on(m), 2);
     /* v_t = 0 and v_t -> 0: the normal interface exactly */

@@ -3,6 +3,7 @@
 #include "swp_cor.h"
 #include "swp_detach.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -341,6 +342,20 @@ static double fit_eval(const sww_model *m, double vn)
     return m->basis == 2 ? s : exp(s);
 }
 
+/* a (x/x0)^k for a, x, x0 > 0 and k finite with |k| <= 1e3, without an
+ * overflow (issue 22: OpenFOAM traps it): INFINITY beyond e^709 = 8e307,
+ * exp of the logarithm where the ratio or the power alone would leave the
+ * doubles' range, and exactly a * pow(x / x0, k), as before, everywhere else. */
+static double scaled_power(double a, double x, double x0, double k)
+{
+    const double lr = log(x) - log(x0), lp = k * lr, la = lp + log(a);
+    if (la > 709.0)
+        return INFINITY;
+    if (fabs(lr) > 700.0 || fabs(lp) > 700.0)
+        return exp(la); /* at most 8e307; an underflow to 0 is not trapped */
+    return a * pow(x / x0, k);
+}
+
 double sww_dcrit(const sww_model *m, double vn)
 {
     if (!m->ready || isnan(vn))
@@ -349,9 +364,9 @@ double sww_dcrit(const sww_model *m, double vn)
         return INFINITY;
     const double lo = m->num[K_VNMIN], hi = m->num[K_VNMAX];
     if (vn < lo)
-        return m->d_lo * pow(vn / lo, m->num[K_SLOPELOW]);
+        return scaled_power(m->d_lo, vn, lo, m->num[K_SLOPELOW]);
     if (vn > hi)
-        return m->d_hi * pow(vn / hi, m->num[K_SLOPEHIGH]);
+        return scaled_power(m->d_hi, vn, hi, m->num[K_SLOPEHIGH]);
     return fit_eval(m, vn);
 }
 
@@ -577,12 +592,13 @@ int sww_regime_commit(sww_model *m, const char *origin)
 int sww_set_tangential_gate(sww_model *m, double vt_max, double d_ref, double exponent)
 {
     m->err[0] = '\0'; /* the message is of the last call only */
-    if (!(vt_max >= 0.0) || isinf(vt_max))
+    if (isnan(vt_max) || !(vt_max >= 0.0) || isinf(vt_max))
         return sww_fail(m, SWW_EINVAL, "tangential gate: vtMax %g must be a finite speed >= 0", vt_max);
-    if (!(d_ref > 0.0) || isinf(d_ref))
+    if (isnan(d_ref) || !(d_ref > 0.0) || isinf(d_ref))
         return sww_fail(m, SWW_EINVAL, "tangential gate: dRef %g must be a finite diameter > 0", d_ref);
-    if (!isfinite(exponent))
-        return sww_fail(m, SWW_EINVAL, "tangential gate: exponent %g is not a finite number", exponent);
+    if (isnan(exponent) || !(fabs(exponent) <= 1e3))
+        return sww_fail(m, SWW_EINVAL, "tangential gate: exponent %g is outside [-1000, 1000]",
+                        exponent);
     m->vt_on = 1;
     m->vt_max = vt_max;
     m->vt_dref = d_ref;
@@ -670,6 +686,31 @@ double sww_oblique_slide(const sww_model *m)
     return m->ob_ready && m->has[K_OBSLIDE] ? m->num[K_OBSLIDE] : NAN;
 }
 
+int sww_check_oblique_slide(sww_model *m, double slide)
+{
+    m->err[0] = '\0'; /* the message is of the last call only */
+    if (!isfinite(slide) || slide < 0.0)
+        return sww_fail(m, SWW_EINVAL, "tangentialGate slideLength %g must be a finite length "
+                        ">= 0 m", slide);
+    if (!m->ob_ready)
+        return sww_fail(m, SWW_EMISSING, "tangentialGate slideLength %g m: the regime has no "
+                        "oblique table (obliqueVt, obliqueVn, obliqueDCrit) to check it against: "
+                        "make regime.coeffs with snowregime map --vt 0,... --max-slide %g", slide,
+                        slide);
+    if (!m->has[K_OBSLIDE])
+        return sww_fail(m, SWW_EMISSING, "tangentialGate slideLength %g m: the regime's oblique "
+                        "table has no obliqueSlide (the slide length it was made with), so it "
+                        "cannot be checked: remake regime.coeffs with snowregime map --vt 0,... "
+                        "--max-slide %g (which writes obliqueSlide), or remove slideLength",
+                        slide, slide);
+    const double made = m->num[K_OBSLIDE];
+    if (!(fabs(slide - made) <= 1e-9 * made))
+        return sww_fail(m, SWW_EINVAL, "tangentialGate slideLength %g m differs from the regime "
+                        "table's obliqueSlide %g m: remake regime.coeffs with snowregime map "
+                        "--max-slide %g", slide, made, slide);
+    return SWW_OK;
+}
+
 int sww_oblique_table(const sww_model *m, size_t *nvt, size_t *nvn)
 {
     if (nvt)
@@ -697,7 +738,7 @@ void sww_set_tangential_off(sww_model *m)
 int sww_set_shear_gate_constant(sww_model *m, double tau_c)
 {
     m->err[0] = '\0'; /* the message is of the last call only */
-    if (!(tau_c >= 0.0) || isinf(tau_c))
+    if (isnan(tau_c) || !(tau_c >= 0.0) || isinf(tau_c))
         return sww_fail(m, SWW_EINVAL, "shear gate: tauCrit %g must be a finite stress >= 0 Pa", tau_c);
     m->shear_on = 1;
     m->tau_c = tau_c;
@@ -707,7 +748,7 @@ int sww_set_shear_gate_constant(sww_model *m, double tau_c)
 int sww_set_shear_gate_adhesion(sww_model *m, double roughness)
 {
     m->err[0] = '\0'; /* the message is of the last call only */
-    if (!(roughness > 0.0 && roughness <= 1.0))
+    if (isnan(roughness) || !(roughness > 0.0 && roughness <= 1.0))
         return sww_fail(m, SWW_EINVAL, "shear gate: roughnessFactor %g is not in (0, 1]", roughness);
     if (!m->has[K_GAMMA])
         return sww_fail(m, SWW_EMISSING, "shear gate model adhesion: missing key 'gamma' "
@@ -729,7 +770,7 @@ void sww_set_shear_off(sww_model *m)
 int sww_set_rebound_tangential(sww_model *m, double e_t)
 {
     m->err[0] = '\0'; /* the message is of the last call only */
-    if (!(e_t >= 0.0 && e_t <= 1.0))
+    if (isnan(e_t) || !(e_t >= 0.0 && e_t <= 1.0))
         return sww_fail(m, SWW_EINVAL, "reboundTangential %g is not in [0, 1]", e_t);
     m->e_t = e_t;
     return SWW_OK;
@@ -742,22 +783,28 @@ double sww_rebound_normal(const sww_model *m, double vn)
     if (m->has[K_REBOUND])
         return m->num[K_REBOUND];
     if (m->has[K_YIELD])
-        return vn > 0.0 ? swp_cor_thornton(m->num[K_YIELD] / vn) : 1.0;
+        /* vn <= V_y is elastic (x >= 1): compared, not divided, so that a
+         * subnormal vn cannot overflow the ratio */
+        return vn > m->num[K_YIELD] ? swp_cor_thornton(m->num[K_YIELD] / vn) : 1.0;
     return 1.0;
 }
 
 double sww_vt_max(const sww_model *m, double d)
 {
-    if (!(d > 0.0) || isinf(d))
+    if (isnan(d) || !(d > 0.0) || isinf(d))
         return NAN;
     if (m->vt_on != 1)
         return INFINITY;
-    return m->vt_exp == 0.0 ? m->vt_max : m->vt_max * pow(d / m->vt_dref, m->vt_exp);
+    if (m->vt_exp == 0.0 || m->vt_max == 0.0)
+        return m->vt_max;
+    return scaled_power(m->vt_max, d, m->vt_dref, m->vt_exp);
 }
 
 double sww_tau_crit(const sww_model *m, double d)
 {
-    if (!(d > 0.0) || isinf(d))
+    /* outside [1e-12, 1e3] m the detachment formulas (R^3, R^-4/3) leave the
+     * doubles' range: no number, rather than an overflow or 0/0 */
+    if (isnan(d) || !(d >= SWW_TAU_D_MIN && d <= SWW_TAU_D_MAX))
         return NAN;
     switch (m->shear_on) {
     case 1:
@@ -871,7 +918,9 @@ int sww_decide(const sww_model *m, const sww_impact *in, sww_outcome *out)
 {
     if (!m->ready)
         return SWW_ENOTREADY;
-    if (!(in->d > 0.0) || isinf(in->d) || !(in->vn >= 0.0) || isinf(in->vn)
+    /* NaN first: an ordered comparison of a NaN raises FE_INVALID (issue 22) */
+    if (isnan(in->d) || isnan(in->vn) || isnan(in->vt) || isnan(in->u)
+        || !(in->d > 0.0) || isinf(in->d) || !(in->vn >= 0.0) || isinf(in->vn)
         || !(in->vt >= 0.0) || isinf(in->vt) || !(in->u >= 0.0 && in->u < 1.0))
         return SWW_EINVAL;
     const double dc = sww_dcrit(m, in->vn);
@@ -891,7 +940,7 @@ int sww_decide(const sww_model *m, const sww_impact *in, sww_outcome *out)
         out->reason = SWW_BY_TANGENTIAL;
     }
     if (stick && m->shear_on) {
-        if (!(in->tau_w >= 0.0) || isinf(in->tau_w))
+        if (isnan(in->tau_w) || !(in->tau_w >= 0.0) || isinf(in->tau_w))
             return SWW_EINVAL;
         /* a diameter so large that tau_c is not a number is refused, not a
          * gate that silently never fires */
@@ -921,8 +970,11 @@ int sww_decide(const sww_model *m, const sww_impact *in, sww_outcome *out)
 
 double sww_monolayer_mass(double rho, double d)
 {
-    if (!(rho > 0.0) || !(d > 0.0) || isinf(rho) || isinf(d))
+    /* isfinite first: an ordered comparison of a NaN raises FE_INVALID */
+    if (!isfinite(rho) || !isfinite(d) || rho <= 0.0 || d <= 0.0)
         return NAN;
+    if (rho > 1.0 && d > DBL_MAX / rho)
+        return INFINITY; /* the product would overflow */
     /* hexagonally close-packed spheres on a plane: area fraction pi/(2 sqrt 3),
      * a sphere's mass over its projected area (2/3) rho d */
     return M_PI / (2.0 * sqrt(3.0)) * (2.0 / 3.0) * rho * d;
@@ -930,18 +982,18 @@ double sww_monolayer_mass(double rho, double d)
 
 double sww_cover_fraction(double mass_per_area, double cover_mass)
 {
-    if (isnan(mass_per_area) || !(cover_mass > 0.0))
+    if (isnan(mass_per_area) || isnan(cover_mass) || cover_mass <= 0.0)
         return NAN;
-    if (!(mass_per_area > 0.0))
+    if (mass_per_area <= 0.0)
         return 0.0;
-    const double w = mass_per_area / cover_mass;
-    return w < 1.0 ? w : 1.0;
+    /* compared before dividing: a tiny cover_mass cannot overflow the ratio */
+    return mass_per_area < cover_mass ? mass_per_area / cover_mass : 1.0;
 }
 
 int sww_decide_blend(const sww_model *bare, const sww_model *covered, double w,
                      const sww_impact *in, sww_outcome *out)
 {
-    if (!(w >= 0.0 && w <= 1.0))
+    if (isnan(w) || !(w >= 0.0 && w <= 1.0))
         return SWW_EINVAL;
     if (w == 0.0 || !covered)
         return sww_decide(bare, in, out);
@@ -959,7 +1011,7 @@ int sww_decide_blend(const sww_model *bare, const sww_model *covered, double w,
     rc = sww_decide(covered, &in0, &oc);
     if (rc != SWW_OK)
         return rc;
-    if (!(in->u >= 0.0 && in->u < 1.0))
+    if (isnan(in->u) || !(in->u >= 0.0 && in->u < 1.0))
         return SWW_EINVAL;
     const double pb = ob.fate == SWW_STICK ? ob.p_stick : 0.0;
     const double pc = oc.fate == SWW_STICK ? oc.p_stick : 0.0;

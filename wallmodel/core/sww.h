@@ -89,8 +89,10 @@ int sww_regime_load(sww_model *m, const char *path);
  * list keys: coeffs vn dCrit obliqueVt obliqueVn obliqueDCrit probabilityD
  *   probabilityVn probabilityStick;
  * word keys: representation basis label
- * Unknown keys are accepted and ignored (forward compatibility). Setting any key
- * makes the model not ready until the next successful sww_regime_commit. */
+ * An unknown key, or a key given as the wrong kind (a number for a list key, ...),
+ * is SWW_EINVAL with a message naming it (a misspelt key is an error, not a silent
+ * default). Setting any key makes the model not ready until the next successful
+ * sww_regime_commit. */
 int sww_regime_number(sww_model *m, const char *key, double v);
 int sww_regime_list(sww_model *m, const char *key, const double *v, size_t n);
 int sww_regime_word(sww_model *m, const char *key, const char *w);
@@ -100,7 +102,8 @@ int sww_regime_commit(sww_model *m, const char *origin);
 void sww_regime_clear(sww_model *m);
 
 /* ---- options (each off / neutral by default) ----------------------------- */
-/* Tangential gate: a stick candidate sticks only if vt <= vt_max (d/d_ref)^exponent. */
+/* Tangential gate: a stick candidate sticks only if vt <= vt_max (d/d_ref)^exponent
+ * (vt_max finite >= 0, d_ref finite > 0, |exponent| <= 1000; SWW_EINVAL otherwise). */
 int sww_set_tangential_gate(sww_model *m, double vt_max, double d_ref, double exponent);
 /* Tangential gate from the regime map's oblique table (model regime): a stick
  * candidate sticks only if d <= sww_dcrit_oblique(vn, vt). Needs a committed
@@ -147,12 +150,14 @@ int sww_decide_blend(const sww_model *bare, const sww_model *covered, double w,
 double sww_cover_fraction(double mass_per_area, double cover_mass);
 /* Mass per area of one monolayer of spheres of diameter d and density rho,
  * hexagonally close packed: m_c = (pi / (2 sqrt 3)) (2/3) rho d = 0.6046 rho d
- * [kg/m2] (NaN for non-positive or infinite input). */
+ * [kg/m2] (NaN for non-positive or non-finite input, INFINITY where rho d
+ * overflows). */
 double sww_monolayer_mass(double rho, double d);
 
 /* d_crit(v_n) [m]: the fit inside [vnMin, vnMax]; outside it the power law
  * d_crit(vn_end) (v_n/vn_end)^slope anchored at the range end; INFINITY for
- * v_n <= 0; NaN only for NaN input or a model that is not ready. */
+ * v_n <= 0 and where the power law exceeds e^709 = 8e307 m (a subnormal v_n),
+ * without an overflow; NaN only for NaN input or a model that is not ready. */
 double sww_dcrit(const sww_model *m, double vn);
 /* d_crit(v_n, v_t) [m] with the oblique table: min(d_crit(v_n), D_t(v^_n, v_t)),
  * d_crit(v_n) the normal interface (above), D_t the tangential limit taken
@@ -167,8 +172,16 @@ double sww_dcrit(const sww_model *m, double vn);
  * every v_t. NaN only for NaN input or a model that is not ready. */
 double sww_dcrit_oblique(const sww_model *m, double vn, double vt);
 /* The slide length the oblique table was made with [m] (obliqueSlide; NaN
- * without a table or the key). */
+ * without a table or the key: test it with isnan(), never with an ordered
+ * comparison, which raises FE_INVALID on a NaN). */
 double sww_oblique_slide(const sww_model *m);
+/* Check a slide length [m] that a case states for the oblique table (the
+ * wrapper's tangentialGate slideLength) against the table's obliqueSlide:
+ * SWW_OK when they agree to 1e-9 relative (exactly, for 0); SWW_EINVAL for a
+ * slide that is not finite and >= 0, or one that differs; SWW_EMISSING without
+ * an oblique table or without obliqueSlide in it. The message names both values
+ * and the remedy. Forms no NaN and compares none. */
+int sww_check_oblique_slide(sww_model *m, double slide);
 /* 1 when the regime has an oblique table (sizes into *nvt, *nvn; may be NULL). */
 int sww_oblique_table(const sww_model *m, size_t *nvt, size_t *nvn);
 /* 1 when the regime has a stick-probability table (probabilityD, probabilityVn,
@@ -182,7 +195,11 @@ double sww_rebound_normal(const sww_model *m, double vn);
  * that is not finite and > 0. */
 double sww_vt_max(const sww_model *m, double d);
 /* Critical wall shear stress tau_c(d) [Pa] (INFINITY when the gate is off);
- * NaN for a d that is not finite and > 0. */
+ * NaN for a d outside [SWW_TAU_D_MIN, SWW_TAU_D_MAX] = [1e-12, 1e3] m (NaN and
+ * infinities included), where the detachment formulas leave the doubles' range;
+ * sww_decide then refuses a stick candidate that reaches the shear gate. */
+#define SWW_TAU_D_MIN 1e-12
+#define SWW_TAU_D_MAX 1e3
 double sww_tau_crit(const sww_model *m, double d);
 /* 1 when sww_decide may be called. */
 int sww_ready(const sww_model *m);

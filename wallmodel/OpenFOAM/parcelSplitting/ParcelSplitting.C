@@ -5,6 +5,18 @@
 #include "ParcelSplitting.H"
 #include "treeBoundBox.H"
 #include "Pstream.H"
+#include "vector2D.H"
+
+// * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * * * //
+
+template<class CloudType>
+const Foam::label Foam::ParcelSplitting<CloudType>::maxParcelsDefault;
+
+template<class CloudType>
+const Foam::label Foam::ParcelSplitting<CloudType>::maxCopiesDefault;
+
+template<class CloudType>
+const Foam::label Foam::ParcelSplitting<CloudType>::maxCopiesLimit;
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -12,11 +24,57 @@ template<class CloudType>
 void Foam::ParcelSplitting<CloudType>::readRegions()
 {
     const dictionary& dict = this->coeffDict();
-    const PtrList<entry> entries(dict.lookup("regions"));
-    if (entries.empty())
+    const word& name = this->modelName();
+    const char* const form =
+        "regions ( name { box (min) (max); factor F; } ... );";
+
+    // the form is checked before the entries are read: OpenFOAM's own reading
+    // of a dictionary as a list aborts with a message naming neither
+    const entry* re = dict.findEntry("regions", keyType::LITERAL);
+    if (!re)
     {
         FatalIOErrorInFunction(dict)
-            << "parcelSplitting: 'regions' is empty" << exit(FatalIOError);
+            << "parcelSplitting " << name << ": missing 'regions': give a list  "
+            << form << exit(FatalIOError);
+    }
+    if (re->isDict())
+    {
+        FatalIOErrorInFunction(re->dict())
+            << "parcelSplitting " << name << ": 'regions' is a dictionary { ... } "
+            << "but must be a list in parentheses:  " << form
+            << exit(FatalIOError);
+    }
+    ITstream& is = re->stream();
+    if
+    (
+        is.empty()
+     || !is[0].isPunctuation()
+     || is[0].pToken() != token::BEGIN_LIST
+    )
+    {
+        FatalIOErrorInFunction(is)
+            << "parcelSplitting " << name << ": 'regions' must be a list in "
+            << "parentheses:  " << form << "  got  " << is.toString()
+            << exit(FatalIOError);
+    }
+    const PtrList<entry> entries(is);
+
+    // a region's entries read from the list carry only their own name: an
+    // error names the file and scope of 'regions' and the region's lines
+    const fileName scope(re->name());
+    auto at = [&scope](const dictionary& rd) -> OSstream&
+    {
+        return FatalIOError
+        (
+            FUNCTION_NAME, __FILE__, __LINE__,
+            scope + "." + rd.dictName(), rd.startLineNumber(), rd.endLineNumber()
+        );
+    };
+    if (entries.empty())
+    {
+        FatalIOErrorInFunction(is)
+            << "parcelSplitting " << name << ": 'regions' is empty: give at "
+            << "least one region:  " << form << exit(FatalIOError);
     }
 
     const pointField& cc = this->owner().mesh().cellCentres();
@@ -29,20 +87,37 @@ void Foam::ParcelSplitting<CloudType>::readRegions()
     {
         if (!entries[r].isDict())
         {
-            FatalIOErrorInFunction(dict)
-                << "parcelSplitting: region entry '" << entries[r].keyword()
-                << "' is not a dictionary { boxes (...); factor F; }"
+            FatalIOErrorInFunction(is)
+                << "parcelSplitting " << name << ": region entry '"
+                << entries[r].keyword() << "' is not a dictionary "
+                << "{ box (min) (max); factor F; }:  " << form
                 << exit(FatalIOError);
         }
         const dictionary& rd = entries[r].dict();
         regionNames_[r] = entries[r].keyword();
-
-        const scalar F = rd.get<scalar>("factor");
-        if (!(F >= 1) || !std::isfinite(F) || F > 1e6)
+        for (label q = 0; q < r; ++q)
         {
-            FatalIOErrorInFunction(rd)
-                << "parcelSplitting: region " << regionNames_[r]
-                << ": factor " << F << " must be in [1, 1e6]"
+            if (regionNames_[q] == regionNames_[r])
+            {
+                at(rd)
+                    << "parcelSplitting " << name << ": region '"
+                    << regionNames_[r] << "' is given twice in 'regions': "
+                    << "each region needs its own name (both entries would act)"
+                    << exit(FatalIOError);
+            }
+        }
+
+        // a parcel of the reference mass becomes F parcels: F is bounded by
+        // maxCopies, the most parcels one split may make
+        const scalar F = rd.get<scalar>("factor");
+        if (!std::isfinite(F) || F < 1 || F > maxCopies_)
+        {
+            at(rd)
+                << "parcelSplitting " << name << ": region " << regionNames_[r]
+                << ": factor " << F << " must be in [1, maxCopies "
+                << maxCopies_ << "]: one parcel of the injected mean mass "
+                << "becomes F parcels in it; raise maxCopies (at most "
+                << maxCopiesLimit << ") to allow more"
                 << exit(FatalIOError);
         }
         factor_[r] = F;
@@ -64,8 +139,8 @@ void Foam::ParcelSplitting<CloudType>::readRegions()
         }
         if (corners.size() % 2)
         {
-            FatalIOErrorInFunction(rd)
-                << "parcelSplitting: region " << regionNames_[r]
+            at(rd)
+                << "parcelSplitting " << name << ": region " << regionNames_[r]
                 << ": 'boxes' holds " << corners.size()
                 << " points, not (min) (max) pairs" << exit(FatalIOError);
         }
@@ -76,8 +151,8 @@ void Foam::ParcelSplitting<CloudType>::readRegions()
             const point& hi = corners[2*b + 1];
             if (!(lo.x() < hi.x() && lo.y() < hi.y() && lo.z() < hi.z()))
             {
-                FatalIOErrorInFunction(rd)
-                    << "parcelSplitting: region " << regionNames_[r]
+                at(rd)
+                    << "parcelSplitting " << name << ": region " << regionNames_[r]
                     << ": box " << lo << " " << hi
                     << " needs min < max in x, y, z" << exit(FatalIOError);
             }
@@ -85,8 +160,8 @@ void Foam::ParcelSplitting<CloudType>::readRegions()
         }
         if (bbs.empty())
         {
-            FatalIOErrorInFunction(rd)
-                << "parcelSplitting: region " << regionNames_[r]
+            at(rd)
+                << "parcelSplitting " << name << ": region " << regionNames_[r]
                 << ": needs 'box (min) (max);' or a non-empty"
                 << " 'boxes ((min) (max) ...);'" << exit(FatalIOError);
         }
@@ -146,20 +221,42 @@ Foam::ParcelSplitting<CloudType>::ParcelSplitting
     (
         this->coeffDict().template lookupOrDefault<label>
         (
-            "maxParcels", labelMax
+            "maxParcels", maxParcelsDefault
+        )
+    ),
+    maxCopies_
+    (
+        this->coeffDict().template lookupOrDefault<label>
+        (
+            "maxCopies", maxCopiesDefault
         )
     ),
     nSplit_(0),
     nCopies_(0),
-    capped_(false)
+    capped_(false),
+    heavyNoticed_(false)
 {
+    // the caps first: the factors are checked against maxCopies
     if (maxParcels_ < 1)
     {
         FatalIOErrorInFunction(this->coeffDict())
-            << "parcelSplitting: maxParcels " << maxParcels_
-            << " must be >= 1" << exit(FatalIOError);
+            << "parcelSplitting " << modelName << ": maxParcels "
+            << maxParcels_ << " must be in [1, " << labelMax << "] (the most "
+            << "parcels the cloud may hold after splitting; default "
+            << maxParcelsDefault << ")" << exit(FatalIOError);
+    }
+    if (maxCopies_ < 2 || maxCopies_ > maxCopiesLimit)
+    {
+        FatalIOErrorInFunction(this->coeffDict())
+            << "parcelSplitting " << modelName << ": maxCopies " << maxCopies_
+            << " must be in [2, " << maxCopiesLimit << "] (the most parcels "
+            << "one parcel is split into; default " << maxCopiesDefault << ")"
+            << exit(FatalIOError);
     }
     readRegions();
+    Info<< "    parcelSplitting: at most " << maxCopies_
+        << " parcels from one parcel (maxCopies), at most " << maxParcels_
+        << " parcels in the cloud (maxParcels)" << endl;
     this->getModelProperty("nSplit", nSplit_);
     this->getModelProperty("nCopies", nCopies_);
 }
@@ -176,9 +273,11 @@ Foam::ParcelSplitting<CloudType>::ParcelSplitting
     regionCells_(ps.regionCells_),
     factor_(ps.factor_),
     maxParcels_(ps.maxParcels_),
+    maxCopies_(ps.maxCopies_),
     nSplit_(ps.nSplit_),
     nCopies_(ps.nCopies_),
-    capped_(ps.capped_)
+    capped_(ps.capped_),
+    heavyNoticed_(ps.heavyNoticed_)
 {}
 
 
@@ -187,81 +286,131 @@ Foam::ParcelSplitting<CloudType>::ParcelSplitting
 template<class CloudType>
 void Foam::ParcelSplitting<CloudType>::postEvolve()
 {
+    // m_ref is global (the injection models reduce their totals), so every
+    // processor takes the same branch and meets the same reduction
     const scalar mRef = referenceMass();
-    CloudType& cloud = this->owner();
-    // the global count only when a cap is set (a reduction every step otherwise)
-    const label nParcels =
-    (
-        maxParcels_ < labelMax
-      ? returnReduce(cloud.size(), sumOp<label>())
-      : label(0)
-    );
-
-    if (nParcels > maxParcels_ && !capped_)
+    if (mRef <= 0)
     {
-        Info<< "    parcelSplitting " << this->modelName() << ": "
-            << nParcels << " parcels > maxParcels " << maxParcels_
-            << ": no splitting while the cloud is that large" << endl;
+        CloudFunctionObject<CloudType>::postEvolve();
+        return;
     }
-    capped_ = nParcels > maxParcels_;
+    CloudType& cloud = this->owner();
 
-    if (mRef > 0 && !capped_)
+    // 1. the parcels to split and their n = round(m F / m_ref), before any
+    //    copy is added. n never exceeds maxCopies: a parcel that would need
+    //    more (heavier than maxCopies/F reference masses) is left whole, so
+    //    every copy made has the target mass m_ref/F to rounding (m F/m_ref
+    //    <= 1.25 < 1.5) and is not split again at that factor (the copies of
+    //    a capped split would be heavier than the target and be split again
+    //    step after step)
+    DynamicList<parcelType*> parcels;
+    DynamicList<label> nCopies;
+    scalar wanted = 0;          // copies the parcels ask for (a scalar: no overflow)
+    label heavy = 0;
+    for (parcelType& p : cloud)
     {
-        // find the parcels to split first: copies are added afterwards
-        DynamicList<parcelType*> parcels;
-        DynamicList<label> nCopies;
-        for (parcelType& p : cloud)
+        if (!p.active())
         {
-            if (!p.active())
+            continue;       // stuck and kept (stuckParcels keep): deposited
+        }
+        scalar F = 1;
+        forAll(regionCells_, r)
+        {
+            if (factor_[r] > F && regionCells_[r].test(p.cell()))
             {
-                continue;       // stuck and kept (stuckParcels keep): deposited
-            }
-            scalar F = 1;
-            forAll(regionCells_, r)
-            {
-                if (factor_[r] > F && regionCells_[r].test(p.cell()))
-                {
-                    F = factor_[r];
-                }
-            }
-            if (F <= 1)
-            {
-                continue;
-            }
-            const scalar n = p.nParticle()*p.mass()*F/mRef;
-            if (n >= 1.5)
-            {
-                parcels.append(&p);
-                nCopies.append(label(min(n, scalar(1e4)) + 0.5));
+                F = factor_[r];
             }
         }
-
-        label split = 0, copies = 0;
-        forAll(parcels, i)
+        if (F <= 1)
         {
-            parcelType& p = *parcels[i];
-            const label n = nCopies[i];
-            p.nParticle() /= n;
-            p.tTurb() = GREAT;      // new turbulent fluctuation next step
-            for (label k = 1; k < n; ++k)
-            {
-                cloud.addParticle(new parcelType(p));
-            }
-            ++split;
-            copies += n - 1;
+            continue;
         }
-
-        reduce(split, sumOp<label>());
-        reduce(copies, sumOp<label>());
-        if (split)
+        const scalar n = p.nParticle()*p.mass()*F/mRef;
+        if (!(n >= 1.5))
         {
-            nSplit_ += split;
-            nCopies_ += copies;
+            continue;
+        }
+        if (n >= maxCopies_ + 0.5)
+        {
+            ++heavy;
+            continue;
+        }
+        const label k = label(n + 0.5);
+        parcels.append(&p);
+        nCopies.append(k);
+        wanted += k - 1;
+    }
+
+    // 2. the cloud may hold at most maxParcels: the copies of this step share
+    //    what is left of it, each processor in proportion to its demand (one
+    //    reduction of both counts)
+    vector2D counts(cloud.size(), wanted);
+    reduce(counts, sumOp<vector2D>());
+    const scalar room = max(scalar(0), scalar(maxParcels_) - counts.x());
+    const bool capped = counts.y() > room;
+    const scalar allowed =
+        capped ? (counts.y() > 0 ? std::floor(room*wanted/counts.y()) : 0) : wanted;
+
+    // 3. split in order while the copies fit; a parcel whose copies do not
+    //    fit is left whole (unbiased either way: splitting never changes the
+    //    expected deposit)
+    label split = 0, copies = 0, left = 0;
+    forAll(parcels, i)
+    {
+        parcelType& p = *parcels[i];
+        const label n = nCopies[i];
+        if (copies + n - 1 > allowed)
+        {
+            ++left;
+            continue;
+        }
+        p.nParticle() /= n;
+        p.tTurb() = GREAT;      // new turbulent fluctuation next step
+        for (label k = 1; k < n; ++k)
+        {
+            cloud.addParticle(new parcelType(p));
+        }
+        ++split;
+        copies += n - 1;
+    }
+
+    reduce(split, sumOp<label>());
+    reduce(copies, sumOp<label>());
+    reduce(left, sumOp<label>());
+    reduce(heavy, sumOp<label>());
+    if (split)
+    {
+        nSplit_ += split;
+        nCopies_ += copies;
+        Info<< "    parcelSplitting " << this->modelName() << ": "
+            << split << " parcels split into " << copies + split
+            << " (totals " << nSplit_ << ", +" << nCopies_ << ")"
+            << endl;
+    }
+    if (capped && !capped_)
+    {
+        // said once each time the cap starts to bind
+        if (room <= 0)
+        {
             Info<< "    parcelSplitting " << this->modelName() << ": "
-                << split << " parcels split into " << copies + split
-                << " (totals " << nSplit_ << ", +" << nCopies_ << ")"
-                << endl;
+                << label(counts.x()) << " parcels >= maxParcels " << maxParcels_
+                << ": no splitting while the cloud is that large" << endl;
         }
+        else
+        {
+            Info<< "    parcelSplitting " << this->modelName() << ": " << left
+                << " parcels left whole: their copies would take the cloud "
+                << "past maxParcels " << maxParcels_ << endl;
+        }
+    }
+    capped_ = capped;
+    if (heavy && !heavyNoticed_)
+    {
+        Info<< "    parcelSplitting " << this->modelName() << ": " << heavy
+            << " parcels left whole: heavier than maxCopies/F reference "
+            << "masses, they would need more than maxCopies " << maxCopies_
+            << " copies (said once)" << endl;
+        heavyNoticed_ = true;
     }
 
     CloudFunctionObject<CloudType>::postEvolve();

@@ -138,6 +138,41 @@ inline OSstream& fatalAt(const dictionary& d, const entry* e)
     );
 }
 
+//- Number `key` of dictionary d, read and checked before it is used: a
+//  finite value in [lo, hi] (in (lo, hi] with openLo), else a FatalIOError
+//  at the entry that names the key, its sub-dictionary, the value and the
+//  accepted range. isfinite comes first: an ordered comparison of a NaN
+//  raises FE_INVALID, which OpenFOAM traps (SIGFPE, no message).
+inline scalar checkedNumber
+(
+    const dictionary& d,
+    const word& key,
+    scalar lo,
+    scalar hi,
+    const char* unit,
+    const char* what,
+    bool openLo = false
+)
+{
+    const scalar v = d.get<scalar>(key);    // a missing / unreadable value: OpenFOAM's error
+    if (!std::isfinite(v) || v < lo || (openLo && v == lo) || v > hi)
+    {
+        fatalAt(d, d.findEntry(key, keyType::LITERAL))
+            << "snowWallInteraction: " << d.dictName() << ": " << key << ' ' << v
+            << " is outside the accepted range " << (openLo ? '(' : '[') << lo
+            << ", " << hi << "] " << unit << " (" << what << ")"
+            << exit(FatalIOError);
+    }
+    return v;
+}
+
+//- Accepted ranges of buildUp's covering mass (doc/wallmodel.md): positive
+//  (any small value: the cover fraction compares before it divides, so
+//  nothing overflows) and at most a 0.1 m diameter (the kernel's largest) or
+//  1e4 kg/m2 (one monolayer of 0.1 m ice spheres is 56 kg/m2)
+static const scalar coverDMax = 0.1;
+static const scalar coverMassMax = 1e4;
+
 //- The cloud is a colliding one (KinematicCollidingCloud, which reads a
 //  collisionModel): its parcels keep collision records. The model is
 //  templated on the kinematic base cloud, so the parcel type tells;
@@ -443,20 +478,18 @@ void Foam::SnowWallInteraction<CloudType>::applyGates
                 // (snowregime map --vt 0,... --max-slide S)
                 check(m, sww_set_tangential_regime(m), g);
                 // the criterion's slide length, when the case states it,
-                // must be the one the table was made with
-                scalar slide = 0;
-                if (g.readIfPresent("slideLength", slide))
+                // must be the one the table was made with (the C core checks
+                // it: a table without obliqueSlide is an error, not a NaN)
+                const entry* se = g.findEntry("slideLength", keyType::LITERAL);
+                if (se)
                 {
-                    const scalar made = sww_oblique_slide(m);
-                    if (!(mag(slide - made) <= 1e-9*mag(made)))
-                    {
-                        FatalIOErrorInFunction(g)
-                            << "snowWallInteraction: tangentialGate slideLength "
-                            << slide << " differs from the regime table's "
-                            << "obliqueSlide " << made << ": remake regime.coeffs "
-                            << "with snowregime map --max-slide " << slide
-                            << exit(FatalIOError);
-                    }
+                    check
+                    (
+                        m,
+                        sww_check_oblique_slide(m, g.get<scalar>("slideLength")),
+                        g,
+                        se
+                    );
                 }
             }
             else
@@ -503,7 +536,16 @@ void Foam::SnowWallInteraction<CloudType>::applyGates
             }
             shearOn_ = true;
             tauName_ = g.lookupOrDefault<word>("field", "wallShearStress");
-            rhoAir_ = g.lookupOrDefault<scalar>("rhoAir", -1.0);
+            // checked here, not at the first impact: a huge value would
+            // overflow rhoAir*tau there (SIGFPE under OpenFOAM's traps)
+            rhoAir_ =
+                g.found("rhoAir", keyType::LITERAL)
+              ? snowWallDetail::checkedNumber
+                (
+                    g, "rhoAir", 1e-6, 1e4, "kg/m3",
+                    "the air density that turns a kinematic wall shear stress into Pa"
+                )
+              : -1.0;
         }
     }
 }
@@ -663,26 +705,49 @@ void Foam::SnowWallInteraction<CloudType>::setup()
             }
             readRegime(covered_, b.subDict("regime"));
             applyGates(covered_, cd);
+            // every number checked before it is used (a non-positive one
+            // made a NaN whose comparison OpenFOAM trapped as SIGFPE)
             scalar dCover = -1;
-            if (b.readIfPresent("coverMass", coverMass_))
+            const bool hasMass = b.found("coverMass", keyType::LITERAL);
+            const bool hasD = b.found("coverDiameter", keyType::LITERAL);
+            if (hasMass && hasD)
             {
-                if (!(coverMass_ > 0) || !std::isfinite(coverMass_))
-                {
-                    FatalIOErrorInFunction(b)
-                        << "snowWallInteraction: buildUp: coverMass " << coverMass_
-                        << " must be a mass per area > 0 [kg/m2]" << exit(FatalIOError);
-                }
+                snowWallDetail::fatalAt(b, b.findEntry("coverDiameter", keyType::LITERAL))
+                    << "snowWallInteraction: buildUp: give coverDiameter or "
+                    << "coverMass, not both (coverMass would be used, "
+                    << "coverDiameter ignored)" << exit(FatalIOError);
             }
-            else if (b.readIfPresent("coverDiameter", dCover))
+            if (hasMass)
             {
+                coverMass_ = snowWallDetail::checkedNumber
+                (
+                    b, "coverMass", 0, snowWallDetail::coverMassMax, "kg/m2",
+                    "the covering mass per area of a face", true
+                );
+            }
+            else if (hasD)
+            {
+                dCover = snowWallDetail::checkedNumber
+                (
+                    b, "coverDiameter", 0, snowWallDetail::coverDMax, "m",
+                    "the mean particle diameter: one monolayer covers a face", true
+                );
                 const scalar rho = this->owner().constProps().rho0();
                 coverMass_ = sww_monolayer_mass(rho, dCover);
-                if (!(coverMass_ > 0) || !std::isfinite(coverMass_))
+                if
+                (
+                    !std::isfinite(coverMass_)
+                 || coverMass_ <= 0
+                 || coverMass_ > snowWallDetail::coverMassMax
+                )
                 {
-                    FatalIOErrorInFunction(b)
+                    snowWallDetail::fatalAt(b, b.findEntry("coverDiameter", keyType::LITERAL))
                         << "snowWallInteraction: buildUp: coverDiameter " << dCover
-                        << " (particle density " << rho << ") gives no covering "
-                        << "mass: give a diameter > 0 [m]" << exit(FatalIOError);
+                        << " m with the cloud's particle density rho0 " << rho
+                        << " kg/m3 (constantProperties) gives a covering mass "
+                        << coverMass_ << " kg/m2 outside the accepted range (0, "
+                        << snowWallDetail::coverMassMax << "] kg/m2: check rho0, "
+                        << "or give coverMass directly" << exit(FatalIOError);
                 }
             }
             else

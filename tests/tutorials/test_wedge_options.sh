@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# test_wedge_options.sh - tutorials/wedge/Allrun refuses bad options with exit 2 and
+# one message naming the option, the value and the accepted range, before it writes
+# anything (issue 22: -parallel 999 decomposed the case into some 18 000 files
+# before mpirun refused); so do the post-processing scripts (post/wedge-*) for a
+# missing option value or a malformed --window. Runs in a temporary copy of the case's
+# source files; needs neither OpenFOAM nor a build (the refusals come first). About 1 s.
+set -u
+top=${SW_TOP:?SW_TOP not set}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+w="$tmp/wedge"
+mkdir -p "$w"
+if git -C "$top" rev-parse >/dev/null 2>&1; then
+    (cd "$top/tutorials/wedge" && git ls-files -co --exclude-standard . | tar cf - -T -) | (cd "$w" && tar xf -)
+else
+    (cd "$top/tutorials/wedge" && tar cf - --exclude=results .) | (cd "$w" && tar xf -)
+fi
+[ -x "$w/Allrun" ] || fail "no Allrun in the copy"
+listing() { (cd "$w" && find . | sort); }
+listing > "$tmp/before"
+ncpu=$(nproc 2>/dev/null || echo 1)
+
+refused() {  # refused PATTERN ARGS...: exit 2, PATTERN in the message, nothing written
+    local want=$1; shift
+    SNOWWALL_TOP="$top" "$w/Allrun" "$@" > "$tmp/out" 2> "$tmp/err"; local rc=$?
+    [ "$rc" = 2 ] || fail "Allrun $*: exit $rc, want 2 ($(cat "$tmp/err"))"
+    grep -qF -- "$want" "$tmp/err" || fail "Allrun $*: the message does not say '$want': $(cat "$tmp/err")"
+    listing | diff -q "$tmp/before" - > /dev/null || fail "Allrun $*: wrote or removed files: $(listing | diff "$tmp/before" - | head -5)"
+    echo "ok   Allrun $*: $(head -1 "$tmp/err")"
+}
+refused "-parallel 999: this machine has $ncpu processors (nproc); accepted: 1 to $ncpu (up to $((4 * ncpu)) with -oversubscribe)" -parallel 999
+refused "-parallel $((ncpu + 1)): this machine has $ncpu processors" -test -parallel $((ncpu + 1))
+refused "-parallel $((4 * ncpu + 1)): accepted with -oversubscribe: 1 to $((4 * ncpu))" -parallel $((4 * ncpu + 1)) -oversubscribe
+refused "-parallel needs a whole number of processes from 1 (without leading zeros), got '0'" -parallel 0
+refused "got '007'" -parallel 007
+refused "got '99999999999999999999'" -parallel 99999999999999999999
+refused "got '-2'" -parallel -2
+refused "got ''" -parallel
+refused "-oversubscribe needs -parallel N with N > 1" -oversubscribe
+refused "-gate must be off, tangential, shear or regime, got 'on'" -gate on
+refused "-sizes needs whole diameters in um (1..1000)" -sizes 5,,10
+refused "unknown option '-parallell'" -parallell 2
+# the post-processing scripts: a missing option value or a malformed --window is a
+# usage error, exit 2, named (issue 22: '--gate' alone exited 1 from the shell's own
+# ${2:?}, and '--window 1e-,2,3' passed as 1,2,3)
+post_refused() {  # post_refused PATTERN SCRIPT ARGS...
+    local want=$1 script=$2; shift 2
+    "$w/post/$script" "$@" > "$tmp/out" 2> "$tmp/err"; local rc=$?
+    [ "$rc" = 2 ] || fail "$script $*: exit $rc, want 2 ($(cat "$tmp/err"))"
+    grep -qF -- "$want" "$tmp/err" || fail "$script $*: the message does not say '$want': $(cat "$tmp/err")"
+    listing | diff -q "$tmp/before" - > /dev/null || fail "$script $*: wrote or removed files in the case"
+    [ ! -e "$tmp/post-out" ] || fail "$script $*: created its --out folder"
+    echo "ok   $script $*: $(head -1 "$tmp/err")"
+}
+post_refused "wedge-post: --gate needs a name" wedge-post --case "$w" --out "$tmp/post-out" --gate
+post_refused "wedge-post: --window '1e-,2,3' is not T0,TH,T1" wedge-post --case "$w" --out "$tmp/post-out" --window 1e-,2,3
+post_refused "wedge-post: --window '0,2,1' is not T0,TH,T1 with 0 <= T0 < TH < T1" wedge-post --case "$w" --out "$tmp/post-out" --window 0,2,1
+post_refused "wedge-capture: --gate needs a name" wedge-capture --results "$tmp/post-out" --gate
+post_refused "wedge-variant: --log needs a file" wedge-variant --variant rough --log
+post_refused "wedge-compare: --rel needs a number" wedge-compare --rel
+post_refused "wedge-panels: --title needs a text" wedge-panels --title
+# mpirun is asked before anything is written: a (fake) mpirun that cannot start the
+# processes stops Allrun with its message
+if [ "$ncpu" -ge 2 ]; then
+    mkdir -p "$tmp/fakebin"
+    printf '#!/bin/sh\necho "There are not enough slots available in the system"\nexit 1\n' > "$tmp/fakebin/mpirun"
+    chmod +x "$tmp/fakebin/mpirun"
+    PATH="$tmp/fakebin:$PATH" refused "-parallel 2: mpirun cannot start 2 processes here" -parallel 2
+    grep -q "not enough slots" "$tmp/err" || fail "mpirun's own message not passed on: $(cat "$tmp/err")"
+fi
+echo "PASS"
