@@ -238,7 +238,10 @@ flowmd="$tmp/flow.md"
     echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|"
 } > "$flowmd"
 
-for mesh in $meshes; do
+# one mesh: flow, particles, V+ rows into $tmp/rows_<mesh>.csv and the flow
+# table's row into $tmp/flow_<mesh>.md
+run_mesh() {
+    local mesh=$1
     c="$tmp/$mesh/case"
     mkdir -p "$c"
     cp -r "$here/channel/system" "$here/channel/constant" "$here/channel/0.orig" "$c/"
@@ -310,16 +313,29 @@ EOF
 
     # per cloud: V+ from the parcels left at every step and the closure's counts
     "$here/channel-vplus" --case "$c" --mesh "$mesh" --h "$h" --utau "$utau" --dt "$dt" \
-        --nwarm "$nwarm" --parcels "$parcels" | sort -t, -k2,2 -k3,3g >> "$rows" \
+        --nwarm "$nwarm" --parcels "$parcels" | sort -t, -k2,2 -k3,3g > "$tmp/rows_$mesh.csv" \
         || { echo "deposition.sh: $mesh: reading the particle run failed" >&2; exit 1; }
     steps=$(awk '/^Time = /' "$c/log.particles" | wc -l)
-    echo "| $mesh | $ny | $yplus | $utau | $retau | $ubar | $tflow | $tpart | $steps time steps x ${#clouds[@]} clouds |" >> "$flowmd"
+    echo "| $mesh | $ny | $yplus | $utau | $retau | $ubar | $tflow | $tpart | $steps time steps x ${#clouds[@]} clouds |" > "$tmp/flow_$mesh.md"
+}
+# the meshes side by side, one process each (the machine's 2 cores)
+pids=()
+for mesh in $meshes; do
+    run_mesh "$mesh" &
+    pids+=($!)
 done
+failed=0
+for pid in "${pids[@]}"; do wait "$pid" || failed=1; done
+[ "$failed" = 0 ] || { echo "deposition.sh: a mesh failed (above)" >&2; exit 1; }
 t_total=$(( $(date +%s) - t_start ))
+for mesh in $meshes; do
+    cat "$tmp/rows_$mesh.csv" >> "$rows"
+    cat "$tmp/flow_$mesh.md" >> "$flowmd"
+    rm -f "$tmp/rows_$mesh.csv" "$tmp/flow_$mesh.md"
+done
 echo >> "$flowmd"
-echo "Whole run: $t_total s (2 cores available, the runs are serial)." >> "$flowmd"
-cp "$rows" "$tmp/vplus.csv"
-rm -f "$rows"
+echo "Whole run: $t_total s (the meshes side by side, one process each)." >> "$flowmd"
+mv "$rows" "$tmp/vplus.csv"
 "$here/deposition-report" --out "$tmp" "$tmp/vplus.csv" || { echo "deposition.sh: the report failed" >&2; exit 1; }
 echo "deposition.sh: done in $t_total s"
 cat "$tmp/vplus.md"

@@ -7,8 +7,10 @@
 #include <gsl/gsl_rng.h>
 
 #include <math.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <unistd.h>
 
 #define NBATCH 20
 
@@ -211,6 +213,73 @@ int swc_run(const swd_model *m, const swc_params *p, swc_result *r, char *err, s
     return 0;
 }
 
+/* the runs of one calibration pass, shared by the worker threads */
+typedef struct {
+    const swd_model *m;
+    const swc_params *p;
+    const double *tau;
+    unsigned long seed0;
+    size_t n, next;
+    swc_result *res;
+    int *rc;
+    char (*err)[256];
+    pthread_mutex_t lock;
+} pass;
+
+static void *worker(void *arg)
+{
+    pass *w = arg;
+    for (;;) {
+        pthread_mutex_lock(&w->lock);
+        const size_t i = w->next++;
+        pthread_mutex_unlock(&w->lock);
+        if (i >= w->n)
+            return NULL;
+        swc_params q = *w->p;
+        q.tau_plus = w->tau[i];
+        q.seed = w->seed0 + i;
+        w->rc[i] = swc_run(w->m, &q, &w->res[i], w->err[i], sizeof w->err[i]);
+    }
+}
+
+/* one run per tau+, on as many threads as there are cores (at most 8) */
+static int run_pass(const swd_model *m, const swc_params *p, const double *tau, size_t n,
+                    unsigned long seed0, swc_result *res, char *err, size_t errlen)
+{
+    int *rc = calloc(n, sizeof *rc);
+    char (*msg)[256] = calloc(n, sizeof *msg);
+    if (!rc || !msg) {
+        free(rc);
+        free(msg);
+        snprintf(err, errlen, "out of memory");
+        return -2;
+    }
+    pass w = { m, p, tau, seed0, n, 0, res, rc, msg, PTHREAD_MUTEX_INITIALIZER };
+    long cores = sysconf(_SC_NPROCESSORS_ONLN);
+    size_t nt = cores < 1 ? 1 : (cores > 8 ? 8 : (size_t)cores);
+    if (nt > n)
+        nt = n;
+    pthread_t th[8];
+    size_t started = 0;
+    for (size_t t = 1; t < nt; t++)
+        if (pthread_create(&th[t], NULL, worker, &w) == 0)
+            started = t;
+        else
+            break;
+    worker(&w);   /* this thread works too */
+    for (size_t t = 1; t <= started; t++)
+        pthread_join(th[t], NULL);
+    int out = 0;
+    for (size_t i = 0; i < n && !out; i++)
+        if (rc[i]) {
+            out = rc[i];
+            snprintf(err, errlen, "%s", msg[i]);
+        }
+    free(rc);
+    free(msg);
+    return out;
+}
+
 int swc_calibrate(const swd_model *m, const swc_params *p, double ysub, const double *tau_plus,
                   const double *law, size_t n, double *vs, double *vcrw, double *vcrw_se,
                   double *c_s, double *vtot, double *vtot_se, char *err, size_t errlen)
@@ -225,11 +294,12 @@ int swc_calibrate(const swd_model *m, const swc_params *p, double ysub, const do
             return -1;
         }
     swd_model *w = swd_alloc();
-    double *crw = malloc(n * sizeof *crw), *cs = malloc(n * sizeof *cs);
-    if (!w || !crw || !cs) {
+    swc_result *r = malloc(n * sizeof *r);
+    double *crw = malloc(n * sizeof *crw);
+    if (!w || !r || !crw) {
         swd_free(w);
+        free(r);
         free(crw);
-        free(cs);
         snprintf(err, errlen, "out of memory");
         return -2;
     }
@@ -245,20 +315,18 @@ int swc_calibrate(const swd_model *m, const swc_params *p, double ysub, const do
     }
     swc_params q = *p;
     q.y_sub = ysub;
+    /* the CRW alone */
+    if (rc == 0)
+        rc = run_pass(w, &q, tau_plus, n, p->seed, r, err, errlen);
     for (size_t i = 0; i < n && rc == 0; i++) {
-        swc_result r;
-        q.tau_plus = tau_plus[i];
-        q.seed = p->seed + i;
-        rc = swc_run(w, &q, &r, err, errlen);
-        crw[i] = r.vplus;
-        cs[i] = r.c_sub;
+        crw[i] = r[i].vplus;
         if (vcrw)
-            vcrw[i] = r.vplus;
+            vcrw[i] = r[i].vplus;
         if (vcrw_se)
-            vcrw_se[i] = r.vplus_se;
+            vcrw_se[i] = r[i].vplus_se;
         if (c_s)
-            c_s[i] = r.c_sub;
-        vs[i] = cs[i] > 0.0 ? fmax(0.0, law[i] - crw[i]) / cs[i] : 0.0;
+            c_s[i] = r[i].c_sub;
+        vs[i] = r[i].c_sub > 0.0 ? fmax(0.0, law[i] - crw[i]) / r[i].c_sub : 0.0;
     }
     if (rc == 0 && swd_set_closure(w, ysub, tau_plus, vs, n) != SWD_OK) {
         snprintf(err, errlen, "%s", swd_errmsg(w));
@@ -269,21 +337,19 @@ int swc_calibrate(const swd_model *m, const swc_params *p, double ysub, const do
         rc = -1;
     }
     /* once more with the closure: correct for the sublayer's depletion */
+    if (rc == 0)
+        rc = run_pass(w, &q, tau_plus, n, p->seed + n, r, err, errlen);
     for (size_t i = 0; i < n && rc == 0; i++) {
-        swc_result r;
-        q.tau_plus = tau_plus[i];
-        q.seed = p->seed + n + i;
-        rc = swc_run(w, &q, &r, err, errlen);
         if (vtot)
-            vtot[i] = r.vplus;
+            vtot[i] = r[i].vplus;
         if (vtot_se)
-            vtot_se[i] = r.vplus_se;
-        const double want = law[i] - crw[i], got = r.vplus - crw[i];
+            vtot_se[i] = r[i].vplus_se;
+        const double want = law[i] - crw[i], got = r[i].vplus - crw[i];
         if (vs[i] > 0.0 && want > 0.0 && got > 0.0)
             vs[i] *= want / got;
     }
     swd_free(w);
+    free(r);
     free(crw);
-    free(cs);
     return rc;
 }
