@@ -11,9 +11,10 @@
 #define WOOD_PLATEAU 0.13
 #define KBOLTZMANN 1.380649e-23
 
+/* quiet tests (no floating-point trap on a NaN) */
 static int bad(double yplus)
 {
-    return !(yplus >= 0.0) || isinf(yplus);
+    return !isfinite(yplus) || yplus < 0.0;
 }
 
 double swp_urms_plus(double yplus)
@@ -77,12 +78,12 @@ double swp_duplus(double yplus)
 
 static int positive(double x)
 {
-    return x > 0.0 && isfinite(x);
+    return isfinite(x) && x > 0.0;
 }
 
 double swp_tau_p(double rho_p, double d, double mu, double re)
 {
-    if (!positive(rho_p) || !positive(d) || !positive(mu) || !(re >= 0.0) || isinf(re))
+    if (!positive(rho_p) || !positive(d) || !positive(mu) || !isfinite(re) || re < 0.0)
         return NAN;
     return rho_p * d * d / (18.0 * mu) / (1.0 + 0.15 * pow(re, 0.687));
 }
@@ -104,10 +105,10 @@ double swp_d_of_tau_plus(double tau_plus, double rho_p, double mu, double nu, do
 
 double swp_wood_vplus(double tau_plus, double sc)
 {
-    if (!(tau_plus >= 0.0))
+    if (!isgreaterequal(tau_plus, 0.0))
         return NAN;
     const double turb = 4.5e-4 * tau_plus * tau_plus;
-    const double brown = (sc > 0.0 && isfinite(sc)) ? 0.057 * pow(sc, -2.0 / 3.0) : 0.0;
+    const double brown = positive(sc) ? 0.057 * pow(sc, -2.0 / 3.0) : 0.0;
     return brown + (turb < WOOD_PLATEAU ? turb : WOOD_PLATEAU);
 }
 

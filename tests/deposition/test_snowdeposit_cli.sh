@@ -46,13 +46,13 @@ check "--t-run" "$SD" channel --t-run 1e300
 [ ! -e "$WORK/x" ] && [ ! -e "$WORK/y" ] && ok "no file left by the errors" || fail "a file was left"
 
 # a short calibration: the file, its keys, and the closure at work
-"$SD" calibrate --out "$WORK/dep.coeffs" --tau-plus 0.3,1,3,10,30 --particles 400 --t-run 6000 \
-    --t-warm 1000 >"$WORK/cal.txt" 2>"$WORK/err" || fail "calibrate: $(cat "$WORK/err")"
+"$SD" calibrate --out "$WORK/dep.coeffs" --tau-plus 0.3,1,3,10 --particles 300 --t-run 4000 \
+    --t-warm 500 >"$WORK/cal.txt" 2>"$WORK/err" || fail "calibrate: $(cat "$WORK/err")"
 for k in tauPlus vPlusSublayer vPlusLaw vPlusCrw cSublayer sublayerYPlus layerYPlus; do
     grep -q "^ *$k " "$WORK/dep.coeffs" || fail "dep.coeffs has no $k"
 done
 ls "$WORK" | grep -q tmp && fail "calibrate left a temporary file" || ok "no temporary left"
-"$SD" channel --closure wood --tau-plus 1,3,10 --particles 400 --t-run 6000 --t-warm 1000 \
+"$SD" channel --closure wood --tau-plus 1,3,10 --particles 300 --t-run 4000 --t-warm 500 \
     >"$WORK/ch.txt" 2>"$WORK/err" || fail "channel --closure: $(cat "$WORK/err")"
 cat "$WORK/ch.txt"
 # V+ within a factor 2 of the law at tau+ 1, 3, 10 (the closure is calibrated
@@ -60,7 +60,7 @@ cat "$WORK/ch.txt"
 awk '!/^#/ && $1 + 0 > 0 { if (!($7 > 0.5 && $7 < 2)) { print "ratio " $7 " at tau+ " $1; bad = 1 } } END { exit bad }' \
     "$WORK/ch.txt" && ok "closure: V+ at the law within a factor 2" || fail "closure: V+ off the law"
 # without the closure the CRW misses the diffusion-impaction deposition
-"$SD" channel --tau-plus 1 --particles 400 --t-run 6000 --t-warm 1000 >"$WORK/crw.txt" 2>&1
+"$SD" channel --tau-plus 1 --particles 300 --t-run 4000 --t-warm 500 >"$WORK/crw.txt" 2>&1
 awk '!/^#/ && $1 == 1 { exit !($7 < 0.2) }' "$WORK/crw.txt" && ok "CRW alone far below the law at tau+ 1" \
     || fail "CRW alone at tau+ 1: $(cat "$WORK/crw.txt")"
 

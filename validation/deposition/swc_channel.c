@@ -30,6 +30,12 @@ void swc_params_default(swc_params *p)
     p->seed = 1;
 }
 
+/* lo < x <= hi (lo_open) or lo <= x <= hi, quiet for a NaN (refused) */
+static int within(double x, double lo, double hi, int lo_open)
+{
+    return (lo_open ? isgreater(x, lo) : isgreaterequal(x, lo)) && islessequal(x, hi);
+}
+
 static int bad(char *err, size_t n, const char *what, double v, const char *range)
 {
     snprintf(err, n, "%s = %g: %s", what, v, range);
@@ -38,25 +44,25 @@ static int bad(char *err, size_t n, const char *what, double v, const char *rang
 
 int swc_params_check(const swc_params *p, char *err, size_t n)
 {
-    if (!(p->re_tau > 10.0 && p->re_tau <= 1e5))
+    if (!within(p->re_tau, 10.0, 1e5, 1))
         return bad(err, n, "Re_tau", p->re_tau, "must lie in (10, 1e5]");
-    if (!(p->tau_plus > 0.0 && p->tau_plus <= 1e4))
+    if (!within(p->tau_plus, 0.0, 1e4, 1))
         return bad(err, n, "tau+", p->tau_plus, "must lie in (0, 1e4]");
-    if (!(p->r_plus >= 0.0 && p->r_plus < 0.5 * p->re_tau))
+    if (!(isgreaterequal(p->r_plus, 0.0) && isless(p->r_plus, 0.5 * p->re_tau)))
         return bad(err, n, "r+", p->r_plus, "must lie in [0, Re_tau/2)");
     if (p->n < 1 || p->n > 100000000)
         return bad(err, n, "particles", (double)p->n, "must lie in 1 .. 1e8");
-    if (!(p->t_warm >= 0.0 && p->t_warm <= 1e9))
+    if (!within(p->t_warm, 0.0, 1e9, 0))
         return bad(err, n, "warm-up t+", p->t_warm, "must lie in [0, 1e9]");
-    if (!(p->t_run > 0.0 && p->t_run <= 1e9))
+    if (!within(p->t_run, 0.0, 1e9, 1))
         return bad(err, n, "window t+", p->t_run, "must lie in (0, 1e9]");
-    if (!(p->dt_max > 0.0 && p->dt_max <= 100.0))
+    if (!within(p->dt_max, 0.0, 100.0, 1))
         return bad(err, n, "dtMax+", p->dt_max, "must lie in (0, 100]");
-    if (!(p->c_tl > 0.0 && p->c_tl <= 1.0))
+    if (!within(p->c_tl, 0.0, 1.0, 1))
         return bad(err, n, "cT", p->c_tl, "must lie in (0, 1]");
-    if (!(p->c_y > 0.0 && p->c_y <= 1.0))
+    if (!within(p->c_y, 0.0, 1.0, 1))
         return bad(err, n, "cY", p->c_y, "must lie in (0, 1]");
-    if (!(p->y_sub > 0.0 && p->y_sub < p->re_tau))
+    if (!(isgreater(p->y_sub, 0.0) && isless(p->y_sub, p->re_tau)))
         return bad(err, n, "sublayer y+", p->y_sub, "must lie in (0, Re_tau)");
     if (p->scheme != SWC_EXACT && p->scheme != SWC_HOST)
         return bad(err, n, "scheme", (double)p->scheme, "must be exact (0) or host (1)");
@@ -289,7 +295,7 @@ int swc_calibrate(const swd_model *m, const swc_params *p, double ysub, const do
         return -1;
     }
     for (size_t i = 0; i < n; i++)
-        if (!(law[i] >= 0.0) || !isfinite(law[i])) {
+        if (!isfinite(law[i]) || law[i] < 0.0) {
             snprintf(err, errlen, "law[%zu] = %g is not finite and >= 0", i, law[i]);
             return -1;
         }

@@ -323,7 +323,7 @@ static int parse(int argc, char **argv, opts *o, swd_model *m)
                 return usage_error("unknown option '%s'%s", a, "");
             if (number(a, v, &x))
                 return 2;
-            if (!((num[k].lo_open ? x > num[k].lo : x >= num[k].lo) && x <= num[k].hi)) {
+            if (!((num[k].lo_open ? x > num[k].lo : x >= num[k].lo) && x <= num[k].hi)) {   /* x finite */
                 fprintf(stderr, "snowdeposit: %s: %s is outside %s%g, %g] (see snowdeposit --help)\n",
                         a, v, num[k].lo_open ? "(" : "[", num[k].lo, num[k].hi);
                 return 2;
@@ -341,7 +341,7 @@ static int parse(int argc, char **argv, opts *o, swd_model *m)
         fprintf(stderr, "snowdeposit: %s (see snowdeposit --help)\n", err);
         return 2;
     }
-    if (!(o->sublayer > 0.0 && o->sublayer <= swd_get(m, "layerYPlus")))
+    if (!(o->sublayer > 0.0 && o->sublayer <= swd_get(m, "layerYPlus")))   /* finite */
         return usage_error("--sublayer: %s is outside (0, layerYPlus]%s",
                            (snprintf(err, sizeof err, "%g", o->sublayer), err), "");
     return 0;
@@ -392,6 +392,27 @@ int main(int argc, char **argv)
     if (!cal && o.out) {
         swd_free(m);
         return usage_error("--out is an option of calibrate, not of channel%s%s", "", "");
+    }
+    if (cal) {
+        /* the folder of FILE must take a file, checked before the work */
+        char dir[4096];
+        const char *slash = strrchr(o.out, '/');
+        if (strlen(o.out) >= sizeof dir - 16 || !*o.out) {
+            swd_free(m);
+            return usage_error("--out: '%.60s' is not a usable file name%s", o.out, "");
+        }
+        if (slash) {
+            memcpy(dir, o.out, (size_t)(slash - o.out));
+            dir[slash == o.out ? 1 : slash - o.out] = '\0';
+        } else {
+            strcpy(dir, ".");
+        }
+        if (access(dir, W_OK | X_OK) != 0) {
+            fprintf(stderr, "snowdeposit: --out %s: cannot write into '%s' (%s)\n", o.out, dir,
+                    strerror(errno));
+            swd_free(m);
+            return 2;
+        }
     }
     const size_t n = o.ntau;
     double law[MAXTAU], vs[MAXTAU], vcrw[MAXTAU], vcrw_se[MAXTAU], cs[MAXTAU], vt[MAXTAU],

@@ -86,8 +86,9 @@ int swd_set(swd_model *m, const char *key, double v)
         return fail(m, SWD_EINVAL,
                     "near-wall dispersion: unknown key '%s' (known: layerYPlus, blendYPlus, CT, Cmu)",
                     key ? key : "(null)");
-    const int low_ok = keys[i].lo_open ? v > keys[i].lo : v >= keys[i].lo;
-    if (!(low_ok && v <= keys[i].hi))
+    /* quiet comparisons: a NaN is refused without a floating-point trap */
+    const int low_ok = keys[i].lo_open ? isgreater(v, keys[i].lo) : isgreaterequal(v, keys[i].lo);
+    if (!(low_ok && islessequal(v, keys[i].hi)))
         return fail(m, SWD_EINVAL, "near-wall dispersion: %s = %g is outside %s%g, %g]", key, v,
                     keys[i].lo_open ? "(" : "[", keys[i].lo, keys[i].hi);
     m->v[i] = v;
@@ -135,15 +136,20 @@ void swd_describe(const swd_model *m, char *buf, size_t n)
 
 static int finite_nonneg(double x)
 {
-    return x >= 0.0 && isfinite(x);
+    return isfinite(x) && x >= 0.0;
+}
+
+static int finite_pos(double x)
+{
+    return isfinite(x) && x > 0.0;
 }
 
 int swd_stats_at(const swd_model *m, const swd_local *at, swd_stats *out)
 {
     if (!swd_ready(m))
         return SWD_ENOTREADY;
-    if (isnan(at->y) || isinf(at->y) || !finite_nonneg(at->u_tau) || !(at->nu > 0.0)
-        || !isfinite(at->nu) || !finite_nonneg(at->k) || !finite_nonneg(at->eps))
+    if (!isfinite(at->y) || !finite_nonneg(at->u_tau) || !finite_pos(at->nu)
+        || !finite_nonneg(at->k) || !finite_nonneg(at->eps))
         return SWD_EINVAL;
 
     /* the isotropic RANS statistics (bulk) */
@@ -206,7 +212,7 @@ int swd_advance(const swd_model *m, const swd_local *at, double dt, double tau_p
 {
     if (!swd_ready(m))
         return SWD_ENOTREADY;
-    if (!(dt > 0.0) || !isfinite(dt) || !(tau_p > 0.0) || !isfinite(tau_p))
+    if (!finite_pos(dt) || !finite_pos(tau_p))
         return SWD_EINVAL;
     for (int i = 0; i < 3; i++)
         if (!isfinite(w[i]) || !isfinite(xi[i]))
@@ -258,19 +264,19 @@ int swd_set_closure(swd_model *m, double sublayer_yplus, const double *tau_plus,
     if (n < 2 || n > SWD_MAX_TABLE)
         return fail(m, SWD_EINVAL, "near-wall closure: %zu table nodes (2 .. %d)", n,
                     SWD_MAX_TABLE);
-    if (!(sublayer_yplus > 0.0 && sublayer_yplus <= m->v[K_LAYER]))
+    if (!(isgreater(sublayer_yplus, 0.0) && islessequal(sublayer_yplus, m->v[K_LAYER])))
         return fail(m, SWD_EINVAL,
                     "near-wall closure: sublayerYPlus = %g is outside (0, layerYPlus = %g]",
                     sublayer_yplus, m->v[K_LAYER]);
     for (size_t i = 0; i < n; i++) {
-        if (!(tau_plus[i] > 0.0) || !isfinite(tau_plus[i]))
+        if (!finite_pos(tau_plus[i]))
             return fail(m, SWD_EINVAL, "near-wall closure: tauPlus[%zu] = %g is not finite and > 0",
                         i, tau_plus[i]);
-        if (i > 0 && !(tau_plus[i] > tau_plus[i - 1]))
+        if (i > 0 && !isgreater(tau_plus[i], tau_plus[i - 1]))
             return fail(m, SWD_EINVAL,
                         "near-wall closure: tauPlus[%zu] = %g does not follow %g (strictly increasing)",
                         i, tau_plus[i], tau_plus[i - 1]);
-        if (!(vs[i] >= 0.0) || !isfinite(vs[i]))
+        if (!finite_nonneg(vs[i]))
             return fail(m, SWD_EINVAL,
                         "near-wall closure: vPlusSublayer[%zu] = %g is not finite and >= 0", i,
                         vs[i]);
@@ -326,8 +332,8 @@ double swd_closure_vs(const swd_model *m, double tau_plus)
 
 double swd_deposit_rate(const swd_model *m, const swd_stats *st, double nu, double tau_stokes)
 {
-    if (!m->cl_n || !(st->yplus >= 0.0) || st->yplus > m->cl_ysub || !(st->ustar > 0.0)
-        || !(nu > 0.0) || !(tau_stokes > 0.0) || !isfinite(tau_stokes))
+    if (!m->cl_n || !isgreaterequal(st->yplus, 0.0) || isgreater(st->yplus, m->cl_ysub)
+        || !finite_pos(st->ustar) || !finite_pos(nu) || !finite_pos(tau_stokes))
         return 0.0;
     const double u2 = st->ustar * st->ustar;
     const double tplus = tau_stokes * u2 / nu;
