@@ -9,6 +9,7 @@
 #include "treeDataFace.H"
 #include "Pstream.H"
 #include "OSspecific.H"
+#include "StringStream.H"
 
 #include "swp_nearwall.h"
 
@@ -303,7 +304,8 @@ Foam::SnowNearWall<CloudType>::SnowNearWall
     mClosure0_(),
     eClosure_(),
     eClosure0_(),
-    seriesPtr_()
+    seriesPtr_(),
+    records_()
 {
     if (!model_)
     {
@@ -317,6 +319,7 @@ Foam::SnowNearWall<CloudType>::SnowNearWall
     mClosure0_.setSize(patches_.size(), Zero);
     eClosure_.setSize(patches_.size(), Zero);
     eClosure0_.setSize(patches_.size(), Zero);
+    records_.setSize(patches_.size());
     this->getModelProperty("nClosure", nClosure0_);
     this->getModelProperty("massClosure", mClosure0_);
     this->getModelProperty("expectedClosure", eClosure0_);
@@ -352,7 +355,8 @@ Foam::SnowNearWall<CloudType>::SnowNearWall(const SnowNearWall<CloudType>& nw)
     mClosure0_(nw.mClosure0_),
     eClosure_(nw.eClosure_),
     eClosure0_(nw.eClosure0_),
-    seriesPtr_()
+    seriesPtr_(),
+    records_(nw.records_)
 {
     // a fresh C model with the same settings (the core has no copy)
     model_ = swd_alloc();
@@ -525,6 +529,13 @@ void Foam::SnowNearWall<CloudType>::postMove
     }
     ++nClosure_[s];
     mClosure_[s] += mp;
+    OStringStream rec;
+    rec.precision(10);
+    const point& x = p.position();
+    rec << this->owner().time().value() << ' ' << x.x() << ' ' << x.y() << ' '
+        << x.z() << ' ' << p.origProc() << ' ' << p.origId() << ' '
+        << p.nParticle() << ' ' << p.d() << ' ' << p.rho();
+    records_[s].append(rec.str());
 }
 
 
@@ -549,6 +560,32 @@ void Foam::SnowNearWall<CloudType>::write()
     this->setModelProperty("nClosure", n);
     this->setModelProperty("massClosure", m);
     this->setModelProperty("expectedClosure", e);
+
+    // the records since the last write, gathered on the master
+    {
+        const Time& time = this->owner().time();
+        const polyBoundaryMesh& bm0 = this->owner().mesh().boundaryMesh();
+        forAll(patches_, s)
+        {
+            List<List<string>> all(Pstream::nProcs());
+            all[Pstream::myProcNo()] = records_[s];
+            Pstream::gatherList(all);
+            records_[s].clear();
+            if (!Pstream::master()) continue;
+            const fileName dir = this->outputDir()/time.timeName();
+            mkDir(dir);
+            OFstream os(dir/(bm0[patches_[s]].name() + ".post"));
+            os  << "# Time (position0 position1 position2) origProc origId"
+                << " nParticle d rho" << nl;
+            for (const List<string>& l : all)
+            {
+                for (const string& line : l)
+                {
+                    os  << line.c_str() << nl;
+                }
+            }
+        }
+    }
 
     const polyBoundaryMesh& bm = this->owner().mesh().boundaryMesh();
     Info<< "    snowNearWall " << this->modelName()
