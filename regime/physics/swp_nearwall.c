@@ -17,18 +17,27 @@ static int bad(double yplus)
     return !isfinite(yplus) || yplus < 0.0;
 }
 
-double swp_urms_plus(double yplus)
+/* The shape of every rms fit: a y^m / (1 + b y^p) (NaN for a bad y+). */
+static double rms_fit(double yplus, double a, int m, double b, double p)
 {
     if (bad(yplus))
         return NAN;
-    return 0.4 * yplus / (1.0 + 0.0239 * pow(yplus, 1.496));
+    return a * (m == 2 ? yplus * yplus : yplus) / (1.0 + b * pow(yplus, p));
+}
+
+double swp_urms_plus(double yplus)
+{
+    return rms_fit(yplus, 0.4, 1, 0.0239, 1.496);
 }
 
 double swp_vrms_plus(double yplus)
 {
-    if (bad(yplus))
-        return NAN;
-    return V_A * yplus * yplus / (1.0 + V_B * pow(yplus, V_P));
+    return rms_fit(yplus, V_A, 2, V_B, V_P);
+}
+
+double swp_wrms_plus(double yplus)
+{
+    return rms_fit(yplus, 0.19, 1, 0.0361, 1.21);
 }
 
 double swp_dvrms_plus(double yplus)
@@ -39,13 +48,6 @@ double swp_dvrms_plus(double yplus)
     const double den = 1.0 + V_B * pow(y, V_P);
     const double dden = V_B * V_P * pow(y, V_P - 1.0);
     return V_A * (2.0 * y * den - y * y * dden) / (den * den);
-}
-
-double swp_wrms_plus(double yplus)
-{
-    if (bad(yplus))
-        return NAN;
-    return 0.19 * yplus / (1.0 + 0.0361 * pow(yplus, 1.21));
 }
 
 double swp_tl_plus(double yplus)
