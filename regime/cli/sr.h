@@ -21,6 +21,8 @@ typedef struct {
     int i;
     const char *cmd;     /* subcommand name, for messages */
     char err[400];
+    const char *rough_only; /* the first rough-wall-only option given (--points, --seed,
+                               --level), checked against the wall by sr_rough_only_check */
 } sr_args;
 
 /* Settings common to every subcommand: --config FILE, --set key=value. */
@@ -39,6 +41,9 @@ int sr_flag(sr_args *a, const char *name);
 /* Handles --config/--set/--threads at argv[i]: 1 taken, 0 not, -1 error (a->err). */
 int sr_settings_opt(sr_args *a, sr_settings *s);
 /* --points N, --seed S, --level P (rough walls) into o: 1 taken, 0 not, -1 error. */
+/* 0 when the model's wall is rough or no rough-only option was given; else -1 with
+ * a message naming the option (a flat wall would ignore it without a word). */
+int sr_rough_only_check(const sr_args *a, const swr_model *m, char *err, size_t errlen);
 int sr_rough_opt(sr_args *a, swt_vcrit_opts *o);
 /* defaults + config + sets + validate; -1 with message on error */
 int sr_settings_apply(const sr_settings *s, swr_params *p, char *err, size_t errlen);

@@ -85,7 +85,7 @@ static void write_vtk(FILE *f, const sr_trace_buf *b, const swr_impact *in)
 int sr_cmd_collide(int argc, char **argv)
 {
     const char *cmd = "collide";
-    sr_args a = { argc, argv, 1, cmd, "" };
+    sr_args a = { argc, argv, 1, cmd, "", NULL };
     sr_settings s = { 0 };
     swr_impact in = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
     int have_d = 0, have_vn = 0;

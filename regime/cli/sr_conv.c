@@ -8,7 +8,7 @@
 int sr_cmd_convergence(int argc, char **argv)
 {
     const char *cmd = "convergence";
-    sr_args a = { argc, argv, 1, cmd, "" };
+    sr_args a = { argc, argv, 1, cmd, "", NULL };
     sr_settings s = { 0 };
     s.threads = 1;
     double *d = NULL, *acc = NULL;

@@ -36,15 +36,17 @@ static const char *help_main =
 "      cor elastic|<e in (0,1]>|thornton|thornton-asymptote|thornton-ning (default thornton)\n"
 "        thornton*: a dashpot set to Thornton's plastic COR; thornton-ning: no dashpot,\n"
 "        the adhesive elastic-plastic contact law of Thornton & Ning (yield at 2.5 sigma_y)\n"
-"      dashpot loading|both (when the COR dashpot acts; default loading)\n"
+"      dashpot loading|both (when the COR dashpot acts; default loading; refused\n"
+"        with cor elastic or thornton-ning, which have no dashpot)\n"
 "      cor_pair wall|particle  mu 0.05  xi_crit 1e-9  accuracy 60 (steps per Hertz contact time)\n"
 "      wall flat|lattice (default flat). A lattice is a rough wall of hemispherical\n"
 "        asperities of the wall material (doc/kernel.md): lattice square|hex,\n"
 "        asperity_r 1e-6 (radius), asperity_spacing 2e-6 (nearest neighbours;\n"
 "        2 r: touching; below 2 r, overlapping, refused), asperity_jitter 0 (random\n"
 "        lateral offset / spacing, <= 0.5),\n"
-"        asperity_dz 0 (random sinking depth [m]), wall_seed 1 (integer), rough_hold\n"
-"        30 (contact times in contact after which a held sphere counts as stuck).\n"
+"        asperity_dz 0 (random sinking depth [m], below asperity_r), wall_seed 1\n"
+"        (integer), rough_hold 30 (contact times in contact after which a held\n"
+"        sphere counts as stuck).\n"
 "        On a lattice the outcome is a stick probability over impact points\n"
 "        (--points N, --seed S of vcrit and map); cor thornton-ning is refused.\n"
 "\n"
@@ -135,7 +137,8 @@ static const char *help_vcrit =
 "                      impact point (the kernel's predicted travel s_rest)\n"
 "    --points N        rough wall: impact points per speed (default 64)\n"
 "    --seed S          rough wall: seed of the impact points (default 1)\n"
-"    --level P         rough wall: stick fraction of v_crit, in (0, 1] (default 0.5)\n"
+"    --level P         rough wall: stick fraction of v_crit, in (0, 1] (default 0.5);\n"
+"                      --points, --seed and --level are refused on a flat wall\n"
 "    --tol T           relative bracket width (default 1e-3)\n"
 "    --vmin V, --vmax V  search range [m/s] (default 1e-3, 50)\n"
 "    --scan-ratio R    ratio of neighbouring scan speeds (default 2)\n"
@@ -212,13 +215,16 @@ static const char *help_map =
 "                      particle always stops eventually, so this is what makes the\n"
 "                      tangential speed / angle a real axis\n"
 "    --vt LIST         tangential speeds [m/s], strictly increasing: one map each\n"
-"                      (full stick)\n"
+"                      (full stick); starting at 0 the table holds the list's\n"
+"                      length x the speed nodes of --nv (about 2 nv) within 4096\n"
+"                      values: a longer list is refused before any map\n"
 "    --angle LIST      impact angles from the normal [deg], strictly increasing: one\n"
 "                      map each (full stick)\n"
 "    --omega W         initial spin [rad/s] (default 0)\n"
 "    --refine 0|1      refine interface points by bisection (default 1)\n"
 "    --tol T           relative tolerance of the refinement (default 1e-3)\n"
-"    --points N        rough wall: impact points per grid point (default 64)\n"
+"    --points N        rough wall: impact points per grid point (default 64;\n"
+"                      refused on a flat wall, as --seed is)\n"
 "    --seed S          rough wall: seed of the impact points (default 1)\n"
 "    --threads N       threads (default 2)\n"
 "    --no-plot         do not run gnuplot (no PNG)\n"
@@ -409,21 +415,33 @@ int sr_rough_opt(sr_args *a, swt_vcrit_opts *o)
     const char *v;
     long n;
     if (sr_opt(a, "--points", &v)) {
+        if (!a->rough_only) a->rough_only = "--points";
         if (!v || swt_parse_int("--points", v, 1, 100000, &n, a->err, sizeof a->err) != 0) return -1;
         o->points = (int)n;
         return 1;
     }
     if (sr_opt(a, "--seed", &v)) {
+        if (!a->rough_only) a->rough_only = "--seed";
         if (!v || swt_parse_int("--seed", v, 0, 4294967295L, &n, a->err, sizeof a->err) != 0) return -1;
         o->seed = (unsigned long)n;
         return 1;
     }
     if (sr_opt(a, "--level", &v)) {
+        if (!a->rough_only) a->rough_only = "--level";
         if (!v || swt_parse_double("--level", v, 1e-6, 1.0, &o->level, a->err, sizeof a->err) != 0)
             return -1;
         return 1;
     }
     return 0;
+}
+
+int sr_rough_only_check(const sr_args *a, const swr_model *m, char *err, size_t errlen)
+{
+    if (!a->rough_only || swr_model_rough(m))
+        return 0;
+    snprintf(err, errlen, "%s: only for a rough wall (--set wall=lattice); this wall is flat, "
+             "where every impact point gives the same outcome", a->rough_only);
+    return -1;
 }
 
 const char *sr_outcome_text(const swt_vcrit_opts *o, char *buf, size_t n)

@@ -338,10 +338,22 @@ static int write_map_files(swt_outset *os, const char *sfx, const sr_mapres *r, 
     return 0;
 }
 
+/* Speed nodes of the d_crit(v_n, v_t) table for a map grid: the map's log
+ * spacing (ln 1.5 on a linear grid), extended a decade below and half a decade
+ * above its range (the wall model clamps v_n to the table for the tangential
+ * limit); *v_lo, *v_hi get the table's range. */
+static int oblique_nodes(const swt_grid *g, double *v_lo, double *v_hi)
+{
+    *v_lo = g->vmin / 10.0;
+    *v_hi = fmin(g->vmax * sqrt(10.0), SWR_V_MAX);
+    const double step = g->vlog ? log(g->vmax / g->vmin) / (g->nv - 1) : log(1.5);
+    return 1 + (int)ceil(log(*v_hi / *v_lo) / (step > 0.0 ? step : log(1.5)));
+}
+
 int sr_cmd_map(int argc, char **argv)
 {
     const char *cmd = "map";
-    sr_args a = { argc, argv, 1, cmd, "" };
+    sr_args a = { argc, argv, 1, cmd, "", NULL };
     sr_settings s = { 0 };
     s.threads = 2;
     sr_mapopt mo;
@@ -399,6 +411,11 @@ int sr_cmd_map(int argc, char **argv)
     if (sr_settings_apply(&s, &p, err, sizeof err) != 0) { rc = sr_usage_error(cmd, err); goto out; }
     swr_model *m = swr_model_alloc(&p, err, sizeof err);
     if (!m) { rc = sr_usage_error(cmd, err); goto out; }
+    if (sr_rough_only_check(&a, m, err, sizeof err) != 0) {
+        swr_model_free(m);
+        rc = sr_usage_error(cmd, err);
+        goto out;
+    }
     if (swr_model_rough(m) && axis) {
         if (axis_angle || naxis > 1) {
             swr_model_free(m);
@@ -449,11 +466,21 @@ int sr_cmd_map(int argc, char **argv)
     int have_fit0 = 0;
     double *vn0 = NULL, d0min = 0.0, d0max = 0.0;
     int nvn0 = 0;
-    if (oblique && naxis > SWW_TABLE_MAX / 2) {
-        swt_outset_free(os);
-        swr_model_free(m);
-        rc = sr_usage_error(cmd, "--vt: too many values for the d_crit(v_n, v_t) table");
-        goto out;
+    if (oblique) {
+        /* the table has oblique_nodes() speeds per v_t: a list too long for it is
+         * refused here, before any map (it used to coarsen the speeds silently) */
+        double v_lo, v_hi;
+        const long nodes = oblique_nodes(&mo.g, &v_lo, &v_hi);
+        if (nodes * naxis > SWW_TABLE_MAX) {
+            swt_outset_free(os);
+            swr_model_free(m);
+            snprintf(err, sizeof err, "--vt: %d values x %ld speed nodes (the map's --nv %d "
+                     "spacing over [%g, %g] m/s) exceed the %d values of the d_crit(v_n, v_t) "
+                     "table: give at most %ld values, or a smaller --nv", naxis, nodes, mo.g.nv,
+                     v_lo, v_hi, SWW_TABLE_MAX, SWW_TABLE_MAX / nodes);
+            rc = sr_usage_error(cmd, err);
+            goto out;
+        }
     }
     if (axis && !axis_angle && naxis >= 2 && axis[0] != 0.0) {
         printf("  note: --vt LIST does not start with 0: no combined regime.coeffs with the "
@@ -525,11 +552,8 @@ int sr_cmd_map(int argc, char **argv)
                 /* table speeds: the map's log spacing, extended a decade below
                  * and half a decade above its range (the wall model clamps v_n
                  * to the table for the tangential limit) */
-                const double v_lo = r.mp->g.vmin / 10.0, v_hi = fmin(r.mp->g.vmax * sqrt(10.0), SWR_V_MAX);
-                const double step = r.mp->g.vlog ? log(r.mp->g.vmax / r.mp->g.vmin) / (r.mp->g.nv - 1)
-                                                 : log(1.5);
-                nvn0 = 1 + (int)ceil(log(v_hi / v_lo) / (step > 0.0 ? step : log(1.5)));
-                if (nvn0 * naxis > SWW_TABLE_MAX) nvn0 = SWW_TABLE_MAX / naxis;
+                double v_lo, v_hi;
+                nvn0 = oblique_nodes(&r.mp->g, &v_lo, &v_hi);   /* fits: checked before the maps */
                 if (nvn0 >= 2) {
                     vn0 = malloc((size_t)nvn0 * sizeof *vn0);
                     for (int j = 0; vn0 && j < nvn0; j++)
@@ -603,7 +627,7 @@ static const sr_range sens_ranges[] = {
 int sr_cmd_sensitivity(int argc, char **argv)
 {
     const char *cmd = "sensitivity";
-    sr_args a = { argc, argv, 1, cmd, "" };
+    sr_args a = { argc, argv, 1, cmd, "", NULL };
     sr_settings s = { 0 };
     s.threads = 2;
     sr_mapopt mo;
@@ -624,6 +648,10 @@ int sr_cmd_sensitivity(int argc, char **argv)
     if (sr_settings_apply(&s, &base, err, sizeof err) != 0) return sr_usage_error(cmd, err);
     swr_model *m0 = swr_model_alloc(&base, err, sizeof err);
     if (!m0) return sr_usage_error(cmd, err);
+    if (sr_rough_only_check(&a, m0, err, sizeof err) != 0) {
+        swr_model_free(m0);
+        return sr_usage_error(cmd, err);
+    }
     if ((!mo.set_vmin || !mo.set_vmax) &&
         sr_auto_vrange(m0, &mo.g, mo.set_vmin, mo.set_vmax, &mo.o, err, sizeof err) != 0) {
         swr_model_free(m0);

@@ -22,7 +22,7 @@ static void vc_one(void *p, int k)
 int sr_cmd_vcrit(int argc, char **argv)
 {
     const char *cmd = "vcrit";
-    sr_args a = { argc, argv, 1, cmd, "" };
+    sr_args a = { argc, argv, 1, cmd, "", NULL };
     sr_settings s = { 0 };
     s.threads = 2;
     swt_vcrit_opts o;
@@ -78,6 +78,11 @@ int sr_cmd_vcrit(int argc, char **argv)
     if (sr_settings_apply(&s, &p, err, sizeof err) != 0) { rc = sr_usage_error(cmd, err); goto out; }
     swr_model *m = swr_model_alloc(&p, err, sizeof err);
     if (!m) { rc = sr_usage_error(cmd, err); goto out; }
+    if (sr_rough_only_check(&a, m, err, sizeof err) != 0) {
+        swr_model_free(m);
+        rc = sr_usage_error(cmd, err);
+        goto out;
+    }
     swt_vcrit_result *res = calloc((size_t)nd, sizeof *res);
     if (!res) { swr_model_free(m); rc = sr_fail(cmd, "out of memory"); goto out; }
     vc_ctx c = { m, &o, d, res };

@@ -100,6 +100,7 @@ void swr_params_default(swr_params *p)
     p->asperity_spacing = 2.0e-6;
     p->asperity_jitter = 0.0;
     p->asperity_dz = 0.0;
+    p->dashpot_given = 0;
     p->wall_seed = 1.0;
     p->rough_hold = 30.0;
 }
@@ -244,6 +245,7 @@ int swr_params_set(swr_params *p, const char *key, const char *value, char *err,
             p->dashpot = SWR_DASHPOT_BOTH;
         else
             return fail(err, errlen, "dashpot: '%s' is neither loading nor both", value);
+        p->dashpot_given = 1;
         return 0;
     }
     if (strcmp(key, "adhesion") == 0) {
@@ -361,6 +363,19 @@ int swr_params_validate(const swr_params *p, char *err, size_t errlen)
                     "asperities would overlap (accepted on a lattice: 2 asperity_r <= "
                     "asperity_spacing <= %g m)", p->asperity_spacing, 2.0 * p->asperity_r,
                     ASPERITY_SPACING_MAX);
+    /* Settings the chosen law or wall does not use are refused, not ignored
+     * (issue 22: accepted without a word, they changed nothing). */
+    if (p->dashpot_given && (p->cor == SWR_COR_ELASTIC || p->cor == SWR_COR_THORNTON_NING))
+        return fail(err, errlen, "dashpot: %s is not used by cor %s, which has no dashpot "
+                    "(it acts with cor thornton, thornton-asymptote or a constant COR)",
+                    p->dashpot == SWR_DASHPOT_BOTH ? "both" : "loading",
+                    p->cor == SWR_COR_ELASTIC ? "elastic" : "thornton-ning");
+    /* an asperity sunk by its radius or more is level with the base plane or
+     * below it: the impact would see the flat wall without a word */
+    if (p->wall == SWR_WALL_KIND_LATTICE && p->asperity_dz >= p->asperity_r)
+        return fail(err, errlen, "asperity_dz: %g m is not below asperity_r = %g m: asperities "
+                    "sunk that deep are level with the base plane or below it (accepted: "
+                    "0 <= asperity_dz < asperity_r)", p->asperity_dz, p->asperity_r);
     if (p->wall == SWR_WALL_KIND_LATTICE && p->cor == SWR_COR_THORNTON_NING)
         return fail(err, errlen, "cor: thornton-ning is not available on a rough wall (wall lattice): "
                                  "its contact history is kept for one contact only; use thornton");
@@ -380,7 +395,9 @@ void swr_params_print(const swr_params *p, const char *prefix, FILE *stream)
     case SWR_COR_THORNTON_NING: fprintf(stream, "%scor thornton-ning\n", pre); break;
     }
     fprintf(stream, "%scor_pair %s\n", pre, p->cor_pair == SWR_PAIR_PARTICLE ? "particle" : "wall");
-    fprintf(stream, "%sdashpot %s\n", pre, p->dashpot == SWR_DASHPOT_BOTH ? "both" : "loading");
+    /* only where the law has a dashpot: printed settings load back unchanged */
+    if (p->cor != SWR_COR_ELASTIC && p->cor != SWR_COR_THORNTON_NING)
+        fprintf(stream, "%sdashpot %s\n", pre, p->dashpot == SWR_DASHPOT_BOTH ? "both" : "loading");
     if (p->wall == SWR_WALL_KIND_LATTICE) {
         fprintf(stream, "%swall lattice\n%slattice %s\n", pre, pre,
                 p->lattice == SWR_LATTICE_HEX ? "hex" : "square");

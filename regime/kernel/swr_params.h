@@ -65,6 +65,8 @@ typedef struct {
     double cor_value;  /*            the number when cor is constant               */
     swr_pair cor_pair; /* `cor_pair` wall | particle                     wall     */
     swr_dashpot dashpot; /* `dashpot` loading | both                     loading  */
+    int dashpot_given;   /* 1 once the key `dashpot` is set: validate refuses it with a
+                            law that has no dashpot (cor elastic, thornton-ning)    0 */
     double mu;         /* `mu`       sliding friction coefficient [-] 0.05    */
     double xi_crit;    /* `xi_crit`  critical rolling displacement [m] (Dominik & Tielens) 1e-9 */
     /* wall geometry (swr_wall.h); printed only for wall lattice */

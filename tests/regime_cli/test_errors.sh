@@ -41,6 +41,25 @@ check "--angle: '30,0': value 0 (item 2) is not above 30" "$SR" map --angle 30,0
 # overlapping asperities (issue 22: one impact ran for hours): refused before any work
 check "asperity_spacing: 1.5e-06 m is below 2 asperity_r = 2e-06 m: the asperities would overlap" \
     "$SR" map --set wall=lattice --set asperity_spacing=1.5e-6
+# settings and options the wall or the law does not use are refused, not ignored
+# (issue 22, item 3), before any work: nothing written
+check "--points: only for a rough wall (--set wall=lattice); this wall is flat" \
+    "$SR" map --out "$WORK/flatpts" --points 128 --nd 6 --nv 6 --no-plot
+[ ! -e "$WORK/flatpts" ] || fail "map --points on a flat wall left $WORK/flatpts"
+check "--seed: only for a rough wall" "$SR" sensitivity --out "$WORK/flatseed" --seed 3
+check "--level: only for a rough wall" "$SR" sensitivity --level 0.3
+check "dashpot: both is not used by cor elastic, which has no dashpot" \
+    "$SR" map --set cor=elastic --set dashpot=both
+check "dashpot: loading is not used by cor thornton-ning" \
+    "$SR" sensitivity --set dashpot=loading --set cor=thornton-ning
+check "asperity_dz: 1e-06 m is not below asperity_r = 1e-06 m: asperities sunk that deep are level with the base plane or below it" \
+    "$SR" map --set wall=lattice --set asperity_dz=1e-6
+# a --vt list too long for the d_crit(v_n, v_t) table: refused before any map (it
+# used to coarsen the table's speeds silently)
+long=$(seq -s, 0 1 59)
+check "--vt: 60 values x 100 speed nodes (the map's --nv 50 spacing" \
+    "$SR" map --out "$WORK/longvt" --vt "$long" --no-plot
+[ ! -e "$WORK/longvt" ] || fail "map with a too long --vt list left $WORK/longvt"
 check "--set: gamma" "$SR" sensitivity --set gamma=1e9
 check "--nd: '0'" "$SR" sensitivity --nd 0
 check "--accuracy: '-3'" "$SR" convergence --accuracy -3
@@ -52,6 +71,8 @@ for a in "vcrit --d -2e-5|--d: '-2e-5'" "vcrit --d 1e-5,,2e-5|empty item" "vcrit
          "collide --d 5e-5 --vn 5000|--vn: '5000'" "vcrit --d 1e-5 --vmax 1e4|--vmax: '1e4'" \
          "collide --d 5e-5 --vn 1e-90 --set adhesion=none|--vn = 1e-90 is invalid" "collide --d 0.5 --vn 1|--d: '0.5'" \
          "collide --d 1e-3 --vn 1 --set wall=lattice --set asperity_spacing=1e-9|asperity_spacing: 1e-09 m is below 2 asperity_r" \
+         "vcrit --d 1e-5 --level 0.3|--level: only for a rough wall" \
+         "vcrit --d 1e-5 --set cor=elastic --set dashpot=both|dashpot: both is not used by cor elastic" \
          "vcrit --d 1e-5 --set wall=lattice --set lattice=hex --set asperity_r=2e-6 --set asperity_spacing=3e-6|below 2 asperity_r = 4e-06 m"; do
     args=${a%%|*}; want=${a#*|}
     "$SR" $args >/dev/null 2>"$WORK/err"; rc=$?
