@@ -221,8 +221,44 @@ expect_fatal_io "$tmp/otherSlide" "tangentialGate slideLength 0.0001 m differs f
 with_oblique "$tmp/negSlide" "obliqueSlide 1e-4;" "model regime; slideLength -1;"
 expect_fatal_io "$tmp/negSlide" "tangentialGate slideLength -1 must be a finite length >= 0 m"
 # the same table with its slide length stated: the case runs (the gate is on)
-with_oblique "$tmp/slideOk" "obliqueSlide 1e-4;" "model regime; slideLength 1e-4;"
+with_oblique "$tmp/vtShort" "obliqueSlide 1e-4;" "model regime; slideLength 1e-4; vtTable (0 0.5);"
+expect_fatal_io "$tmp/vtShort" "tangentialGate vtTable has 2 speeds, the regime's oblique table 3 (obliqueVt)"
+with_oblique "$tmp/slideOk" "obliqueSlide 1e-4;" "model regime; slideLength 1e-4; vtTable (0 0.5 1);"
 (cd "$tmp/slideOk" && foamDictionary -entry endTime -set 0.005 system/controlDict > /dev/null \
     && run log.run icoUncoupledKinematicParcelFoam)
 echo "set-up inputs: ok (buildUp cover numbers, slideLength against obliqueSlide)"
+# 6. silent changes of meaning (issue 22, item 3): every key of the coefficients is
+#    known to the model it belongs to, given lists are not empty; the error names the
+#    key, where it is, and the accepted keys
+with_buildup "$tmp/misCover" "coverDiamter 3e-5;"
+expect_fatal_io "$tmp/misCover" "buildUp: unknown key 'coverDiamter'; the accepted keys are active regime coverMass coverDiameter patches"
+line=$(grep -n "coverDiamter" "$tmp/misCover/$cpr" | cut -d: -f1)
+grep -q "^file: .*/misCover/$cpr at line $line\." "$tmp/misCover/log.run" \
+    || fail "misCover: the error is not located at $cpr line $line: $(grep '^file:' "$tmp/misCover/log.run")"
+with_oblique "$tmp/misSlide" "obliqueSlide 1e-4;" "model regime; slidLength 1e-4;"
+expect_fatal_io "$tmp/misSlide" "tangentialGate (model regime): unknown key 'slidLength'"
+with_oblique "$tmp/vtRegime" "obliqueSlide 1e-4;" "model regime; vtMax 0.5;"
+expect_fatal_io "$tmp/vtRegime" "tangentialGate (model regime): unknown key 'vtMax' (the regime gate takes d_crit(v_n, v_t) from the oblique table"
+case_from_base "$tmp/extraKey"
+sed -i 's/^\( *\)tangentialGate { vtMax 0.5; }/&\n\1stickParcels keep;/' "$tmp/extraKey/$cpr"
+expect_fatal_io "$tmp/extraKey" "snowWallInteractionCoeffs: unknown key 'stickParcels'; the accepted keys are patches regime stuckParcels"
+case_from_base "$tmp/gateValue"
+sed -i 's/tangentialGate { vtMax 0.5; }/tangentialGate 0.5;/' "$tmp/gateValue/$cpr"
+expect_fatal_io "$tmp/gateValue" "tangentialGate is not a sub-dictionary"
+case_from_base "$tmp/shearKey"
+sed -i 's/^\( *\)roughnessFactor *0.01;/&\n\1tauCrit 0.1;/' "$tmp/shearKey/$cpr"
+grep -q "^ *tauCrit 0.1;" "$tmp/shearKey/$cpr" || fail "shearKey: tauCrit not written"
+expect_fatal_io "$tmp/shearKey" "shearGate (model adhesion): unknown key 'tauCrit'"
+with_buildup "$tmp/emptyBuild" "coverMass 0.01; patches ();"
+expect_fatal_io "$tmp/emptyBuild" "buildUp: the patches list is empty"
+case_from_base "$tmp/emptyPatches"
+python3 - "$tmp/emptyPatches/$cpr" <<'PY'
+import re, sys
+p = sys.argv[1]; s = open(p).read()
+s2 = re.sub(r"patches\s*\(.*?\);", "patches ();", s, count=1, flags=re.S)
+assert s2 != s
+open(p, "w").write(s2)
+PY
+expect_fatal_io "$tmp/emptyPatches" "the patches list is empty: give every boundary patch a type"
+echo "unknown keys and empty lists: ok"
 echo "PASS"

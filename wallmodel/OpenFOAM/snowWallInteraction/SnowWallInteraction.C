@@ -10,6 +10,7 @@
 #include "emptyPolyPatch.H"
 #include "processorPolyPatch.H"
 #include <fstream>
+#include <initializer_list>
 #include <cctype>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -166,6 +167,141 @@ inline scalar checkedNumber
     return v;
 }
 
+//- Every key of dictionary d is one of `allowed`, else a FatalIOError at the
+//  entry naming the key, the dictionary and the accepted keys: a misspelt
+//  key (coverDiamter, slidLength) or one the chosen model does not use
+//  (vtMax with the regime gate) would otherwise be ignored without a word
+inline void checkKeys
+(
+    const dictionary& d,
+    std::initializer_list<const char*> allowed,
+    const std::string& what,
+    const char* hint = ""
+)
+{
+    for (const entry& e : d)
+    {
+        const std::string k(e.keyword());
+        bool ok = false;
+        for (const char* a : allowed)
+        {
+            if (k == a) { ok = true; break; }
+        }
+        if (ok) continue;
+        OSstream& os = fatalAt(d, &e);
+        os  << "snowWallInteraction: " << what.c_str() << ": unknown key '"
+            << k.c_str() << "'" << hint << "; the accepted keys are";
+        for (const char* a : allowed) os << ' ' << a;
+        os  << exit(FatalIOError);
+    }
+}
+
+//- A patch-pattern list that is given is not empty: an empty list would
+//  apply to no patch without a word
+inline void checkNotEmpty(const dictionary& d, const wordRes& sel, const std::string& what)
+{
+    if (sel.empty())
+    {
+        fatalAt(d, d.findEntry("patches", keyType::LITERAL))
+            << "snowWallInteraction: " << what.c_str() << ": the patches list "
+            << "is empty (give at least one patch name or pattern, or leave "
+            << "the entry out)" << exit(FatalIOError);
+    }
+}
+
+//- The keys of snowWallInteractionCoeffs and of its sub-dictionaries, by
+//  the model each names (doc/wallmodel.md), checked before anything is set
+//  up; a sub-dictionary given as a value is an error, not "no gate"
+inline void checkCoeffKeys(const dictionary& cd)
+{
+    checkKeys
+    (
+        cd,
+        {
+            "patches", "regime", "stuckParcels", "reboundTangential",
+            "tangentialGate", "shearGate", "buildUp", "wallRegimes"
+        },
+        std::string(cd.dictName())
+    );
+    for (const char* sub : {"tangentialGate", "shearGate", "buildUp", "wallRegimes"})
+    {
+        const entry* e = cd.findEntry(sub, keyType::LITERAL);
+        if (e && !e->isDict())
+        {
+            fatalAt(cd, e)
+                << "snowWallInteraction: " << sub << " is not a sub-dictionary "
+                << "{ ... }" << exit(FatalIOError);
+        }
+    }
+    if (cd.isDict("tangentialGate"))
+    {
+        const dictionary& g = cd.subDict("tangentialGate");
+        const word model(g.lookupOrDefault<word>("model", "constant"));
+        if (model == "regime")
+        {
+            checkKeys
+            (
+                g, {"active", "model", "slideLength", "vtTable"},
+                "tangentialGate (model regime)",
+                " (the regime gate takes d_crit(v_n, v_t) from the oblique "
+                "table: vtMax, dRef and exponent belong to model constant)"
+            );
+        }
+        else
+        {
+            checkKeys
+            (
+                g, {"active", "model", "vtMax", "dRef", "exponent"},
+                "tangentialGate (model constant)"
+            );
+        }
+    }
+    if (cd.isDict("shearGate"))
+    {
+        const dictionary& g = cd.subDict("shearGate");
+        const word model(g.lookupOrDefault<word>("model", "adhesion"));
+        if (model == "constant")
+        {
+            checkKeys
+            (
+                g, {"active", "model", "tauCrit", "field", "rhoAir"},
+                "shearGate (model constant)"
+            );
+        }
+        else
+        {
+            checkKeys
+            (
+                g, {"active", "model", "roughnessFactor", "field", "rhoAir"},
+                "shearGate (model adhesion)"
+            );
+        }
+    }
+    if (cd.isDict("buildUp"))
+    {
+        checkKeys
+        (
+            cd.subDict("buildUp"),
+            {"active", "regime", "coverMass", "coverDiameter", "patches"},
+            "buildUp"
+        );
+    }
+    if (cd.isDict("wallRegimes"))
+    {
+        for (const entry& e : cd.subDict("wallRegimes"))
+        {
+            if (e.isDict())
+            {
+                checkKeys
+                (
+                    e.dict(), {"patches", "regime"},
+                    "wallRegimes entry '" + std::string(e.keyword()) + "'"
+                );
+            }
+        }
+    }
+}
+
 //- Accepted ranges of buildUp's covering mass (doc/wallmodel.md): positive
 //  (any small value: the cover fraction compares before it divides, so
 //  nothing overflows) and at most a 0.1 m diameter (the kernel's largest) or
@@ -206,8 +342,17 @@ Foam::SnowWallInteraction<CloudType>::checkedPatches
     // patchInteractionDataList (read next) only warns about a pattern that
     // matches nothing and blames "local patch interaction" for a patch
     // without an entry: both are errors here, naming the file
+    // the first thing read of the coefficients: every key known
+    snowWallDetail::checkCoeffKeys(coeffs);
     const polyBoundaryMesh& bm = mesh.boundaryMesh();
     const List<patchInteractionData> items(coeffs.lookup("patches"));
+    if (items.empty())
+    {
+        snowWallDetail::fatalAt(coeffs, coeffs.findEntry("patches", keyType::LITERAL))
+            << "snowWallInteraction: the patches list is empty: give every "
+            << "boundary patch a type (snow, rebound, stick, escape or none)"
+            << exit(FatalIOError);
+    }
 
     // the first entry that takes each patch (patchInteractionDataList's order)
     labelList first(bm.size(), -1);
@@ -480,6 +625,25 @@ void Foam::SnowWallInteraction<CloudType>::applyGates
                 // the criterion's slide length, when the case states it,
                 // must be the one the table was made with (the C core checks
                 // it: a table without obliqueSlide is an error, not a NaN)
+                // vtTable: the tangential speeds a case makes the table with
+                // (tutorials/wedge/Allrun runs snowregime map --vt from it):
+                // the table in use must have as many
+                const entry* te = g.findEntry("vtTable", keyType::LITERAL);
+                if (te)
+                {
+                    const scalarList vt(g.get<scalarList>("vtTable"));
+                    size_t nvt = 0;
+                    sww_oblique_table(m, &nvt, nullptr);
+                    if (size_t(vt.size()) != nvt)
+                    {
+                        snowWallDetail::fatalAt(g, te)
+                            << "snowWallInteraction: tangentialGate vtTable has "
+                            << vt.size() << " speeds, the regime's oblique table "
+                            << nvt << " (obliqueVt): the coefficients were made "
+                            << "with another list (rerun snowregime map --vt)"
+                            << exit(FatalIOError);
+                    }
+                }
                 const entry* se = g.findEntry("slideLength", keyType::LITERAL);
                 if (se)
                 {
@@ -596,6 +760,10 @@ void Foam::SnowWallInteraction<CloudType>::setupWallRegimes
                 << exit(FatalIOError);
         }
         const wordRes sel(ed.get<wordRes>("patches"));
+        snowWallDetail::checkNotEmpty
+        (
+            ed, sel, "wallRegimes entry '" + std::string(name) + "'"
+        );
 
         const label k = patchModels_.size();
         sww_model* m = sww_alloc();
@@ -825,6 +993,7 @@ void Foam::SnowWallInteraction<CloudType>::setup()
     {
         const dictionary& b = cd.subDict("buildUp");
         const wordRes sel(b.get<wordRes>("patches"));
+        snowWallDetail::checkNotEmpty(b, sel, "buildUp");
         checkPatterns(sel, b, "buildUp patches:");
         forAll(snowPatches_, si)
         {
