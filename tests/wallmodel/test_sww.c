@@ -835,6 +835,12 @@ static void shear_gate(void **s)
     assert_int_equal(sww_decide(m, &in, &o), SWW_EINVAL);
     in.tau_w = -1.0;
     assert_int_equal(sww_decide(m, &in, &o), SWW_EINVAL);
+    /* ... at every impact, not only at a stick candidate (issue 22): a bounce
+     * (d above d_crit) with a bad tau_w is refused too */
+    sww_impact big = { .d = 1e-4, .vn = v, .tau_w = NAN, .u = 0.5 };
+    assert_int_equal(sww_decide(m, &big, &o), SWW_EINVAL);
+    big.tau_w = INFINITY;
+    assert_int_equal(sww_decide(m, &big, &o), SWW_EINVAL);
     /* adhesion: tau_c(d) from the regime's gamma, Estar, mu */
     assert_int_equal(sww_set_shear_gate_adhesion(m, 0.1), SWW_OK);
     const double tc = tau_indep(0.2, 1.88e9, d / 2, 0.05, 0.1);

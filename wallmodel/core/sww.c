@@ -923,6 +923,11 @@ int sww_decide(const sww_model *m, const sww_impact *in, sww_outcome *out)
         || !(in->d > 0.0) || isinf(in->d) || !(in->vn >= 0.0) || isinf(in->vn)
         || !(in->vt >= 0.0) || isinf(in->vt) || !(in->u >= 0.0 && in->u < 1.0))
         return SWW_EINVAL;
+    /* with the shear gate on, tau_w is an input of every impact, checked here
+     * and not only when a stick candidate reaches the gate (issue 22): a bad
+     * value is found at the first impact, not at the first stick candidate */
+    if (m->shear_on && (isnan(in->tau_w) || !(in->tau_w >= 0.0) || isinf(in->tau_w)))
+        return SWW_EINVAL;
     const double dc = sww_dcrit(m, in->vn);
     out->d_crit = dc;
     out->range = in->vn < m->num[K_VNMIN] ? -1 : (in->vn > m->num[K_VNMAX] ? 1 : 0);
@@ -940,8 +945,6 @@ int sww_decide(const sww_model *m, const sww_impact *in, sww_outcome *out)
         out->reason = SWW_BY_TANGENTIAL;
     }
     if (stick && m->shear_on) {
-        if (isnan(in->tau_w) || !(in->tau_w >= 0.0) || isinf(in->tau_w))
-            return SWW_EINVAL;
         /* a diameter so large that tau_c is not a number is refused, not a
          * gate that silently never fires */
         const double tc = sww_tau_crit(m, in->d);

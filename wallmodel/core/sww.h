@@ -46,8 +46,9 @@ typedef struct {
     double d;      /* particle diameter [m], > 0                                   */
     double vn;     /* normal impact speed towards the wall [m/s], >= 0             */
     double vt;     /* tangential impact speed magnitude [m/s], >= 0                */
-    double tau_w;  /* wall shear stress magnitude [Pa], >= 0 (read only when the
-                      shear gate is on)                                            */
+    double tau_w;  /* wall shear stress magnitude [Pa], >= 0 and finite: checked
+                      at every impact when the shear gate is on (SWW_EINVAL),
+                      not read when it is off                                      */
     double u;      /* caller's uniform random number in [0, 1), a new one per
                       impact: a stick candidate needs u < p_stick. With a rough
                       wall's probability table (probabilityStick) p_stick lies
