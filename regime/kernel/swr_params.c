@@ -108,6 +108,8 @@ void swr_params_default(swr_params *p)
 /* Strict number: the whole text (surrounding blanks allowed), finite. */
 static int parse_number(const char *s, double *out)
 {
+    if (strpbrk(s, "xX"))   /* decimal only: strtod also reads hexadecimal */
+        return -1;
     char *end;
     errno = 0;
     const double v = strtod(s, &end);
@@ -178,7 +180,7 @@ int swr_params_set(swr_params *p, const char *key, const char *value, char *err,
     if (k) {
         double v;
         if (parse_number(value, &v) != 0)
-            return fail(err, errlen, "%s: '%s' is not a finite number (%s)", key, value, k->what);
+            return fail(err, errlen, "%s: '%s' is not a finite decimal number (%s)", key, value, k->what);
         if (!in_range(v, k->lo, k->hi))
             return fail(err, errlen, "%s: %s is out of range [%g, %g] (%s)", key, value,
                         k->lo, k->hi, k->what);
@@ -296,6 +298,14 @@ int swr_params_load(swr_params *p, const char *path, char *err, size_t errlen)
     int lineno = 0, rc = 0;
     while (fgets(line, sizeof line, f)) {
         lineno++;
+        /* a NUL byte ends the string early: found before the line's length
+         * is judged (it was called "line too long") */
+        const size_t got = strlen(line);
+        if (got + 1 < sizeof line && !strchr(line, '\n') && !feof(f)) {
+            rc = fail(err, errlen, "%s:%d: the line holds a NUL byte (not a text file?)", path,
+                      lineno);
+            break;
+        }
         if (!strchr(line, '\n') && !feof(f)) {
             rc = fail(err, errlen, "%s:%d: line too long", path, lineno);
             break;

@@ -273,6 +273,12 @@ int swt_parse_double(const char *opt, const char *text, double lo, double hi,
         snprintf(err, errlen, "%s: missing value", opt);
         return -1;
     }
+    /* decimal only: strtod also reads hexadecimal (0x10, 0x1p-14), which an
+     * option value is not meant to be */
+    if (strpbrk(text, "xX")) {
+        snprintf(err, errlen, "%s: '%s' is not a decimal number", opt, text);
+        return -1;
+    }
     char *end;
     errno = 0;
     double v = strtod(text, &end);
@@ -286,7 +292,10 @@ int swt_parse_double(const char *opt, const char *text, double lo, double hi,
         return -1;
     }
     if (v < lo || v > hi) {
-        if (lo > 0.0 && lo <= 1e-300)
+        if (lo > 0.0 && lo <= 1e-300 && v > 0.0)
+            snprintf(err, errlen, "%s: '%s' is too small: the smallest accepted value is %g",
+                     opt, text, lo);
+        else if (lo > 0.0 && lo <= 1e-300)
             snprintf(err, errlen, "%s: '%s' is out of range (0, %g]", opt, text, hi);
         else
             snprintf(err, errlen, "%s: '%s' is out of range [%g, %g]", opt, text, lo, hi);
@@ -307,7 +316,16 @@ int swt_parse_int(const char *opt, const char *text, long lo, long hi, long *out
     errno = 0;
     long v = strtol(text, &end, 10);
     if (end == text || *end != '\0' || errno == ERANGE) {
-        snprintf(err, errlen, "%s: '%s' is not an integer", opt, text);
+        /* a number out of range (1e9, 99999999999999999999) is named so, not
+         * "not an integer"; hexadecimal is not decimal */
+        double x;
+        char e2[8];
+        if (!strpbrk(text, "xX") && swt_parse_double(opt, text, -HUGE_VAL, HUGE_VAL, &x, e2,
+                                                    sizeof e2) == 0
+            && x == floor(x) && (x < (double)lo || x > (double)hi))
+            snprintf(err, errlen, "%s: '%s' is out of range [%ld, %ld]", opt, text, lo, hi);
+        else
+            snprintf(err, errlen, "%s: '%s' is not an integer", opt, text);
         return -1;
     }
     if (v < lo || v > hi) {

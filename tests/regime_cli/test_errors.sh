@@ -54,6 +54,13 @@ check "dashpot: loading is not used by cor thornton-ning" \
     "$SR" sensitivity --set dashpot=loading --set cor=thornton-ning
 check "asperity_dz: 1e-06 m is not below asperity_r = 1e-06 m: asperities sunk that deep are level with the base plane or below it" \
     "$SR" map --set wall=lattice --set asperity_dz=1e-6
+# messages that named the wrong thing (issue 22, item 4)
+printf 'gamma 0.3\0\n' >"$WORK/nul.cfg"
+check "--config: $WORK/nul.cfg:1: the line holds a NUL byte" "$SR" map --config "$WORK/nul.cfg"
+check "--set: gamma: '0x1' is not a finite decimal number" "$SR" map --set gamma=0x1
+check "--points: '1e9' is out of range [1, 100000]" "$SR" map --set wall=lattice --points 1e9
+check "--nd: '99999999999999999999' is out of range" "$SR" map --nd 99999999999999999999
+check "--dmin: '0x1p-14' is not a decimal number" "$SR" map --dmin 0x1p-14
 # a --vt list too long for the d_crit(v_n, v_t) table: refused before any map (it
 # used to coarsen the table's speeds silently)
 long=$(seq -s, 0 1 59)
@@ -72,6 +79,8 @@ for a in "vcrit --d -2e-5|--d: '-2e-5'" "vcrit --d 1e-5,,2e-5|empty item" "vcrit
          "collide --d 5e-5 --vn 1e-90 --set adhesion=none|--vn = 1e-90 is invalid" "collide --d 0.5 --vn 1|--d: '0.5'" \
          "collide --d 1e-3 --vn 1 --set wall=lattice --set asperity_spacing=1e-9|asperity_spacing: 1e-09 m is below 2 asperity_r" \
          "vcrit --d 1e-5 --level 0.3|--level: only for a rough wall" \
+         "collide --d 5e-5 --vn 1e-310|--vn: '1e-310' is too small: the smallest accepted value is 1e-300" \
+         "collide --d 0x1p-14 --vn 1|--d: '0x1p-14' is not a decimal number" \
          "vcrit --d 1e-5 --set cor=elastic --set dashpot=both|dashpot: both is not used by cor elastic" \
          "vcrit --d 1e-5 --set wall=lattice --set lattice=hex --set asperity_r=2e-6 --set asperity_spacing=3e-6|below 2 asperity_r = 4e-06 m"; do
     args=${a%%|*}; want=${a#*|}
