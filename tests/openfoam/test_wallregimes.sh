@@ -169,5 +169,14 @@ prep "$tmp/badTable"
 sed -i 's/probabilityStick  (0.3 0.3 0.3 0.3)/probabilityStick  (0.3 1.3 0.3 0.3)/' \
     "$tmp/badTable/constant/regime-rough.coeffs"
 expect_fatal "$tmp/badTable" "wallRegimes roughABS: key 'probabilityStick': value 1.3 (entry 1) is not a probability in \[0, 1\]"
+# an error in the main regime names regime.coeffs, not the wallRegimes entry's file
+# (both hold the same keys at the same lines; issue 22)
+prep "$tmp/badMain"
+sed -i 's/^\( *vnMin *\)0.2;/\1 9;/' "$tmp/badMain/constant/regime.coeffs"
+expect_fatal "$tmp/badMain" "key 'vnMin': value 9 is not below vnMax 6"
+grep -q "^file: .*/badMain/constant/regime.coeffs from line" "$tmp/badMain/log.run" \
+    || fail "badMain: the error does not name regime.coeffs: $(grep '^file:' "$tmp/badMain/log.run")"
+grep -q "^file: .*/badTable/constant/regime-rough.coeffs" "$tmp/badTable/log.run" \
+    || fail "badTable: the error does not name regime-rough.coeffs: $(grep '^file:' "$tmp/badTable/log.run")"
 echo "errors: ok"
 echo "PASS"

@@ -12,6 +12,8 @@
 #include <fstream>
 #include <initializer_list>
 #include <cctype>
+#include <cmath>
+#include <cstdlib>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -34,8 +36,11 @@ inline void dictFiles(const fileName& f, DynamicList<fileName>& out, int depth)
     std::string line;
     while (std::getline(in, line))
     {
-        const std::string::size_type h = line.find_first_not_of(" \t");
-        if (h == std::string::npos || line.compare(h, 8, "#include") != 0)
+        // anywhere in the line, not after a // comment: an entry may hold
+        // its include on one line, roughABS { patches (...); #include "x" }
+        const std::string::size_type h = line.find("#include");
+        const std::string::size_type c = line.find("//");
+        if (h == std::string::npos || (c != std::string::npos && c < h))
         {
             continue;
         }
@@ -73,6 +78,41 @@ inline bool lineHasKey(const List<std::string>& lines, label n, const std::strin
     return false;
 }
 
+//- The line of entry e (1-based, in one file's lines) shows e's first value:
+//  the number (to 1e-12 relative) or the word right after the keyword, a
+//  list's first item after its '('; entries without a plain first value pass
+inline bool lineHasValue(const List<std::string>& lines, const entry& e)
+{
+    const label n = e.startLineNumber();
+    if (n < 1 || n > lines.size()) return false;
+    ITstream& is = e.stream();
+    if (is.empty()) return true;
+    label k = 0;
+    while (k < is.size() && is[k].isPunctuation()) ++k;   // a list's '('
+    if (k >= is.size()) return true;
+    const token& t = is[k];
+    const std::string& l = lines[n - 1];
+    std::string::size_type p = l.find(std::string(e.keyword()));
+    if (p == std::string::npos) return false;
+    p += std::string(e.keyword()).size();
+    while (p < l.size() && (std::isspace(static_cast<unsigned char>(l[p])) || l[p] == '(')) ++p;
+    if (t.isNumber())
+    {
+        const char* b = l.c_str() + p;
+        char* end = nullptr;
+        const double v = std::strtod(b, &end);
+        if (end == b) return false;
+        const double x = t.number();
+        return std::fabs(v - x) <= 1e-12 * std::max(std::fabs(v), std::fabs(x));
+    }
+    if (t.isWord() || t.isString())
+    {
+        const std::string w(t.isWord() ? std::string(t.wordToken()) : std::string(t.stringToken()));
+        return l.find(w, p) != std::string::npos;
+    }
+    return true;
+}
+
 //- The file dictionary d was read from: its name is <file>.<scope>..., so
 //  the longest '.'-cut prefix of the name that is a file (else the name)
 inline fileName dictFile(const dictionary& d)
@@ -108,16 +148,29 @@ inline fileName blockFile(const dictionary& d, const std::string& key, label lin
         while (std::getline(in, l)) lines.append(l);
         text[i].transfer(lines);
     }
-    forAllReverse(files, i)
+    // every key of d at its line in file j, and with values = 1 the first
+    // value as well: two regime files written by snowregime hold the same
+    // keys at the same lines, and an error in the main regime named the one
+    // a wallRegimes or buildUp entry included (issue 22)
+    auto holdsBlock = [&](label j, bool values)
     {
         bool all = false;
         for (const entry& e : d)
         {
             if (e.isDict()) continue;
-            all = lineHasKey(text[i], e.startLineNumber(), e.keyword());
+            all = lineHasKey(text[j], e.startLineNumber(), e.keyword());
+            if (all && values) all = lineHasValue(text[j], e);
             if (!all) break;
         }
-        if (all) return files[i];
+        return all;
+    };
+    forAllReverse(files, i)
+    {
+        if (holdsBlock(i, true)) return files[i];
+    }
+    forAllReverse(files, i)
+    {
+        if (holdsBlock(i, false)) return files[i];
     }
     forAllReverse(files, i)
     {
