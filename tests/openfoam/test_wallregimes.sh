@@ -94,7 +94,18 @@ check() {
     awk -v k="$4" -v n="$3" 'BEGIN { p = 0.3; exit !((k - n * p) ^ 2 <= 16 * n * p * (1 - p)) }' \
         || fail "$1: wall sticks $4 of $3: not 0.3 within 4 sigma"
     [ "$8 $9 ${10} ${11}" = "3 1 2 0" ] || fail "$1: top totals '$8 $9 ${10} ${11}' != '3 1 2 0'"
+    # counts by reason (issue 23): on wall every bounce is the draw's (p = 0.3
+    # everywhere), on top one each by the criterion and the gate
+    local r="$1/postProcessing/kinematicCloud:snowWall/0.1/reasons.dat"
+    [ "$(awk '$1 == "wall"' "$r")" = "wall snow $3 $4 0 0 0 $5 0" ] \
+        || fail "$1: reasons wall '$(awk '$1 == "wall"' "$r")' != 'wall snow $3 $4 0 0 0 $5 0'"
+    [ "$(awk '$1 == "top"' "$r")" = "top snow 3 1 1 1 0 0 0" ] \
+        || fail "$1: reasons top '$(awk '$1 == "top"' "$r")' != 'top snow 3 1 1 1 0 0 0'"
     echo "$4"
+}
+sum_reasons() { # CASE PATCH: impacts - (stuck + criterion + tangential + shear + probability)
+    awk -v p="$2" '$1 == p { print $3 - ($4 + $5 + $6 + $7 + $8) }' \
+        "$1/postProcessing/kinematicCloud:snowWall/0.1/reasons.dat"
 }
 
 # 1. serial
@@ -130,6 +141,7 @@ line=$(series_last "$tmp/buildup" 0)
 set -- $line
 [ "$2" = "$n_wall" ] && [ "$(($3 + $4))" = "$n_wall" ] && [ "$4" -gt 0 ] && [ "$4" -lt 150 ] \
     || fail "buildUp: wall totals '$2 $3 $4 $5', expected $n_wall impacts with 1-149 bounces"
+[ "$(sum_reasons "$tmp/buildup" wall)" = 0 ] || fail "buildUp: the counts by reason do not add up"
 [ "$7 $8 $9 ${10}" = "3 1 2 0" ] || fail "buildUp: top totals '$7 $8 $9 ${10}' != '3 1 2 0'"
 echo "buildUp over the entry's regime: ok (wall $3 sticks, $4 bounces)"
 
@@ -146,6 +158,10 @@ prep "$tmp/gate" oblique
 line=$(series_last "$tmp/gate" 0)
 set -- $line
 [ "$2 $3 $4 $5" = "60 0 60 0" ] || fail "gate: wall totals '$2 $3 $4 $5' != '60 0 60 0'"
+# the draw's candidates (u < 0.3) meet the gate: tangential; the others: the draw
+read -r tg pr < <(awk '$1 == "wall" { print $6, $8 }' "$tmp/gate/postProcessing/kinematicCloud:snowWall/0.1/reasons.dat")
+[ "$((tg + pr))" = 60 ] && [ "$tg" -gt 0 ] && [ "$pr" -gt 0 ] \
+    || fail "gate: reasons tangential $tg + probability $pr != 60 (or one of them 0)"
 echo "gate on the entry's regime: ok"
 
 # 4. errors

@@ -1186,6 +1186,60 @@ static void loader_errors(void **s)
 }
 
 
+/* ------------------------------------------------------------- counts by reason (issue 23) */
+
+static void outcome_classes(void **s)
+{
+    (void)s;
+    sww_model *m = load_fixture(), *r = load_rough();
+    /* sharp map: stuck / criterion, never the draw, whatever u */
+    for (double u = 0.0; u < 1.0; u += 0.249) {
+        sww_outcome o = decide(m, 1e-5, 1.0, 0.0, 0.0, u);
+        assert_int_equal(sww_outcome_class(&o), SWW_CLASS_STUCK);
+        assert_false(o.by_draw);
+        o = decide(m, 5e-5, 1.0, 0.0, 0.0, u);
+        assert_int_equal(sww_outcome_class(&o), SWW_CLASS_CRITERION);
+        assert_false(o.by_draw);
+    }
+    /* the gates */
+    assert_int_equal(sww_set_tangential_gate(m, 0.5, 5e-5, 0.0), SWW_OK);
+    sww_outcome o = decide(m, 1e-5, 1.0, 2.0, 0.0, 0.5);
+    assert_int_equal(sww_outcome_class(&o), SWW_CLASS_TANGENTIAL);
+    sww_set_tangential_off(m);
+    assert_int_equal(sww_set_shear_gate_constant(m, 0.5), SWW_OK);
+    o = decide(m, 1e-5, 1.0, 0.0, 1.0, 0.5);
+    assert_int_equal(sww_outcome_class(&o), SWW_CLASS_SHEAR);
+    /* a rough wall's table: u >= p > 0 is the draw; p = 0 the criterion */
+    const double d = 1.3e-5, v = 2.2, p = p_expected(d, v);
+    o = decide(r, d, v, 0, 0, p);
+    assert_true(o.by_draw && o.fate == SWW_BOUNCE && o.reason == SWW_BY_CRITERION);
+    assert_int_equal(sww_outcome_class(&o), SWW_CLASS_PROBABILITY);
+    o = decide(r, d, v, 0, 0, nextafter(p, 0.0));
+    assert_int_equal(sww_outcome_class(&o), SWW_CLASS_STUCK);
+    o = decide(r, 8e-5, 4.0, 0, 0, 0.0);                  /* p = 0 at that node */
+    assert_int_equal(sww_outcome_class(&o), SWW_CLASS_CRITERION);
+    /* a stick candidate by the draw that a gate stops counts for the gate */
+    assert_int_equal(sww_set_tangential_gate(r, 0.5, 5e-5, 0.0), SWW_OK);
+    o = decide(r, d, v, 2.0, 0, 0.0);
+    assert_int_equal(sww_outcome_class(&o), SWW_CLASS_TANGENTIAL);
+    sww_set_tangential_off(r);
+    /* the blend: p in (0, 1) decided by u */
+    sww_impact in = { .d = 5e-5, .vn = 1.0, .vt = 0.0, .tau_w = 0.0, .u = 0.6 };
+    sww_set_shear_off(m);
+    assert_int_equal(sww_decide_blend(m, r, 0.5, &in, &o), SWW_OK);
+    if (o.fate != SWW_STICK)
+        assert_int_equal(sww_outcome_class(&o), o.p_stick > 0 ? SWW_CLASS_PROBABILITY
+                                                               : SWW_CLASS_CRITERION);
+    in.u = 0.0;
+    assert_int_equal(sww_decide_blend(m, r, 0.5, &in, &o), SWW_OK);
+    assert_int_equal(sww_outcome_class(&o), o.p_stick > 0 ? SWW_CLASS_STUCK : SWW_CLASS_CRITERION);
+    for (int c = 0; c < SWW_NCLASS; c++)
+        assert_string_not_equal(sww_class_name((sww_class)c), "?");
+    assert_string_equal(sww_class_name(SWW_CLASS_PROBABILITY), "probability");
+    sww_free(m);
+    sww_free(r);
+}
+
 /* ------------------------------------------------------------- rebound tables (issue 23) */
 
 /* The kernel's rebound as tables: d 20, 80 um (rows), v_n 0.5, 4 m/s (columns),
@@ -1405,6 +1459,7 @@ int main(void)
         cmocka_unit_test(thread_safe),
         cmocka_unit_test(loader_errors),
         cmocka_unit_test(rebound_tables),
+        cmocka_unit_test(outcome_classes),
     };
     return cmocka_run_group_tests_name("wallmodel", tests, setup, teardown);
 }

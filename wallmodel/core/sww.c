@@ -1053,6 +1053,29 @@ double sww_vn_min(const sww_model *m) { return m->num[K_VNMIN]; }
 double sww_vn_max(const sww_model *m) { return m->num[K_VNMAX]; }
 const char *sww_label(const sww_model *m) { return m->label; }
 
+sww_class sww_outcome_class(const sww_outcome *o)
+{
+    if (o->fate == SWW_STICK)
+        return SWW_CLASS_STUCK;
+    if (o->by_draw)
+        return SWW_CLASS_PROBABILITY;
+    if (o->fate == SWW_RIPOFF)
+        return SWW_CLASS_SHEAR;
+    return o->reason == SWW_BY_TANGENTIAL ? SWW_CLASS_TANGENTIAL : SWW_CLASS_CRITERION;
+}
+
+const char *sww_class_name(sww_class c)
+{
+    switch (c) {
+    case SWW_CLASS_STUCK: return "stuck";
+    case SWW_CLASS_CRITERION: return "criterion";
+    case SWW_CLASS_TANGENTIAL: return "tangential";
+    case SWW_CLASS_SHEAR: return "shear";
+    case SWW_CLASS_PROBABILITY: return "probability";
+    default: return "?";
+    }
+}
+
 const char *sww_fate_name(sww_fate f)
 {
     switch (f) {
@@ -1168,6 +1191,7 @@ int sww_decide(const sww_model *m, const sww_impact *in, sww_outcome *out)
     out->p_stick = stick_probability(m, in->d, in->vn, dc);
     out->reason = SWW_BY_CRITERION;
     int stick = in->u < out->p_stick;
+    out->by_draw = !stick && out->p_stick > 0.0;
     if (stick && m->vt_on == 1 && in->vt > sww_vt_max(m, in->d)) {
         stick = 0;
         out->reason = SWW_BY_TANGENTIAL;
@@ -1261,6 +1285,7 @@ int sww_decide_blend(const sww_model *bare, const sww_model *covered, double w,
     const int use_cov = stick ? (pc > pb ? 1 : (pb > pc ? 0 : w >= 0.5))
                               : (pc < pb ? 1 : (pb < pc ? 0 : w >= 0.5));
     *out = use_cov ? oc : ob;
+    out->by_draw = !stick && p > 0.0;
     if (!stick && out->fate == SWW_STICK) {
         const sww_model *r = use_cov ? covered : bare;
         out->fate = SWW_BOUNCE;

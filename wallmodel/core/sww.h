@@ -67,7 +67,24 @@ typedef struct {
     double e_t;      /* bounce / rip-off: v_t' = e_t v_t (1 for a stick)            */
     int range;       /* where v_n lies: 0 inside [vnMin, vnMax] (the fit), -1 below,
                         +1 above (the power-law extrapolation)                      */
+    int by_draw;     /* 1: the random number decided against a stick that had a
+                        probability > 0 (u >= p_stick > 0: a rough wall's table or a
+                        build-up blend); the fate and reason then say how it left */
 } sww_outcome;
+
+/* What decided an impact, for counts by reason (issue 23): each outcome is
+ * exactly one of these. */
+typedef enum {
+    SWW_CLASS_STUCK = 0,        /* stuck                                             */
+    SWW_CLASS_CRITERION = 1,    /* bounced: d > d_crit(v_n) (p_stick 0)              */
+    SWW_CLASS_TANGENTIAL = 2,   /* bounced by the tangential gate                    */
+    SWW_CLASS_SHEAR = 3,        /* ripped off by the shear gate                      */
+    SWW_CLASS_PROBABILITY = 4,  /* bounced by the probability draw (by_draw)         */
+    SWW_NCLASS = 5
+} sww_class;
+sww_class sww_outcome_class(const sww_outcome *o);
+/* "stuck", "criterion", "tangential", "shear", "probability" */
+const char *sww_class_name(sww_class c);
 
 typedef struct sww_model sww_model;
 
