@@ -164,6 +164,44 @@ read -r tg pr < <(awk '$1 == "wall" { print $6, $8 }' "$tmp/gate/postProcessing/
     || fail "gate: reasons tangential $tg + probability $pr != 60 (or one of them 0)"
 echo "gate on the entry's regime: ok"
 
+# 3b. draws fixed by the parcel (issue 23): with DebugSwitches every impact's line names
+#     the parcel (origin processor:id), the time step and the fate. The uninterrupted
+#     serial run, a serial restart at 0.05, and the serial start continued on np 2 and on
+#     np 3 (decomposePar of the cloud at 0.05) give every parcel the same fate at the same
+#     step. (A run decomposed from the start draws other numbers: OpenFOAM numbers the
+#     parcels per processor at injection, so there a parcel is another key.)
+debug_on() { printf 'DebugSwitches { snowWallInteraction 1; }\n' >> "$1/system/controlDict"; }
+fates() { # LOG...: "origProc:origId step fate" of every impact on wall, sorted
+    grep -h "snowWallInteraction: impact patch wall " "$@" \
+        | sed -n 's/.* parcel \([0-9]*:[0-9]*\) step \([0-9]*\) -> \([a-z]*\)$/\1 \2 \3/p' | sort
+}
+half() { # CASE: run to 0.05 serially
+    (cd "$1" && foamDictionary -entry endTime -set 0.05 system/controlDict > /dev/null \
+        && run log.run1 icoUncoupledKinematicParcelFoam \
+        && foamDictionary -entry endTime -set 0.1 system/controlDict > /dev/null)
+}
+prep "$tmp/dserial"; debug_on "$tmp/dserial"
+(cd "$tmp/dserial" && run log.run icoUncoupledKinematicParcelFoam)
+fates "$tmp/dserial/log.run" > "$tmp/fates.serial"
+[ "$(wc -l < "$tmp/fates.serial")" = "$n_wall" ] || fail "draws: $(wc -l < "$tmp/fates.serial") impact lines, expected $n_wall"
+prep "$tmp/drestart"; debug_on "$tmp/drestart"; half "$tmp/drestart"
+(cd "$tmp/drestart" && run log.run2 icoUncoupledKinematicParcelFoam)
+fates "$tmp/drestart/log.run1" "$tmp/drestart/log.run2" > "$tmp/fates.restart"
+cmp -s "$tmp/fates.serial" "$tmp/fates.restart" \
+    || fail "draws: a restart changes $(diff "$tmp/fates.serial" "$tmp/fates.restart" | grep -c '^>') parcel fates"
+for np in 2 3; do
+    prep "$tmp/dnp$np"; debug_on "$tmp/dnp$np"; half "$tmp/dnp$np"
+    foamDictionary -entry numberOfSubdomains -set $np "$tmp/dnp$np/system/decomposeParDict" > /dev/null
+    foamDictionary -entry coeffs/n -set "($np 1 1)" "$tmp/dnp$np/system/decomposeParDict" > /dev/null
+    (cd "$tmp/dnp$np" && run log.decomposePar decomposePar -latestTime \
+        && run log.run2 mpirun -np $np --oversubscribe --output-filename out icoUncoupledKinematicParcelFoam -parallel)
+    # each rank's output in a file of its own (mpirun --output-filename): no interleaved lines
+    fates "$tmp/dnp$np/log.run1" $(find "$tmp/dnp$np/out" -name stdout) > "$tmp/fates.np$np"
+    cmp -s "$tmp/fates.serial" "$tmp/fates.np$np" \
+        || fail "draws: continued on np $np, $(diff "$tmp/fates.serial" "$tmp/fates.np$np" | grep -c .^>.) parcel fates differ: $(diff "$tmp/fates.serial" "$tmp/fates.np$np" | head -8 | tr "\n" "|")"
+done
+echo "draws fixed by the parcel: ok ($n_wall wall impacts: serial = restart = continued on np 2 = on np 3)"
+
 # 4. errors
 expect_fatal() { # CASE PATTERN
     if (cd "$1" && icoUncoupledKinematicParcelFoam > log.run 2>&1); then

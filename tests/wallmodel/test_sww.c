@@ -1186,6 +1186,38 @@ static void loader_errors(void **s)
 }
 
 
+/* the counter-based draw (issue 23): fixed by its key, uniform, uncorrelated */
+static void uniform_hash(void **s)
+{
+    (void)s;
+    assert_true(sww_uniform_hash(1234567, 0, 17, 40, 0) == sww_uniform_hash(1234567, 0, 17, 40, 0));
+    assert_true(sww_uniform_hash(1234567, 0, 17, 40, 0) != sww_uniform_hash(1234568, 0, 17, 40, 0));
+    assert_true(sww_uniform_hash(1, 0, 17, 40, 0) != sww_uniform_hash(1, 0, 17, 40, 1));
+    assert_true(sww_uniform_hash(1, 0, 17, 40, 0) != sww_uniform_hash(1, 1, 17, 40, 0));
+    /* 2e5 keys as a run walks them (parcel ids, steps, counts): in [0, 1), mean and
+     * 16-bin chi-square within their 4-sigma / 0.1 % bounds, neighbours uncorrelated */
+    const int n = 200000, nb = 16;
+    long bins[16] = { 0 };
+    double sum = 0.0, sxy = 0.0, prev = 0.5;
+    for (int i = 0; i < n; i++) {
+        const double u = sww_uniform_hash(1234567, i % 3, i / 3 % 1000, i / 3000, i % 2);
+        assert_true(u >= 0.0 && u < 1.0);
+        sum += u;
+        sxy += (u - 0.5) * (prev - 0.5);
+        prev = u;
+        bins[(int)(u * nb)]++;
+    }
+    assert_true(fabs(sum / n - 0.5) <= 4.0 * sqrt(1.0 / 12.0 / n));
+    double chi2 = 0.0;
+    for (int b = 0; b < nb; b++)
+        chi2 += (bins[b] - n / (double)nb) * (bins[b] - n / (double)nb) / (n / (double)nb);
+    assert_true(chi2 < 37.7);                       /* 15 degrees of freedom, p = 0.001 */
+    assert_true(fabs(sxy / n) <= 4.0 / 12.0 / sqrt((double)n));   /* lag-1 covariance */
+    /* extreme keys: still in [0, 1) */
+    assert_true(sww_uniform_hash(~0ULL, -1, -1, -1, -1) < 1.0);
+    assert_true(sww_uniform_hash(0, 0, 0, 0, 0) >= 0.0);
+}
+
 /* ------------------------------------------------------------- counts by reason (issue 23) */
 
 static void outcome_classes(void **s)
@@ -1460,6 +1492,7 @@ int main(void)
         cmocka_unit_test(loader_errors),
         cmocka_unit_test(rebound_tables),
         cmocka_unit_test(outcome_classes),
+        cmocka_unit_test(uniform_hash),
     };
     return cmocka_run_group_tests_name("wallmodel", tests, setup, teardown);
 }

@@ -1227,6 +1227,27 @@ int sww_decide(const sww_model *m, const sww_impact *in, sww_outcome *out)
     return SWW_OK;
 }
 
+/* ---------------------------------------------------------------- draws */
+
+static unsigned long long mix64(unsigned long long z)
+{
+    z += 0x9e3779b97f4a7c15ULL;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+}
+
+double sww_uniform_hash(unsigned long long seed, long long a, long long b, long long c,
+                        long long k)
+{
+    unsigned long long h = mix64(seed);
+    h = mix64(h ^ (unsigned long long)a);
+    h = mix64(h ^ (unsigned long long)b);
+    h = mix64(h ^ (unsigned long long)c);
+    h = mix64(h ^ (unsigned long long)k);
+    return (double)(h >> 11) * 0x1.0p-53; /* [0, 1 - 2^-53] */
+}
+
 /* ---------------------------------------------------------------- build-up */
 
 double sww_monolayer_mass(double rho, double d)

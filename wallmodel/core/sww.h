@@ -182,6 +182,14 @@ double sww_cover_fraction(double mass_per_area, double cover_mass);
  * overflows). */
 double sww_monolayer_mass(double rho, double d);
 
+/* A uniform number in [0, 1) fixed by its key (issue 23): a counter-based
+ * hash (SplitMix64's finaliser chained over seed, a, b, c, k), 53 random bits;
+ * the same on every machine, processor and thread, so an impact's draw can be
+ * tied to the parcel (its origin processor and id), the time step and the
+ * impacts it made before in that step instead of to a random stream. */
+double sww_uniform_hash(unsigned long long seed, long long a, long long b, long long c,
+                        long long k);
+
 /* d_crit(v_n) [m]: the fit inside [vnMin, vnMax]; outside it the power law
  * d_crit(vn_end) (v_n/vn_end)^slope anchored at the range end; INFINITY for
  * v_n <= 0 and where the power law exceeds e^709 = 8e307 m (a subnormal v_n),

@@ -859,6 +859,21 @@ void Foam::SnowWallInteraction<CloudType>::setup()
         Info<< endl;
     }
     setupWallRegimes(cd);
+    {
+        const label sd = cd.lookupOrDefault<label>("randomSeed", 1234567);
+        if (sd < 0)
+        {
+            snowWallDetail::fatalAt(cd, cd.findEntry("randomSeed", keyType::LITERAL))
+                << "snowWallInteraction: randomSeed " << sd << " must be >= 0"
+                << exit(FatalIOError);
+        }
+        seed_ = sd;
+        drawMatters_ = covered_ != nullptr;
+        forAll(slotModel_, si)
+        {
+            if (sww_probability_table(slotModel_[si], nullptr, nullptr)) drawMatters_ = true;
+        }
+    }
     nImpact_.setSize(n, 0);
     nStick_.setSize(n, 0);
     nBounce_.setSize(n, 0);
@@ -1122,7 +1137,10 @@ Foam::SnowWallInteraction<CloudType>::SnowWallInteraction
     shearOn_(false),
     tauName_("wallShearStress"),
     rhoAir_(-1),
-    rnd_(1234567 + 7919*Pstream::myProcNo()),
+    seed_(1234567),
+    drawMatters_(false),
+    drawStep_(-1),
+    drawsInStep_(),
     openPatch_(),
     slotOfPatch_(),
     snowPatches_(),
@@ -1155,7 +1173,10 @@ Foam::SnowWallInteraction<CloudType>::SnowWallInteraction
     shearOn_(false),
     tauName_("wallShearStress"),
     rhoAir_(-1),
-    rnd_(pim.rnd_),
+    seed_(pim.seed_),
+    drawMatters_(false),
+    drawStep_(-1),
+    drawsInStep_(),
     openPatch_(),
     slotOfPatch_(),
     snowPatches_(),
@@ -1368,8 +1389,29 @@ bool Foam::SnowWallInteraction<CloudType>::impactSnow
     in.vn = Un > 0 ? Un : 0;
     in.vt = mag(Ut);
     in.tau_w = shearOn_ ? wallShearStress(pp, facei) : 0;
-    in.u = rnd_.sample01<scalar>();
-    if (in.u >= 1) in.u = 0;
+    if (drawMatters_)
+    {
+        // fixed by the parcel and its impact: (seed, origin processor and
+        // id, time index, impacts of the parcel before in this time step)
+        const label ti = this->owner().mesh().time().timeIndex();
+        if (ti != drawStep_)
+        {
+            drawsInStep_.clear();
+            drawStep_ = ti;
+        }
+        const unsigned long long key =
+            (static_cast<unsigned long long>(static_cast<unsigned int>(p.origProc())) << 32)
+          | static_cast<unsigned int>(p.origId());
+        const label k = drawsInStep_[key]++;
+        in.u = sww_uniform_hash
+        (
+            static_cast<unsigned long long>(seed_), p.origProc(), p.origId(), ti, k
+        );
+    }
+    else
+    {
+        in.u = 0.5;   // a sharp map: any u gives the same answer
+    }
 
     // the patch's own bare-wall regime (the main one or a wallRegimes entry's)
     const sww_model* bare = slotModel_[s];
@@ -1407,7 +1449,8 @@ bool Foam::SnowWallInteraction<CloudType>::impactSnow
         Pout<< "snowWallInteraction: impact patch " << pp.name() << " face "
             << facei << " x " << p.position() << " n " << nw << " U " << U
             << " Uwall " << Up << " d " << in.d << " vn " << in.vn << " vt " << in.vt
-            << " u " << in.u << " -> "
+            << " u " << in.u << " parcel " << p.origProc() << ':' << p.origId()
+            << " step " << this->owner().mesh().time().timeIndex() << " -> "
             << (
                    out.fate == SWW_STICK ? "stick"
                  : out.fate == SWW_BOUNCE ? "bounce" : "ripoff"
