@@ -12,7 +12,10 @@
  * same map with a synthetic one of snowregime map's default grid (46
  * diameters 10-100 um linear x 50 speeds 0.1-10 m/s log; p a logistic step
  * across the file's interface) against the sharp map, gates off: over the
- * impacts above and over impacts all inside the table. Exit 2 on bad input.
+ * impacts above and over impacts all inside the table. When the file has the
+ * kernel's rebound tables (snowregime map, issue 23), gates off with them
+ * against the classic rebound (Thornton / constant e_n, reboundTangential).
+ * Exit 2 on bad input.
  */
 #include "sww.h"
 
@@ -198,6 +201,18 @@ int main(int argc, char **argv)
         t = run(m, in, n, reps, f);
         printf("regime gate (%zu x %zu): %6.1f ns/call  (stick %ld bounce %ld ripoff %ld)\n", nvt, nvn,
                t, f[0], f[1], f[2]);
+    }
+    size_t rd, rv, rt;
+    if (sww_rebound_table(m, &rd, &rv, &rt)) {
+        sww_set_tangential_off(m);
+        sww_set_shear_off(m);
+        sww_set_rebound_model(m, SWW_REBOUND_CLASSIC);
+        const double tc = run(m, in, n, reps, f);
+        sww_set_rebound_model(m, SWW_REBOUND_TABLE);
+        t = run(m, in, n, reps, f);
+        printf("rebound, gates off: classic %6.1f ns/call, kernel table %zu x %zu x %zu %6.1f ns/call "
+               "(bounce %ld of %ld)\n", tc, rt, rd, rv, t, f[1], n);
+        sww_set_rebound_model(m, SWW_REBOUND_AUTO);
     }
     free(in);
     sww_free(m);

@@ -312,10 +312,13 @@ static int write_map_files(swt_outset *os, const char *sfx, const sr_mapres *r, 
     if (r->fit_ok) {
         snprintf(name, sizeof name, "regime%s.coeffs", sfx);
         if (!(f = swt_outset_open(os, name, err, errlen))) return -1;
-        if (r->mp->points > 0)
-            swt_coeffs_write_rough(f, &r->fit, p, r->mp, label);
-        else
-            swt_coeffs_write(f, &r->fit, p, r->mp->g.dmin, r->mp->g.dmax, label);
+        /* the kernel's e_n(d, v_n) of this map's bouncing points (issue 23) */
+        swt_rebound rb;
+        if (swt_rebound_init(&rb, r->mp, NULL, 1, err, errlen) != 0) return -1;
+        if (swt_rebound_layer(&rb, 0, r->mp, err, errlen) != 0) { swt_rebound_free(&rb); return -1; }
+        swt_coeffs_write_all(f, &r->fit, p, r->mp->g.dmin, r->mp->g.dmax, label, NULL,
+                             r->mp->points > 0 ? r->mp : NULL, &rb);
+        swt_rebound_free(&rb);
     }
     if (r->contours) {
         if (!(f = swt_outset_open(os, "contours.csv", err, errlen))) return -1;
@@ -463,6 +466,8 @@ int sr_cmd_map(int argc, char **argv)
      * combined regime.coeffs with the d_crit(v_n, v_t) table */
     const int oblique = axis && !axis_angle && naxis >= 2 && axis[0] == 0.0;
     swt_fit fit0;
+    swt_rebound rb0;                 /* the kernel's rebound over (v_t, d, v_n) */
+    memset(&rb0, 0, sizeof rb0);
     int have_fit0 = 0;
     double *vn0 = NULL, d0min = 0.0, d0max = 0.0;
     int nvn0 = 0;
@@ -509,6 +514,9 @@ int sr_cmd_map(int argc, char **argv)
         sr_mapres r;
         if (compute_map(m, &mo, &o, s.threads, &r, err, sizeof err) != 0) {
             rc = sr_usage_error(cmd, err);
+        } else if (oblique && ((k == 0 && swt_rebound_init(&rb0, r.mp, axis, naxis, err, sizeof err) != 0)
+                               || swt_rebound_layer(&rb0, k, r.mp, err, sizeof err) != 0)) {
+            rc = sr_fail(cmd, err);
         } else if (!r.fit_ok && !axis) {
             rc = sr_fail(cmd, r.fit_err);
         } else if (write_map_files(os, sfx, &r, &p, what, mo.plot, s.threads, err, sizeof err) != 0) {
@@ -581,7 +589,7 @@ int sr_cmd_map(int argc, char **argv)
                 if (!f) {
                     rc = sr_fail(cmd, err);
                 } else {
-                    swt_coeffs_write_ex(f, &fit0, &p, d0min, d0max, label, &ob);
+                    swt_coeffs_write_all(f, &fit0, &p, d0min, d0max, label, &ob, NULL, &rb0);
                     /* the v_t = 0 row against the fit it sits beside */
                     double dev = 0.0;
                     for (int j = 0; j < nvn0; j++)
@@ -601,6 +609,7 @@ int sr_cmd_map(int argc, char **argv)
         }
     }
     free(vn0);
+    swt_rebound_free(&rb0);
     if (rc == 0 && swt_outset_commit(os, err, sizeof err) != 0) rc = sr_fail(cmd, err);
     if (rc == 0) printf("written to %s/\n", mo.out);
     swt_outset_free(os);

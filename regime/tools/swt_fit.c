@@ -151,18 +151,25 @@ void swt_coeffs_write(FILE *fp, const swt_fit *f, const swr_params *p, double dm
 
 static void coeffs_write(FILE *fp, const swt_fit *f, const swr_params *p, double dmin,
                          double dmax, const char *label, const swt_oblique *ob,
-                         const swt_map *mp);
+                         const swt_map *mp, const swt_rebound *rb);
+
+void swt_coeffs_write_all(FILE *fp, const swt_fit *f, const swr_params *p, double dmin,
+                          double dmax, const char *label, const swt_oblique *ob,
+                          const swt_map *rough, const swt_rebound *rb)
+{
+    coeffs_write(fp, f, p, dmin, dmax, label, ob, rough, rb);
+}
 
 void swt_coeffs_write_ex(FILE *fp, const swt_fit *f, const swr_params *p, double dmin,
                          double dmax, const char *label, const swt_oblique *ob)
 {
-    coeffs_write(fp, f, p, dmin, dmax, label, ob, NULL);
+    coeffs_write(fp, f, p, dmin, dmax, label, ob, NULL, NULL);
 }
 
 void swt_coeffs_write_rough(FILE *fp, const swt_fit *f, const swr_params *p, const swt_map *mp,
                             const char *label)
 {
-    coeffs_write(fp, f, p, mp->g.dmin, mp->g.dmax, label, NULL, mp);
+    coeffs_write(fp, f, p, mp->g.dmin, mp->g.dmax, label, NULL, mp, NULL);
 }
 
 static void write_list(FILE *fp, const char *key, const double *x, size_t n)
@@ -175,7 +182,7 @@ static void write_list(FILE *fp, const char *key, const double *x, size_t n)
 
 static void coeffs_write(FILE *fp, const swt_fit *f, const swr_params *p, double dmin,
                          double dmax, const char *label, const swt_oblique *ob,
-                         const swt_map *mp)
+                         const swt_map *mp, const swt_rebound *rb)
 {
     const double Es = swp_effective_modulus(p->E, p->nu, p->E_wall, p->nu_wall);
     fprintf(fp, "// regime.coeffs - stick/bounce interface of snowregime map (snowwall 0.1)\n");
@@ -240,5 +247,7 @@ static void coeffs_write(FILE *fp, const swt_fit *f, const swr_params *p, double
         fprintf(fp, ");\n");
         fprintf(fp, "    %-17s %d;\n", "probabilityPoints", mp->points);
     }
+    if (rb && swt_rebound_complete(rb))
+        swt_rebound_write(fp, rb);
     fprintf(fp, "}\n");
 }

@@ -12,6 +12,7 @@
 #include "swr_params.h"
 #include "swt_map.h"
 #include "swt_oblique.h"
+#include "swt_rebound.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -48,6 +49,11 @@ void swt_coeffs_write_ex(FILE *fp, const swt_fit *f, const swr_params *p, double
  * table of the map (probabilityD/Vn/Stick/Points, doc/regime-coeffs.md). */
 void swt_coeffs_write_rough(FILE *fp, const swt_fit *f, const swr_params *p, const swt_map *mp,
                             const char *label);
+/* Everything: the oblique table (ob), a rough wall's probability table (rough)
+ * and the kernel's rebound tables (rb, issue 23), each NULL when absent. */
+void swt_coeffs_write_all(FILE *fp, const swt_fit *f, const swr_params *p, double dmin,
+                          double dmax, const char *label, const swt_oblique *ob,
+                          const swt_map *rough, const swt_rebound *rb);
 
 #ifdef __cplusplus
 }

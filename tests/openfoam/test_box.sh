@@ -46,6 +46,23 @@ deposit_sum() { # FIELDFILE -> sum(value * area) over the wall patch
     deposit_values "$1" wall | awk -v a="$face_area" '{ s += $1 * a } END { printf "%.12g", s }'
 }
 
+# counts by reason (issue 23) at t 0.1: the wall's 7 impacts are 3 stuck, 2 bounced by
+# the criterion (p2 40 um and p5 15 um), 1 by the tangential gate (p6, v_t 0.8 m/s), 1
+# ripped off (p7); one bounced parcel has escaped through the sides by then
+want_reasons="wall snow 7 3 2 1 1 0 0
+top escape 0 0 0 0 0 0 0
+sides escape 1 0 0 0 0 0 1
+total - 8 3 2 1 1 0 1"
+check_reasons() { # CASE [TIME]: reasons.dat of the write time as expected, adding up
+    local f="$1/postProcessing/kinematicCloud:snowWall/${2:-0.1}/reasons.dat"
+    [ -f "$f" ] || fail "no $f"
+    [ "$(grep -v '^#' "$f")" = "$want_reasons" ] || fail "reasons.dat: $(grep -v '^#' "$f" | tr '\n' '|') != $(echo "$want_reasons" | tr '\n' '|')"
+    awk '!/^#/ && $2 == "snow" && $3 != $4 + $5 + $6 + $7 + $8 { exit 1 }' "$f" \
+        || fail "reasons.dat: the counts by reason do not add up to the impacts"
+    ! ls "$1"/postProcessing/kinematicCloud:snowWall/*/.reasons.dat.tmp > /dev/null 2>&1 \
+        || fail "reasons.dat: a temporary left behind"
+}
+
 check_deposit() { # CASE: deposit at 0.1 sums to the expected mass
     local f="$1/0.1/kinematicCloud:snowDeposit" s
     [ -f "$f" ] || fail "no deposit field $f"
@@ -62,6 +79,11 @@ check_deposit "$tmp/serial"
 # p7 (0.1 m/s) is the one impact below vnMin
 summary="snowWall: patch wall: impacts 7, sticks 3, bounces 3, ripoffs 1, deposited mass [0-9.e-]* kg (1 impacts outside the fitted v_n range)"
 tail -n 40 "$tmp/serial/log.run" | grep -q "$summary" || fail "no per-patch summary in the log"
+check_reasons "$tmp/serial"
+tail -n 40 "$tmp/serial/log.run" | grep -q "snowWall: patch wall by reason: stuck 3, criterion 2, tangential 1, shear 1, probability 0, escaped 0" \
+    || fail "no counts by reason in the log"
+tail -n 40 "$tmp/serial/log.run" | grep -q "snowWall: total: impacts 8 by reason: stuck 3, criterion 2, tangential 1, shear 1, probability 0, escaped 1" \
+    || fail "no total by reason in the log"
 head -n 1 "$tmp/serial/postProcessing/kinematicCloud:snowWall/0/snowWall.dat" \
     | grep -q '^# time wall:impacts wall:sticks wall:bounces wall:ripoffs wall:depositedMass\[kg\]$' \
     || fail "time series header"
@@ -104,6 +126,7 @@ check_deposit "$tmp/par"
 diff <(deposit_values "$tmp/serial/0.1/kinematicCloud:snowDeposit" wall) \
      <(deposit_values "$tmp/par/0.1/kinematicCloud:snowDeposit" wall) > /dev/null \
     || fail "parallel deposit field differs from the serial one"
+check_reasons "$tmp/par"
 echo "parallel: ok ($(series_last "$tmp/par" 0))"
 
 # 3. restart: stop at 0.05 (2 sticks so far), continue to 0.1
@@ -119,6 +142,7 @@ check_deposit "$tmp/restart"
 diff <(deposit_values "$tmp/serial/0.1/kinematicCloud:snowDeposit" wall) \
      <(deposit_values "$tmp/restart/0.1/kinematicCloud:snowDeposit" wall) > /dev/null \
     || fail "restarted deposit field differs from the uninterrupted one"
+check_reasons "$tmp/restart"
 echo "restart: ok ($(series_last "$tmp/restart" 0.05))"
 
 # 3b. parallel restart: np 2 to 0.05, np 2 on to 0.1 (per-processor totals restored)
@@ -132,6 +156,7 @@ prep "$tmp/parRestart"
 check_series "$tmp/parRestart" 0.05
 check_deposit "$tmp/parRestart"
 tail -n 40 "$tmp/parRestart/log.run2" | grep -q "$summary" || fail "parallel restart: log summary"
+check_reasons "$tmp/parRestart"
 echo "parallel restart: ok ($(series_last "$tmp/parRestart" 0.05))"
 
 # 4. errors: each must stop the solver with a message naming what to fix
@@ -261,4 +286,23 @@ open(p, "w").write(s2)
 PY
 expect_fatal_io "$tmp/emptyPatches" "the patches list is empty: give every boundary patch a type"
 echo "unknown keys and empty lists: ok"
+
+# 6. the rebound (issue 23): `rebound table` needs the regime file's tables; a file with
+#    them bounces with them (the log says so), the same sticks and counts
+case_from_base "$tmp/rbNoTable"
+sed -i 's/^\( *\)tangentialGate { vtMax 0.5; }/&\n\1rebound table;/' "$tmp/rbNoTable/$cpr"
+expect_fatal_io "$tmp/rbNoTable" "rebound 'table': the regime map has no rebound table"
+case_from_base "$tmp/rbBad"
+sed -i 's/^\( *\)tangentialGate { vtMax 0.5; }/&\n\1rebound kernel;/' "$tmp/rbBad/$cpr"
+expect_fatal_io "$tmp/rbBad" "rebound 'kernel' is not auto, table or classic"
+case_from_base "$tmp/rbTable"
+sed -i 's/^}/    reboundD (1e-6 1e-4);\n    reboundVn (0.1 10);\n    reboundEn (0.5 0.5 0.5 0.5);\n}/' \
+    "$tmp/rbTable/constant/regime.coeffs"
+sed -i 's/^\( *\)tangentialGate { vtMax 0.5; }/&\n\1rebound table;/' "$tmp/rbTable/$cpr"
+(cd "$tmp/rbTable" && run log.run icoUncoupledKinematicParcelFoam)
+grep -q "regime .*e_n kernel table 2 x 2 (d 1e-06..0.0001 m, v_n 0.1..10 m/s), e_t 1;" "$tmp/rbTable/log.run" \
+    || fail "rbTable: the log does not describe the rebound table"
+check_series "$tmp/rbTable" 0
+echo "rebound: ok (table required, a bad word refused, a table used)"
+
 echo "PASS"

@@ -9,7 +9,8 @@
 # Also: the library registers the model for every cloud type of the stock v1912 Lagrangian
 # solvers (one typeName per parcel type; the stock runs of each family are in
 # test_stock_{mppic,reacting,colliding,spray}.sh; fireFoam's basicReactingCloud is the one
-# no stock case runs with an active cloud, so its registration is checked here only).
+# no stock case runs with an active cloud, so its registration is checked here only);
+# libparcelSplitting.so registers parcelSplitting for the same 8 (issue 23).
 set -euo pipefail
 # shellcheck source=common.sh
 . "$(dirname "$0")/common.sh"
@@ -29,6 +30,15 @@ if command -v nm > /dev/null; then
     done
     [ "$(grep -c . <<< "$syms")" = 8 ] || fail "expected 8 registrations, found: $syms"
     echo "registered for 8 parcel types (kinematic, colliding, MPPIC, thermo, reacting, reacting-multiphase and coal, heterogeneous reacting, spray)"
+    # parcelSplitting for the same 8 cloud types (issue 23)
+    psyms=$(nm -DC "$top/platforms/lib/libparcelSplitting.so" | grep 'Foam::ParcelSplitting<.*>::typeName$' || true)
+    for parcel in KinematicParcel CollidingParcel MPPICParcel ThermoParcel 'ReactingParcel<Foam::ThermoParcel' \
+        ReactingMultiphaseParcel ReactingHeterogeneousParcel SprayParcel; do
+        grep -qF "ParcelSplitting<Foam::KinematicCloud<Foam::Cloud<Foam::$parcel<" <<< "$psyms" \
+            || fail "libparcelSplitting.so registers no parcelSplitting for the parcel type $parcel"
+    done
+    [ "$(grep -c . <<< "$psyms")" = 8 ] || fail "expected 8 parcelSplitting registrations, found: $psyms"
+    echo "parcelSplitting registered for the same 8 parcel types"
 fi
 stock=/usr/share/doc/openfoam-examples/examples/IO/fileHandler
 [ -d "$stock" ] || { echo "SKIP: $stock not installed (openfoam-examples)"; exit 77; }

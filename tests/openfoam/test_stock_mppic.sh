@@ -11,6 +11,9 @@
 #    stochastic isotropy model off (each processor draws its own random numbers);
 # 4. injectionChannel (the case of issue 14 that stopped at start-up): the model loads
 #    and its first time step ends.
+# 5. parcelSplitting (issue 23: registered for every cloud type of the wrapper) in the
+#    MPPIC cloud: a region over the lower sixth of the column, factor 4: parcels are
+#    split, the mass balance still closes.
 # (The stock MPPICFoam cases injectionChannel and cyclone diverge within 5 time steps
 # with Debian's v1912 build, with or without this model: doc/wallmodel.md.)
 set -euo pipefail
@@ -78,4 +81,21 @@ grep -q "snowWallInteraction: regime 'test fixture" "$tmp/channel/log.run" || fa
 grep -q "Current number of parcels *= [1-9]" "$tmp/channel/log.run" || fail "injectionChannel: no parcel injected"
 check_balance "$tmp/channel/log.run" kinematicCloud
 echo "injectionChannel: model loaded, first step ended"
+
+# 5. parcelSplitting in the MPPIC cloud
+stock_copy lagrangian/MPPICFoam/column "$tmp/split"
+(cd "$tmp/split" && run log.blockMesh blockMesh)
+shorten "$tmp/split" 0.1
+dropin "$tmp/split" kinematicCloudProperties '"(top|bottom)" { type snow; }' '".*" { type none; }'
+foamDictionary -entry libs -set '("libsnowWallInteraction.so" "libparcelSplitting.so")' \
+    "$tmp/split/system/controlDict" > /dev/null
+foamDictionary -entry cloudFunctions -set \
+    '{ split { type parcelSplitting; regions ( low { box (-0.01 -0.01 0) (0.01 0.01 0.05); factor 4; } ); } }' \
+    "$tmp/split/$props" > /dev/null
+(cd "$tmp/split" && run log.run MPPICFoam)
+grep -q "parcelSplitting split: " "$tmp/split/log.run" || fail "split: no parcel split in the MPPIC cloud"
+nsplit=$(sed -n 's/.*parcelSplitting split: .*(totals \([0-9]*\), +\([0-9]*\)).*/\1 \2/p' "$tmp/split/log.run" | tail -1)
+[ -n "$nsplit" ] || fail "split: no totals in the log: $(grep parcelSplitting "$tmp/split/log.run" | tail -2)"
+check_balance "$tmp/split/log.run" kinematicCloud
+echo "parcelSplitting in the MPPIC cloud: ok (split, +copies: $nsplit)"
 echo PASS

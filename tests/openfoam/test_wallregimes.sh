@@ -94,7 +94,18 @@ check() {
     awk -v k="$4" -v n="$3" 'BEGIN { p = 0.3; exit !((k - n * p) ^ 2 <= 16 * n * p * (1 - p)) }' \
         || fail "$1: wall sticks $4 of $3: not 0.3 within 4 sigma"
     [ "$8 $9 ${10} ${11}" = "3 1 2 0" ] || fail "$1: top totals '$8 $9 ${10} ${11}' != '3 1 2 0'"
+    # counts by reason (issue 23): on wall every bounce is the draw's (p = 0.3
+    # everywhere), on top one each by the criterion and the gate
+    local r="$1/postProcessing/kinematicCloud:snowWall/0.1/reasons.dat"
+    [ "$(awk '$1 == "wall"' "$r")" = "wall snow $3 $4 0 0 0 $5 0" ] \
+        || fail "$1: reasons wall '$(awk '$1 == "wall"' "$r")' != 'wall snow $3 $4 0 0 0 $5 0'"
+    [ "$(awk '$1 == "top"' "$r")" = "top snow 3 1 1 1 0 0 0" ] \
+        || fail "$1: reasons top '$(awk '$1 == "top"' "$r")' != 'top snow 3 1 1 1 0 0 0'"
     echo "$4"
+}
+sum_reasons() { # CASE PATCH: impacts - (stuck + criterion + tangential + shear + probability)
+    awk -v p="$2" '$1 == p { print $3 - ($4 + $5 + $6 + $7 + $8) }' \
+        "$1/postProcessing/kinematicCloud:snowWall/0.1/reasons.dat"
 }
 
 # 1. serial
@@ -130,6 +141,7 @@ line=$(series_last "$tmp/buildup" 0)
 set -- $line
 [ "$2" = "$n_wall" ] && [ "$(($3 + $4))" = "$n_wall" ] && [ "$4" -gt 0 ] && [ "$4" -lt 150 ] \
     || fail "buildUp: wall totals '$2 $3 $4 $5', expected $n_wall impacts with 1-149 bounces"
+[ "$(sum_reasons "$tmp/buildup" wall)" = 0 ] || fail "buildUp: the counts by reason do not add up"
 [ "$7 $8 $9 ${10}" = "3 1 2 0" ] || fail "buildUp: top totals '$7 $8 $9 ${10}' != '3 1 2 0'"
 echo "buildUp over the entry's regime: ok (wall $3 sticks, $4 bounces)"
 
@@ -146,7 +158,49 @@ prep "$tmp/gate" oblique
 line=$(series_last "$tmp/gate" 0)
 set -- $line
 [ "$2 $3 $4 $5" = "60 0 60 0" ] || fail "gate: wall totals '$2 $3 $4 $5' != '60 0 60 0'"
+# the draw's candidates (u < 0.3) meet the gate: tangential; the others: the draw
+read -r tg pr < <(awk '$1 == "wall" { print $6, $8 }' "$tmp/gate/postProcessing/kinematicCloud:snowWall/0.1/reasons.dat")
+[ "$((tg + pr))" = 60 ] && [ "$tg" -gt 0 ] && [ "$pr" -gt 0 ] \
+    || fail "gate: reasons tangential $tg + probability $pr != 60 (or one of them 0)"
 echo "gate on the entry's regime: ok"
+
+# 3b. draws fixed by the parcel (issue 23): with DebugSwitches every impact's line names
+#     the parcel (origin processor:id), the time step and the fate. The uninterrupted
+#     serial run, a serial restart at 0.05, and the serial start continued on np 2 and on
+#     np 3 (decomposePar of the cloud at 0.05) give every parcel the same fate at the same
+#     step. (A run decomposed from the start draws other numbers: OpenFOAM numbers the
+#     parcels per processor at injection, so there a parcel is another key.)
+debug_on() { printf 'DebugSwitches { snowWallInteraction 1; }\n' >> "$1/system/controlDict"; }
+fates() { # LOG...: "origProc:origId step fate" of every impact on wall, sorted
+    grep -h "snowWallInteraction: impact patch wall " "$@" \
+        | sed -n 's/.* parcel \([0-9]*:[0-9]*\) step \([0-9]*\) -> \([a-z]*\)$/\1 \2 \3/p' | sort
+}
+half() { # CASE: run to 0.05 serially
+    (cd "$1" && foamDictionary -entry endTime -set 0.05 system/controlDict > /dev/null \
+        && run log.run1 icoUncoupledKinematicParcelFoam \
+        && foamDictionary -entry endTime -set 0.1 system/controlDict > /dev/null)
+}
+prep "$tmp/dserial"; debug_on "$tmp/dserial"
+(cd "$tmp/dserial" && run log.run icoUncoupledKinematicParcelFoam)
+fates "$tmp/dserial/log.run" > "$tmp/fates.serial"
+[ "$(wc -l < "$tmp/fates.serial")" = "$n_wall" ] || fail "draws: $(wc -l < "$tmp/fates.serial") impact lines, expected $n_wall"
+prep "$tmp/drestart"; debug_on "$tmp/drestart"; half "$tmp/drestart"
+(cd "$tmp/drestart" && run log.run2 icoUncoupledKinematicParcelFoam)
+fates "$tmp/drestart/log.run1" "$tmp/drestart/log.run2" > "$tmp/fates.restart"
+cmp -s "$tmp/fates.serial" "$tmp/fates.restart" \
+    || fail "draws: a restart changes $(diff "$tmp/fates.serial" "$tmp/fates.restart" | grep -c '^>') parcel fates"
+for np in 2 3; do
+    prep "$tmp/dnp$np"; debug_on "$tmp/dnp$np"; half "$tmp/dnp$np"
+    foamDictionary -entry numberOfSubdomains -set $np "$tmp/dnp$np/system/decomposeParDict" > /dev/null
+    foamDictionary -entry coeffs/n -set "($np 1 1)" "$tmp/dnp$np/system/decomposeParDict" > /dev/null
+    (cd "$tmp/dnp$np" && run log.decomposePar decomposePar -latestTime \
+        && run log.run2 mpirun -np $np --oversubscribe --output-filename out icoUncoupledKinematicParcelFoam -parallel)
+    # each rank's output in a file of its own (mpirun --output-filename): no interleaved lines
+    fates "$tmp/dnp$np/log.run1" $(find "$tmp/dnp$np/out" -name stdout) > "$tmp/fates.np$np"
+    cmp -s "$tmp/fates.serial" "$tmp/fates.np$np" \
+        || fail "draws: continued on np $np, $(diff "$tmp/fates.serial" "$tmp/fates.np$np" | grep -c .^>.) parcel fates differ: $(diff "$tmp/fates.serial" "$tmp/fates.np$np" | head -8 | tr "\n" "|")"
+done
+echo "draws fixed by the parcel: ok ($n_wall wall impacts: serial = restart = continued on np 2 = on np 3)"
 
 # 4. errors
 expect_fatal() { # CASE PATTERN

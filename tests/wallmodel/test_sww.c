@@ -1191,6 +1191,292 @@ static void loader_errors(void **s)
     sww_free(m);
 }
 
+
+/* the counter-based draw (issue 23): fixed by its key, uniform, uncorrelated */
+static void uniform_hash(void **s)
+{
+    (void)s;
+    assert_true(sww_uniform_hash(1234567, 0, 17, 40, 0) == sww_uniform_hash(1234567, 0, 17, 40, 0));
+    assert_true(sww_uniform_hash(1234567, 0, 17, 40, 0) != sww_uniform_hash(1234568, 0, 17, 40, 0));
+    assert_true(sww_uniform_hash(1, 0, 17, 40, 0) != sww_uniform_hash(1, 0, 17, 40, 1));
+    assert_true(sww_uniform_hash(1, 0, 17, 40, 0) != sww_uniform_hash(1, 1, 17, 40, 0));
+    /* 2e5 keys as a run walks them (parcel ids, steps, counts): in [0, 1), mean and
+     * 16-bin chi-square within their 4-sigma / 0.1 % bounds, neighbours uncorrelated */
+    const int n = 200000, nb = 16;
+    long bins[16] = { 0 };
+    double sum = 0.0, sxy = 0.0, prev = 0.5;
+    for (int i = 0; i < n; i++) {
+        const double u = sww_uniform_hash(1234567, i % 3, i / 3 % 1000, i / 3000, i % 2);
+        assert_true(u >= 0.0 && u < 1.0);
+        sum += u;
+        sxy += (u - 0.5) * (prev - 0.5);
+        prev = u;
+        bins[(int)(u * nb)]++;
+    }
+    assert_true(fabs(sum / n - 0.5) <= 4.0 * sqrt(1.0 / 12.0 / n));
+    double chi2 = 0.0;
+    for (int b = 0; b < nb; b++)
+        chi2 += (bins[b] - n / (double)nb) * (bins[b] - n / (double)nb) / (n / (double)nb);
+    assert_true(chi2 < 37.7);                       /* 15 degrees of freedom, p = 0.001 */
+    assert_true(fabs(sxy / n) <= 4.0 / 12.0 / sqrt((double)n));   /* lag-1 covariance */
+    /* extreme keys: still in [0, 1) */
+    assert_true(sww_uniform_hash(~0ULL, -1, -1, -1, -1) < 1.0);
+    assert_true(sww_uniform_hash(0, 0, 0, 0, 0) >= 0.0);
+}
+
+/* ------------------------------------------------------------- counts by reason (issue 23) */
+
+static void outcome_classes(void **s)
+{
+    (void)s;
+    sww_model *m = load_fixture(), *r = load_rough();
+    /* sharp map: stuck / criterion, never the draw, whatever u */
+    for (double u = 0.0; u < 1.0; u += 0.249) {
+        sww_outcome o = decide(m, 1e-5, 1.0, 0.0, 0.0, u);
+        assert_int_equal(sww_outcome_class(&o), SWW_CLASS_STUCK);
+        assert_false(o.by_draw);
+        o = decide(m, 5e-5, 1.0, 0.0, 0.0, u);
+        assert_int_equal(sww_outcome_class(&o), SWW_CLASS_CRITERION);
+        assert_false(o.by_draw);
+    }
+    /* the gates */
+    assert_int_equal(sww_set_tangential_gate(m, 0.5, 5e-5, 0.0), SWW_OK);
+    sww_outcome o = decide(m, 1e-5, 1.0, 2.0, 0.0, 0.5);
+    assert_int_equal(sww_outcome_class(&o), SWW_CLASS_TANGENTIAL);
+    sww_set_tangential_off(m);
+    assert_int_equal(sww_set_shear_gate_constant(m, 0.5), SWW_OK);
+    o = decide(m, 1e-5, 1.0, 0.0, 1.0, 0.5);
+    assert_int_equal(sww_outcome_class(&o), SWW_CLASS_SHEAR);
+    /* a rough wall's table: u >= p > 0 is the draw; p = 0 the criterion */
+    const double d = 1.3e-5, v = 2.2, p = p_expected(d, v);
+    o = decide(r, d, v, 0, 0, p);
+    assert_true(o.by_draw && o.fate == SWW_BOUNCE && o.reason == SWW_BY_CRITERION);
+    assert_int_equal(sww_outcome_class(&o), SWW_CLASS_PROBABILITY);
+    o = decide(r, d, v, 0, 0, nextafter(p, 0.0));
+    assert_int_equal(sww_outcome_class(&o), SWW_CLASS_STUCK);
+    o = decide(r, 8e-5, 4.0, 0, 0, 0.0);                  /* p = 0 at that node */
+    assert_int_equal(sww_outcome_class(&o), SWW_CLASS_CRITERION);
+    /* a stick candidate by the draw that a gate stops counts for the gate */
+    assert_int_equal(sww_set_tangential_gate(r, 0.5, 5e-5, 0.0), SWW_OK);
+    o = decide(r, d, v, 2.0, 0, 0.0);
+    assert_int_equal(sww_outcome_class(&o), SWW_CLASS_TANGENTIAL);
+    sww_set_tangential_off(r);
+    /* the blend: p in (0, 1) decided by u */
+    sww_impact in = { .d = 5e-5, .vn = 1.0, .vt = 0.0, .tau_w = 0.0, .u = 0.6 };
+    sww_set_shear_off(m);
+    assert_int_equal(sww_decide_blend(m, r, 0.5, &in, &o), SWW_OK);
+    if (o.fate != SWW_STICK)
+        assert_int_equal(sww_outcome_class(&o), o.p_stick > 0 ? SWW_CLASS_PROBABILITY
+                                                               : SWW_CLASS_CRITERION);
+    in.u = 0.0;
+    assert_int_equal(sww_decide_blend(m, r, 0.5, &in, &o), SWW_OK);
+    assert_int_equal(sww_outcome_class(&o), o.p_stick > 0 ? SWW_CLASS_STUCK : SWW_CLASS_CRITERION);
+    for (int c = 0; c < SWW_NCLASS; c++)
+        assert_string_not_equal(sww_class_name((sww_class)c), "?");
+    assert_string_equal(sww_class_name(SWW_CLASS_PROBABILITY), "probability");
+    sww_free(m);
+    sww_free(r);
+}
+
+/* ------------------------------------------------------------- rebound tables (issue 23) */
+
+/* The kernel's rebound as tables: d 20, 80 um (rows), v_n 0.5, 4 m/s (columns),
+ * with v_t layers 0, 1, 4 m/s for the 3-D case. */
+static const double RD[] = { 2e-5, 8e-5 }, RV[] = { 0.5, 4.0 };   /* v_t layers 0, 1, 4 m/s */
+static const double REN[] = { 0.10, 0.05, 0.20, 0.08,    /* v_t 0 */
+                              0.09, 0.04, 0.18, 0.07,    /* v_t 1 */
+                              0.05, 0.02, 0.10, 0.04 };  /* v_t 4 */
+static const double RET[] = { 0.70, 0.80, 0.60, 0.75,    /* v_t 0: not used */
+                              0.60, 0.70, 0.50, 0.65,
+                              0.80, 0.90, 0.85, 0.95 };
+
+static const char *RTABLE2 =
+    "    reboundD   (2e-5 8e-5);\n"
+    "    reboundVn  (0.5 4);\n"
+    "    reboundEn  (0.10 0.05 0.20 0.08);\n";
+static const char *RTABLE3 =
+    "    reboundD   (2e-5 8e-5);\n"
+    "    reboundVn  (0.5 4);\n"
+    "    reboundVt  (0 1 4);\n"
+    "    reboundEn  (0.10 0.05 0.20 0.08 0.09 0.04 0.18 0.07 0.05 0.02 0.10 0.04);\n"
+    "    reboundEt  (0.70 0.80 0.60 0.75 0.60 0.70 0.50 0.65 0.80 0.90 0.85 0.95);\n";
+
+/* The fixture with `extra` inside regime { }: the load's return code. */
+static int load_fixture_with(const char *extra, sww_model **mp, char *path)
+{
+    FILE *f = fopen(FIXTURE, "r");
+    assert_non_null(f);
+    static char text[8192];
+    const size_t n = fread(text, 1, sizeof text - 1, f);
+    fclose(f);
+    text[n] = '\0';
+    char *close = strrchr(text, '}');
+    assert_non_null(close);
+    static char out[16384];
+    snprintf(out, sizeof out, "%.*s%s}\n", (int)(close - text), text, extra);
+    return load_text(out, path, mp);
+}
+
+/* bilinear in (ln d, ln v_n) on layer k, written out: clamped to the nodes */
+static double rb_expected(const double *T, int k, double d, double v)
+{
+    double a = log(d / RD[0]) / log(RD[1] / RD[0]), b = log(v / RV[0]) / log(RV[1] / RV[0]);
+    a = a < 0 ? 0 : (a > 1 ? 1 : a);
+    b = b < 0 ? 0 : (b > 1 ? 1 : b);
+    const double *L = T + 4 * k;
+    return L[0] * (1 - a) * (1 - b) + L[1] * (1 - a) * b + L[2] * a * (1 - b) + L[3] * a * b;
+}
+
+static void rebound_tables(void **s)
+{
+    (void)s;
+    char path[256];
+    sww_model *m, *old = load_fixture();
+    assert_int_equal(load_fixture_with(RTABLE2, &m, path), SWW_OK);
+    size_t nd = 9, nv = 9, nt = 9;
+    assert_true(sww_rebound_table(m, &nd, &nv, &nt) && nd == 2 && nv == 2 && nt == 1);
+    assert_true(sww_rebound_uses_table(m));
+    /* an old file: no table, the classic rebound exactly as before */
+    assert_false(sww_rebound_table(old, &nd, &nv, &nt));
+    assert_true(nd == 0 && nv == 0 && nt == 0);
+    assert_false(sww_rebound_uses_table(old));
+    double en, et;
+    for (double v = 0.05; v < 30; v *= 1.7) {
+        sww_rebound(old, 5e-5, v, 1.0, &en, &et);
+        assert_true(en == sww_rebound_normal(old, v) && et == 1.0);
+        const sww_outcome o = decide(old, 5e-5, v, 1.0, 0, 0.5);
+        if (o.fate == SWW_BOUNCE)
+            assert_true(o.e_n == sww_rebound_normal(old, v) && o.e_t == 1.0);
+    }
+    char buf[512];
+    sww_describe(old, buf, sizeof buf);
+    assert_non_null(strstr(buf, "e_n Thornton(V_y 0.000144 m/s), e_t 1;"));
+    sww_describe(m, buf, sizeof buf);
+    assert_non_null(strstr(buf, "e_n kernel table 2 x 2 (d 2e-05..8e-05 m, v_n 0.5..4 m/s), e_t 1;"));
+    /* the nodes exactly, bilinear in (ln d, ln v_n) between them, clamped in d, below v_n */
+    for (int i = 0; i < 2; i++)
+        for (int j = 0; j < 2; j++) {
+            sww_rebound(m, RD[i], RV[j], 0.0, &en, &et);
+            assert_true(en == REN[2 * i + j] && et == 1.0);
+        }
+    const double ds[] = { 1e-7, 2e-5, 3.3e-5, 5e-5, 7.9e-5, 8e-5, 1e-3 };
+    const double vs[] = { 0.0, 1e-320, 0.1, 0.5, 0.77, 2.0, 3.99, 4.0 };
+    for (size_t i = 0; i < sizeof ds / sizeof *ds; i++)
+        for (size_t j = 0; j < sizeof vs / sizeof *vs; j++) {
+            sww_rebound(m, ds[i], vs[j], 0.3, &en, &et);
+            assert_true(fabs(en - rb_expected(REN, 0, ds[i], vs[j] > 0 ? vs[j] : 1e-300)) <= 1e-12);
+        }
+    /* above the last v_n node: Thornton's e_p carries it on (the fixture has yieldVelocity) */
+    for (double v = 4.5; v < 1e4; v *= 3.1) {
+        sww_rebound(m, 5e-5, v, 0.0, &en, &et);
+        const double ref = rb_expected(REN, 0, 5e-5, 4.0) * swp_cor_thornton(VY / v)
+                         / swp_cor_thornton(VY / 4.0);
+        ASSERT_REL(en, ref, 1e-12);
+    }
+    /* sww_decide's bounce and rip-off leave with these factors */
+    const sww_outcome ob = decide(m, 5e-5, 2.0, 0.7, 0, 0.5);
+    assert_int_equal(ob.fate, SWW_BOUNCE);
+    sww_rebound(m, 5e-5, 2.0, 0.7, &en, &et);
+    assert_true(ob.e_n == en && ob.e_t == et && fabs(en - rb_expected(REN, 0, 5e-5, 2.0)) <= 1e-12);
+    assert_int_equal(sww_set_shear_gate_constant(m, 0.5), SWW_OK);
+    const sww_outcome orip = decide(m, 5e-6, 1.0, 0.0, 1.0, 0.5);
+    assert_int_equal(orip.fate, SWW_RIPOFF);
+    assert_true(fabs(orip.e_n - rb_expected(REN, 0, 5e-6, 1.0)) <= 1e-12);
+    sww_set_shear_off(m);
+    /* reboundTangential stays the e_t of a table without reboundEt */
+    assert_int_equal(sww_set_rebound_tangential(m, 0.4), SWW_OK);
+    sww_rebound(m, 5e-5, 2.0, 0.7, &en, &et);
+    assert_true(et == 0.4);
+    /* the classic rebound as an option; the table required where there is none */
+    assert_int_equal(sww_set_rebound_model(m, SWW_REBOUND_CLASSIC), SWW_OK);
+    sww_rebound(m, 5e-5, 2.0, 0.7, &en, &et);
+    assert_true(en == sww_rebound_normal(m, 2.0) && et == 0.4);
+    assert_false(sww_rebound_uses_table(m));
+    assert_int_equal(sww_set_rebound_model(m, SWW_REBOUND_TABLE), SWW_OK);
+    assert_true(sww_rebound_uses_table(m));
+    assert_int_equal(sww_set_rebound_model(old, SWW_REBOUND_TABLE), SWW_EMISSING);
+    assert_non_null(strstr(sww_errmsg(old), "no rebound table"));
+    assert_int_equal(sww_set_rebound_model(old, 7), SWW_EINVAL);
+    /* a model set to `table` refuses a regime without the table at its commit */
+    assert_int_equal(sww_regime_load(m, FIXTURE), SWW_EMISSING);
+    assert_non_null(strstr(sww_errmsg(m), "rebound 'table' needs the kernel's rebound table"));
+    sww_free(m);
+
+    /* 3-D: layers by v_t */
+    assert_int_equal(load_fixture_with(RTABLE3, &m, path), SWW_OK);
+    assert_true(sww_rebound_table(m, &nd, &nv, &nt) && nd == 2 && nv == 2 && nt == 3);
+    sww_describe(m, buf, sizeof buf);
+    assert_non_null(strstr(buf, "e_n, e_t kernel table 3 x 2 x 2 (v_t 0..4 m/s"));
+    assert_null(strstr(buf, "e_t 1;"));
+    const double d = 3.3e-5, v = 1.3;
+    sww_rebound(m, d, v, 0.0, &en, &et);
+    assert_true(fabs(en - rb_expected(REN, 0, d, v)) <= 1e-12);
+    assert_true(fabs(et - rb_expected(RET, 1, d, v)) <= 1e-12);  /* v_t = 0: layer 1 (no use) */
+    sww_rebound(m, d, v, 0.25, &en, &et);                         /* linear in v_t below node 1 */
+    assert_true(fabs(en - (0.75 * rb_expected(REN, 0, d, v) + 0.25 * rb_expected(REN, 1, d, v))) <= 1e-12);
+    assert_true(fabs(et - rb_expected(RET, 1, d, v)) <= 1e-12);
+    sww_rebound(m, d, v, 2.0, &en, &et);                          /* linear in ln v_t: w = 1/2 */
+    assert_true(fabs(en - 0.5 * (rb_expected(REN, 1, d, v) + rb_expected(REN, 2, d, v))) <= 1e-12);
+    assert_true(fabs(et - 0.5 * (rb_expected(RET, 1, d, v) + rb_expected(RET, 2, d, v))) <= 1e-12);
+    sww_rebound(m, d, v, 40.0, &en, &et);                         /* clamped beyond the last */
+    assert_true(fabs(en - rb_expected(REN, 2, d, v)) <= 1e-12);
+    assert_true(fabs(et - rb_expected(RET, 2, d, v)) <= 1e-12);
+    /* never NaN, always in [0, 1]; NaN only for bad input */
+    srand48(23);
+    for (int k = 0; k < 20000; k++) {
+        const double dd = exp(-700.0 + 1400.0 * drand48()), vv = k % 7 ? exp(-745.0 + 1450.0 * drand48()) : 0.0;
+        const double tt = k % 5 ? exp(-745.0 + 1450.0 * drand48()) : 0.0;
+        sww_rebound(m, dd, vv, tt, &en, &et);
+        assert_true(en >= 0.0 && en <= 1.0 && et >= 0.0 && et <= 1.0);
+    }
+    sww_rebound(m, NAN, 1.0, 0.0, &en, &et);
+    assert_true(isnan(en) && isnan(et));
+    sww_rebound(m, 1e-5, -1.0, 0.0, &en, &et);
+    assert_true(isnan(en));
+    sww_rebound(m, 1e-5, 1.0, INFINITY, &en, &et);
+    assert_true(isnan(en));
+    sww_free(m);
+    sww_free(old);
+
+    /* malformed tables: a named error, the model not ready */
+    static const struct { const char *text; int rc; const char *msg; } bad[] = {
+        { "    reboundD (2e-5 8e-5);\n    reboundVn (0.5 4);\n", SWW_EMISSING, "missing 'reboundEn'" },
+        { "    reboundVn (0.5 4);\n    reboundEn (0.1 0.1 0.1 0.1);\n", SWW_EMISSING, "missing 'reboundD'" },
+        { "    reboundD (2e-5 8e-5);\n    reboundVn (0.5 4);\n    reboundEn (0.1 0.1 0.1);\n",
+          SWW_EINVAL, "key 'reboundEn': 3 values, but (no reboundVt) 1 x reboundD x reboundVn = 1 x 2 x 2 = 4" },
+        { "    reboundD (2e-5 8e-5);\n    reboundVn (0.5 4);\n    reboundEn (0.1 0.1 1.3 0.1);\n",
+          SWW_EINVAL, "key 'reboundEn': value 1.3 (entry 2) is not a rebound factor in [0, 1]" },
+        { "    reboundD (8e-5 2e-5);\n    reboundVn (0.5 4);\n    reboundEn (0.1 0.1 0.1 0.1);\n",
+          SWW_EINVAL, "key 'reboundD': value 2e-05 (entry 1) is not larger than 8e-05" },
+        { "    reboundD (2e-5 8e-5);\n    reboundVn (0 4);\n    reboundEn (0.1 0.1 0.1 0.1);\n",
+          SWW_EINVAL, "key 'reboundVn': value 0 (entry 0) must be > 0" },
+        { "    reboundD (2e-5 8e-5);\n    reboundVn (0.5 4);\n    reboundEn (0.1 0.1 0.1 0.1);\n"
+          "    reboundEt (0.1 0.1 0.1 0.1);\n", SWW_EMISSING, "key 'reboundEt' needs 'reboundVt'" },
+        { "    reboundD (2e-5 8e-5);\n    reboundVn (0.5 4);\n    reboundVt (0 1);\n"
+          "    reboundEn (0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1);\n", SWW_EMISSING, "missing 'reboundEt'" },
+        { "    reboundD (2e-5 8e-5);\n    reboundVn (0.5 4);\n    reboundVt (0.5 1);\n", SWW_EINVAL,
+          "key 'reboundVt': the first value is 0.5, it must be 0" },
+        { "    reboundD (2e-5 8e-5);\n    reboundVn (0.5 4);\n    reboundVt (0 1);\n"
+          "    reboundEn (0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1);\n    reboundEt (0.1 0.1 0.1 0.1);\n",
+          SWW_EINVAL, "key 'reboundEt': 4 values, but reboundVt x reboundD x reboundVn = 2 x 2 x 2 = 8" },
+        { "    reboundD (2e-5 8e-5);\n    reboundVn (0.5 4);\n    reboundEn (0.1 0.1 nan 0.1);\n",
+          SWW_EINVAL, "key 'reboundEn'" },
+        { "    reboundEn 0.1;\n", SWW_EINVAL, "key 'reboundEn': expects a list" },
+        { "    reboundEx (0.1 0.2);\n", SWW_EINVAL, "key 'reboundEx' is not a regime key" },
+    };
+    for (size_t k = 0; k < sizeof bad / sizeof *bad; k++) {
+        const int rc = load_fixture_with(bad[k].text, &m, path);
+        if (rc != bad[k].rc || !strstr(sww_errmsg(m), bad[k].msg) || !strstr(sww_errmsg(m), path))
+            fprintf(stderr, "case %zu: rc %d: %s\n", k, rc, sww_errmsg(m));
+        assert_int_equal(rc, bad[k].rc);
+        assert_non_null(strstr(sww_errmsg(m), bad[k].msg));
+        assert_non_null(strstr(sww_errmsg(m), path));
+        assert_null(strchr(sww_errmsg(m), '\n'));
+        assert_false(sww_ready(m));
+        sww_free(m);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1210,6 +1496,9 @@ int main(void)
         cmocka_unit_test(code_equals_file),
         cmocka_unit_test(thread_safe),
         cmocka_unit_test(loader_errors),
+        cmocka_unit_test(rebound_tables),
+        cmocka_unit_test(outcome_classes),
+        cmocka_unit_test(uniform_hash),
     };
     return cmocka_run_group_tests_name("wallmodel", tests, setup, teardown);
 }

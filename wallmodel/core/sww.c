@@ -30,7 +30,9 @@ static int is_list_key(const char *key)
     return !strcmp(key, "coeffs") || !strcmp(key, "vn") || !strcmp(key, "dCrit")
         || !strcmp(key, "obliqueVt") || !strcmp(key, "obliqueVn") || !strcmp(key, "obliqueDCrit")
         || !strcmp(key, "probabilityD") || !strcmp(key, "probabilityVn")
-        || !strcmp(key, "probabilityStick");
+        || !strcmp(key, "probabilityStick") || !strcmp(key, "reboundD")
+        || !strcmp(key, "reboundVn") || !strcmp(key, "reboundVt") || !strcmp(key, "reboundEn")
+        || !strcmp(key, "reboundEt");
 }
 
 int sww_fail(sww_model *m, int code, const char *fmt, ...)
@@ -77,6 +79,19 @@ static void probability_clear(sww_model *m)
     m->pr_ready = 0;
 }
 
+static void rebound_clear(sww_model *m)
+{
+    free(m->rb_lnd);
+    free(m->rb_lnv);
+    free(m->rb_vt);
+    free(m->rb_lnt);
+    free(m->rb_en);
+    free(m->rb_et);
+    m->rb_lnd = m->rb_lnv = m->rb_vt = m->rb_lnt = m->rb_en = m->rb_et = NULL;
+    m->rb_nd = m->rb_nvn = m->rb_nvt = m->rb_nen = m->rb_net = 0;
+    m->rb_ready = 0;
+}
+
 void sww_regime_clear(sww_model *m)
 {
     free(m->tab_lnv);
@@ -84,6 +99,7 @@ void sww_regime_clear(sww_model *m)
     m->tab_lnv = m->tab_lnd = NULL;
     oblique_clear(m);
     probability_clear(m);
+    rebound_clear(m);
     memset(m->num, 0, sizeof m->num);
     memset(m->has, 0, sizeof m->has);
     m->representation = m->basis = 0;
@@ -236,6 +252,62 @@ static int set_probability_part(sww_model *m, const char *key, const double *v, 
     return SWW_OK;
 }
 
+/* The rebound tables' lists (checked together at commit): reboundD and
+ * reboundVn > 0 and strictly increasing, kept as logarithms; reboundVt from 0
+ * strictly increasing (kept, and ln v_t of the non-zero nodes); reboundEn and
+ * reboundEt factors in [0, 1]. */
+static int set_rebound_part(sww_model *m, const char *key, const double *v, size_t n)
+{
+    const int which = !strcmp(key, "reboundD") ? 0 : !strcmp(key, "reboundVn") ? 1
+                    : !strcmp(key, "reboundVt") ? 2 : !strcmp(key, "reboundEn") ? 3 : 4;
+    const size_t nmax = which >= 3 ? SWW_MAX_REBOUND : SWW_MAX_TABLE;
+    if (n < 2 || n > nmax)
+        return sww_fail(m, SWW_EINVAL, "key '%s': %zu values, expected 2 to %zu", key, n, nmax);
+    for (size_t i = 0; i < n; i++) {
+        if (which >= 3 && !(v[i] >= 0.0 && v[i] <= 1.0))
+            return sww_fail(m, SWW_EINVAL, "key '%s': value %g (entry %zu) is not a rebound factor "
+                            "in [0, 1]", key, v[i], i);
+        if (which < 2 && !(v[i] > 0.0))
+            return sww_fail(m, SWW_EINVAL, "key '%s': value %g (entry %zu) must be > 0", key, v[i],
+                            i);
+        if (which < 3 && i > 0 && !(v[i] > v[i - 1]))
+            return sww_fail(m, SWW_EINVAL, "key '%s': value %g (entry %zu) is not larger than %g: "
+                            "the list must be strictly increasing", key, v[i], i, v[i - 1]);
+    }
+    if (which == 2 && v[0] != 0.0)
+        return sww_fail(m, SWW_EINVAL, "key 'reboundVt': the first value is %g, it must be 0 "
+                        "(the head-on layer)", v[0]);
+    double *p = malloc(n * sizeof *p), *q = NULL;
+    if (!p)
+        return sww_fail(m, SWW_ENOMEM, "key '%s': out of memory", key);
+    for (size_t i = 0; i < n; i++)
+        p[i] = which < 2 ? log(v[i]) : v[i];
+    if (which == 2) {
+        if (!(q = malloc(n * sizeof *q))) {
+            free(p);
+            return sww_fail(m, SWW_ENOMEM, "key '%s': out of memory", key);
+        }
+        q[0] = -INFINITY; /* not used: layer 0 is v_t = 0 */
+        for (size_t i = 1; i < n; i++)
+            q[i] = log(v[i]);
+        free(m->rb_lnt);
+        m->rb_lnt = q;
+    }
+    if (which < 2) {
+        m->rb_lo[which] = v[0];
+        m->rb_hi[which] = v[n - 1];
+    }
+    double **dst = which == 0 ? &m->rb_lnd : which == 1 ? &m->rb_lnv : which == 2 ? &m->rb_vt
+                 : which == 3 ? &m->rb_en : &m->rb_et;
+    size_t *cnt = which == 0 ? &m->rb_nd : which == 1 ? &m->rb_nvn : which == 2 ? &m->rb_nvt
+                : which == 3 ? &m->rb_nen : &m->rb_net;
+    free(*dst);
+    *dst = p;
+    *cnt = n;
+    m->rb_ready = 0;
+    return SWW_OK;
+}
+
 int sww_regime_list(sww_model *m, const char *key, const double *v, size_t n)
 {
     m->err[0] = '\0'; /* the message is of the last call only */
@@ -261,6 +333,8 @@ int sww_regime_list(sww_model *m, const char *key, const double *v, size_t n)
     if (!strcmp(key, "probabilityD") || !strcmp(key, "probabilityVn")
         || !strcmp(key, "probabilityStick"))
         return set_probability_part(m, key, v, n);
+    if (!strncmp(key, "rebound", 7) && is_list_key(key))
+        return set_rebound_part(m, key, v, n);
     for (int k = 0; k < K_NNUM; k++)
         if (!strcmp(key, num_keys[k]))
             return sww_fail(m, SWW_EINVAL, "key '%s': expects one number, got a list of %zu", key, n);
@@ -484,6 +558,43 @@ static int probability_commit(sww_model *m, const char *o)
     return SWW_OK;
 }
 
+/* The rebound tables at commit: reboundD, reboundVn, reboundEn together;
+ * reboundVt and reboundEt together; counts K x M x N; the Thornton factor at
+ * the last v_n node for the continuation above it. */
+static int rebound_commit(sww_model *m, const char *o)
+{
+    m->rb_ready = 0;
+    const int n_given = (m->rb_nd > 0) + (m->rb_nvn > 0) + (m->rb_nen > 0) + (m->rb_nvt > 0)
+                      + (m->rb_net > 0);
+    if (n_given == 0)
+        return SWW_OK;
+    if (!m->rb_nd || !m->rb_nvn || !m->rb_nen)
+        return sww_fail(m, SWW_EMISSING, "%s: the rebound table needs reboundD, reboundVn and "
+                        "reboundEn together (missing '%s')", o, !m->rb_nd ? "reboundD"
+                        : !m->rb_nvn ? "reboundVn" : "reboundEn");
+    if (m->rb_net && !m->rb_nvt)
+        return sww_fail(m, SWW_EMISSING, "%s: key 'reboundEt' needs 'reboundVt' (the tangential "
+                        "speeds of its layers)", o);
+    if (m->rb_nvt && !m->rb_net)
+        return sww_fail(m, SWW_EMISSING, "%s: key 'reboundVt' needs 'reboundEt' (missing "
+                        "'reboundEt')", o);
+    const size_t K = m->rb_nvt ? m->rb_nvt : 1, M = m->rb_nd, N = m->rb_nvn;
+    if (m->rb_nen != K * M * N)
+        return sww_fail(m, SWW_EINVAL, "%s: key 'reboundEn': %zu values, but %s reboundD x "
+                        "reboundVn = %zu x %zu x %zu = %zu", o, m->rb_nen, m->rb_nvt ?
+                        "reboundVt x" : "(no reboundVt) 1 x", K, M, N, K * M * N);
+    if (m->rb_net && m->rb_net != K * M * N)
+        return sww_fail(m, SWW_EINVAL, "%s: key 'reboundEt': %zu values, but reboundVt x reboundD "
+                        "x reboundVn = %zu x %zu x %zu = %zu", o, m->rb_net, K, M, N, K * M * N);
+    m->rb_ep_hi = 0.0;
+    if (!m->has[K_REBOUND] && m->has[K_YIELD] && m->rb_hi[1] > m->num[K_YIELD])
+        m->rb_ep_hi = swp_cor_thornton(m->num[K_YIELD] / m->rb_hi[1]);
+    if (!(m->rb_ep_hi > 0.0))
+        m->rb_ep_hi = 0.0;
+    m->rb_ready = 1;
+    return SWW_OK;
+}
+
 int sww_regime_commit(sww_model *m, const char *origin)
 {
     m->err[0] = '\0'; /* the message is of the last call only */
@@ -571,6 +682,13 @@ int sww_regime_commit(sww_model *m, const char *origin)
     const int rc_pr = probability_commit(m, o);
     if (rc_pr != SWW_OK)
         return rc_pr;
+    const int rc_rb = rebound_commit(m, o);
+    if (rc_rb != SWW_OK)
+        return rc_rb;
+    if (m->rb_model == SWW_REBOUND_TABLE && !m->rb_ready)
+        return sww_fail(m, SWW_EMISSING, "%s: rebound 'table' needs the kernel's rebound table "
+                        "(reboundD, reboundVn, reboundEn: make regime.coeffs with snowregime map)",
+                        o);
     if (m->vt_on == 2 && !m->ob_ready) {
         m->vt_on = 0;
         return sww_fail(m, SWW_EMISSING, "%s: the regime tangential gate needs the oblique table "
@@ -789,6 +907,117 @@ double sww_rebound_normal(const sww_model *m, double vn)
     return 1.0;
 }
 
+/* The cell of axis X (n >= 2 nodes, ln values; span [lo, hi] as values) that
+ * holds v and the weight of its upper node: clamped to the end nodes (v at or
+ * below lo, v = 0 included, takes the first node without a logarithm). */
+static size_t rb_cell(const double *X, size_t n, double v, double lo, double hi, double *t)
+{
+    if (!(v > lo)) {
+        *t = 0.0;
+        return 0;
+    }
+    if (!(v < hi)) {
+        *t = 1.0;
+        return n - 2;
+    }
+    const double x = log(v);
+    const size_t i = cell_of(X, 0, n - 1, x);
+    const double w = (x - X[i]) / (X[i + 1] - X[i]);
+    *t = w < 0.0 ? 0.0 : (w > 1.0 ? 1.0 : w);
+    return i;
+}
+
+/* Bilinear value of layer k of table T (K x M x N) in cell (i, j). */
+static double rb_layer(const double *T, size_t k, size_t M, size_t N, size_t i, double tx,
+                       size_t j, double ty)
+{
+    const double *P0 = T + (k * M + i) * N + j, *P1 = P0 + N;
+    return (1.0 - tx) * ((1.0 - ty) * P0[0] + ty * P0[1]) + tx * ((1.0 - ty) * P1[0] + ty * P1[1]);
+}
+
+/* One rebound table at (d, v_n, v_t) (see sww_rebound); et: the e_t table,
+ * whose layer 0 (v_t = 0) is not used. */
+static double rb_eval(const sww_model *m, const double *T, int et, double d, double vn, double vt)
+{
+    const size_t M = m->rb_nd, N = m->rb_nvn, K = m->rb_nvt ? m->rb_nvt : 1;
+    double tx, ty;
+    const size_t i = rb_cell(m->rb_lnd, M, d, m->rb_lo[0], m->rb_hi[0], &tx);
+    const size_t j = rb_cell(m->rb_lnv, N, vn, m->rb_lo[1], m->rb_hi[1], &ty);
+    size_t k0 = 0, k1 = 0;
+    double w = 0.0;
+    if (K > 1) {
+        const double *V = m->rb_vt;
+        if (!(vt > 0.0)) {
+            k0 = k1 = et ? 1 : 0;
+        } else if (vt < V[1]) {
+            /* between the head-on layer and the first oblique one: linear in v_t
+             * (ln 0 does not exist); e_t has no head-on value: layer 1 */
+            k0 = et ? 1 : 0;
+            k1 = 1;
+            w = vt / V[1];
+        } else if (!(vt < V[K - 1])) {
+            k0 = k1 = K - 1;
+        } else {
+            k0 = cell_of(m->rb_lnt, 1, K - 1, log(vt));
+            k1 = k0 + 1;
+            w = (log(vt) - m->rb_lnt[k0]) / (m->rb_lnt[k1] - m->rb_lnt[k0]);
+            w = w < 0.0 ? 0.0 : (w > 1.0 ? 1.0 : w);
+        }
+    }
+    double e = rb_layer(T, k0, M, N, i, tx, j, ty);
+    if (k1 != k0)
+        e += w * (rb_layer(T, k1, M, N, i, tx, j, ty) - e);
+    /* above the last v_n node: Thornton's plastic law carries e_n on */
+    if (!et && m->rb_ep_hi > 0.0 && vn > m->rb_hi[1])
+        e *= swp_cor_thornton(m->num[K_YIELD] / vn) / m->rb_ep_hi;
+    return e < 0.0 ? 0.0 : (e > 1.0 ? 1.0 : e);
+}
+
+int sww_rebound_uses_table(const sww_model *m)
+{
+    return m->rb_ready && m->rb_model != SWW_REBOUND_CLASSIC;
+}
+
+void sww_rebound(const sww_model *m, double d, double vn, double vt, double *e_n, double *e_t)
+{
+    if (!m->ready || isnan(d) || isnan(vn) || isnan(vt) || !(d > 0.0) || isinf(d)
+        || !(vn >= 0.0) || isinf(vn) || !(vt >= 0.0) || isinf(vt)) {
+        *e_n = *e_t = NAN;
+        return;
+    }
+    if (sww_rebound_uses_table(m)) {
+        *e_n = rb_eval(m, m->rb_en, 0, d, vn, vt);
+        *e_t = m->rb_net ? rb_eval(m, m->rb_et, 1, d, vn, vt) : m->e_t;
+    } else {
+        *e_n = sww_rebound_normal(m, vn);
+        *e_t = m->e_t;
+    }
+}
+
+int sww_rebound_table(const sww_model *m, size_t *nd, size_t *nvn, size_t *nvt)
+{
+    if (nd)
+        *nd = m->rb_ready ? m->rb_nd : 0;
+    if (nvn)
+        *nvn = m->rb_ready ? m->rb_nvn : 0;
+    if (nvt)
+        *nvt = m->rb_ready ? (m->rb_nvt ? m->rb_nvt : 1) : 0;
+    return m->rb_ready;
+}
+
+int sww_set_rebound_model(sww_model *m, int model)
+{
+    m->err[0] = '\0'; /* the message is of the last call only */
+    if (model != SWW_REBOUND_AUTO && model != SWW_REBOUND_TABLE && model != SWW_REBOUND_CLASSIC)
+        return sww_fail(m, SWW_EINVAL, "rebound model %d is not auto (0), table (1) or classic (2)",
+                        model);
+    if (model == SWW_REBOUND_TABLE && !m->rb_ready)
+        return sww_fail(m, SWW_EMISSING, "rebound 'table': the regime map has no rebound table "
+                        "(reboundD, reboundVn, reboundEn: make regime.coeffs with snowregime map)");
+    m->rb_model = model;
+    return SWW_OK;
+}
+
 double sww_vt_max(const sww_model *m, double d)
 {
     if (isnan(d) || !(d > 0.0) || isinf(d))
@@ -824,6 +1053,29 @@ double sww_vn_min(const sww_model *m) { return m->num[K_VNMIN]; }
 double sww_vn_max(const sww_model *m) { return m->num[K_VNMAX]; }
 const char *sww_label(const sww_model *m) { return m->label; }
 
+sww_class sww_outcome_class(const sww_outcome *o)
+{
+    if (o->fate == SWW_STICK)
+        return SWW_CLASS_STUCK;
+    if (o->by_draw)
+        return SWW_CLASS_PROBABILITY;
+    if (o->fate == SWW_RIPOFF)
+        return SWW_CLASS_SHEAR;
+    return o->reason == SWW_BY_TANGENTIAL ? SWW_CLASS_TANGENTIAL : SWW_CLASS_CRITERION;
+}
+
+const char *sww_class_name(sww_class c)
+{
+    switch (c) {
+    case SWW_CLASS_STUCK: return "stuck";
+    case SWW_CLASS_CRITERION: return "criterion";
+    case SWW_CLASS_TANGENTIAL: return "tangential";
+    case SWW_CLASS_SHEAR: return "shear";
+    case SWW_CLASS_PROBABILITY: return "probability";
+    default: return "?";
+    }
+}
+
 const char *sww_fate_name(sww_fate f)
 {
     switch (f) {
@@ -842,8 +1094,15 @@ void sww_describe(const sww_model *m, char *buf, size_t n)
         snprintf(buf, n, "snowWall: no regime map loaded");
         return;
     }
-    char reb[96], vt[128], sh[128];
-    if (m->has[K_REBOUND])
+    char reb[160], vt[128], sh[128];
+    if (sww_rebound_uses_table(m) && m->rb_nvt)
+        snprintf(reb, sizeof reb, "e_n, e_t kernel table %zu x %zu x %zu (v_t 0..%g m/s, d %g..%g "
+                 "m, v_n %g..%g m/s)", m->rb_nvt, m->rb_nd, m->rb_nvn, m->rb_vt[m->rb_nvt - 1],
+                 m->rb_lo[0], m->rb_hi[0], m->rb_lo[1], m->rb_hi[1]);
+    else if (sww_rebound_uses_table(m))
+        snprintf(reb, sizeof reb, "e_n kernel table %zu x %zu (d %g..%g m, v_n %g..%g m/s)",
+                 m->rb_nd, m->rb_nvn, m->rb_lo[0], m->rb_hi[0], m->rb_lo[1], m->rb_hi[1]);
+    else if (m->has[K_REBOUND])
         snprintf(reb, sizeof reb, "e_n %g", m->num[K_REBOUND]);
     else if (m->has[K_YIELD])
         snprintf(reb, sizeof reb, "e_n Thornton(V_y %g m/s)", m->num[K_YIELD]);
@@ -863,16 +1122,19 @@ void sww_describe(const sww_model *m, char *buf, size_t n)
                  sww_tau_crit(m, 5e-5));
     else
         snprintf(sh, sizeof sh, "off");
+    char et[48] = "";
+    if (!(sww_rebound_uses_table(m) && m->rb_net))
+        snprintf(et, sizeof et, ", e_t %g", m->e_t);
     char pr[192] = "";
     if (m->pr_ready)
         snprintf(pr, sizeof pr, "; stick probability table %zu x %zu (d %g..%g m, v_n %g..%g m/s; "
                  "outside: the interface)", m->pr_nd, m->pr_nvn, exp(m->pr_lnd[0]),
                  exp(m->pr_lnd[m->pr_nd - 1]), exp(m->pr_lnv[0]), exp(m->pr_lnv[m->pr_nvn - 1]));
     snprintf(buf, n, "'%s' %s, vn [%g, %g] m/s, d_crit(vnMin) %.4g m, d_crit(vnMax) %.4g m, "
-             "slopes %g/%g; %s, e_t %g; tangential gate %s; shear gate %s%s",
+             "slopes %g/%g; %s%s; tangential gate %s; shear gate %s%s",
              m->label, m->representation == 2 ? "table" : (m->basis == 2 ? "polynomial(linear)"
              : "polynomial(log)"), m->num[K_VNMIN], m->num[K_VNMAX], m->d_lo, m->d_hi,
-             m->num[K_SLOPELOW], m->num[K_SLOPEHIGH], reb, m->e_t, vt, sh, pr);
+             m->num[K_SLOPELOW], m->num[K_SLOPEHIGH], reb, et, vt, sh, pr);
 }
 
 /* ---------------------------------------------------------------- decide */
@@ -934,6 +1196,7 @@ int sww_decide(const sww_model *m, const sww_impact *in, sww_outcome *out)
     out->p_stick = stick_probability(m, in->d, in->vn, dc);
     out->reason = SWW_BY_CRITERION;
     int stick = in->u < out->p_stick;
+    out->by_draw = !stick && out->p_stick > 0.0;
     if (stick && m->vt_on == 1 && in->vt > sww_vt_max(m, in->d)) {
         stick = 0;
         out->reason = SWW_BY_TANGENTIAL;
@@ -953,8 +1216,7 @@ int sww_decide(const sww_model *m, const sww_impact *in, sww_outcome *out)
         if (in->tau_w >= tc) {
             out->fate = SWW_RIPOFF;
             out->reason = SWW_BY_SHEAR;
-            out->e_n = sww_rebound_normal(m, in->vn);
-            out->e_t = m->e_t;
+            sww_rebound(m, in->d, in->vn, in->vt, &out->e_n, &out->e_t);
             return SWW_OK;
         }
     }
@@ -963,10 +1225,30 @@ int sww_decide(const sww_model *m, const sww_impact *in, sww_outcome *out)
         out->e_n = out->e_t = 1.0;
     } else {
         out->fate = SWW_BOUNCE;
-        out->e_n = sww_rebound_normal(m, in->vn);
-        out->e_t = m->e_t;
+        sww_rebound(m, in->d, in->vn, in->vt, &out->e_n, &out->e_t);
     }
     return SWW_OK;
+}
+
+/* ---------------------------------------------------------------- draws */
+
+static unsigned long long mix64(unsigned long long z)
+{
+    z += 0x9e3779b97f4a7c15ULL;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+}
+
+double sww_uniform_hash(unsigned long long seed, long long a, long long b, long long c,
+                        long long k)
+{
+    unsigned long long h = mix64(seed);
+    h = mix64(h ^ (unsigned long long)a);
+    h = mix64(h ^ (unsigned long long)b);
+    h = mix64(h ^ (unsigned long long)c);
+    h = mix64(h ^ (unsigned long long)k);
+    return (double)(h >> 11) * 0x1.0p-53; /* [0, 1 - 2^-53] */
 }
 
 /* ---------------------------------------------------------------- build-up */
@@ -1027,12 +1309,12 @@ int sww_decide_blend(const sww_model *bare, const sww_model *covered, double w,
     const int use_cov = stick ? (pc > pb ? 1 : (pb > pc ? 0 : w >= 0.5))
                               : (pc < pb ? 1 : (pb < pc ? 0 : w >= 0.5));
     *out = use_cov ? oc : ob;
+    out->by_draw = !stick && p > 0.0;
     if (!stick && out->fate == SWW_STICK) {
         const sww_model *r = use_cov ? covered : bare;
         out->fate = SWW_BOUNCE;
         out->reason = SWW_BY_CRITERION;
-        out->e_n = sww_rebound_normal(r, in->vn);
-        out->e_t = r->e_t;
+        sww_rebound(r, in->d, in->vn, in->vt, &out->e_n, &out->e_t);
     }
     out->p_stick = p;
     out->d_crit = (1.0 - w) * ob.d_crit + w * oc.d_crit;

@@ -68,7 +68,24 @@ typedef struct {
     double e_t;      /* bounce / rip-off: v_t' = e_t v_t (1 for a stick)            */
     int range;       /* where v_n lies: 0 inside [vnMin, vnMax] (the fit), -1 below,
                         +1 above (the power-law extrapolation)                      */
+    int by_draw;     /* 1: the random number decided against a stick that had a
+                        probability > 0 (u >= p_stick > 0: a rough wall's table or a
+                        build-up blend); the fate and reason then say how it left */
 } sww_outcome;
+
+/* What decided an impact, for counts by reason (issue 23): each outcome is
+ * exactly one of these. */
+typedef enum {
+    SWW_CLASS_STUCK = 0,        /* stuck                                             */
+    SWW_CLASS_CRITERION = 1,    /* bounced: d > d_crit(v_n) (p_stick 0)              */
+    SWW_CLASS_TANGENTIAL = 2,   /* bounced by the tangential gate                    */
+    SWW_CLASS_SHEAR = 3,        /* ripped off by the shear gate                      */
+    SWW_CLASS_PROBABILITY = 4,  /* bounced by the probability draw (by_draw)         */
+    SWW_NCLASS = 5
+} sww_class;
+sww_class sww_outcome_class(const sww_outcome *o);
+/* "stuck", "criterion", "tangential", "shear", "probability" */
+const char *sww_class_name(sww_class c);
 
 typedef struct sww_model sww_model;
 
@@ -88,7 +105,7 @@ int sww_regime_load(sww_model *m, const char *path);
  *   maxResidual yieldVelocity reboundNormal gamma Estar rhoParticle mu obliqueSlide
  *   probabilityPoints
  * list keys: coeffs vn dCrit obliqueVt obliqueVn obliqueDCrit probabilityD
- *   probabilityVn probabilityStick;
+ *   probabilityVn probabilityStick reboundD reboundVn reboundVt reboundEn reboundEt;
  * word keys: representation basis label
  * An unknown key, or a key given as the wrong kind (a number for a list key, ...),
  * is SWW_EINVAL with a message naming it (a misspelt key is an error, not a silent
@@ -118,8 +135,19 @@ int sww_set_shear_gate_constant(sww_model *m, double tau_c);
  * missing: sliding ignored); roughness in (0, 1] multiplies the pull-off force. */
 int sww_set_shear_gate_adhesion(sww_model *m, double roughness);
 void sww_set_shear_off(sww_model *m);
-/* Tangential rebound factor e_t in [0, 1] (default 1). */
+/* Tangential rebound factor e_t in [0, 1] (default 1): the classic rebound's. */
 int sww_set_rebound_tangential(sww_model *m, double e_t);
+/* Which rebound a bounce / rip-off leaves with (issue 23):
+ *   SWW_REBOUND_AUTO (default): the kernel's tables (reboundEn, reboundEt) when the
+ *     regime has them, else the classic rebound;
+ *   SWW_REBOUND_TABLE: the tables (SWW_EMISSING, and the model unchanged, when the
+ *     regime has none; a later commit of a regime without them fails the same way);
+ *   SWW_REBOUND_CLASSIC: e_n Thornton e_p(yieldVelocity / v_n) or reboundNormal,
+ *     e_t the reboundTangential factor, as before issue 23.
+ * With the tables, e_t comes from reboundEt when the regime has it (a map made with
+ * --vt), else from the reboundTangential factor. */
+enum { SWW_REBOUND_AUTO = 0, SWW_REBOUND_TABLE = 1, SWW_REBOUND_CLASSIC = 2 };
+int sww_set_rebound_model(sww_model *m, int model);
 
 /* ---- use ------------------------------------------------------------------ */
 /* Decide one impact: p_stick from the map (the rough wall's probability table
@@ -155,6 +183,14 @@ double sww_cover_fraction(double mass_per_area, double cover_mass);
  * overflows). */
 double sww_monolayer_mass(double rho, double d);
 
+/* A uniform number in [0, 1) fixed by its key (issue 23): a counter-based
+ * hash (SplitMix64's finaliser chained over seed, a, b, c, k), 53 random bits;
+ * the same on every machine, processor and thread, so an impact's draw can be
+ * tied to the parcel (its origin processor and id), the time step and the
+ * impacts it made before in that step instead of to a random stream. */
+double sww_uniform_hash(unsigned long long seed, long long a, long long b, long long c,
+                        long long k);
+
 /* d_crit(v_n) [m]: the fit inside [vnMin, vnMax]; outside it the power law
  * d_crit(vn_end) (v_n/vn_end)^slope anchored at the range end; INFINITY for
  * v_n <= 0 and where the power law exceeds e^709 = 8e307 m (a subnormal v_n),
@@ -189,8 +225,25 @@ int sww_oblique_table(const sww_model *m, size_t *nvt, size_t *nvn);
  * probabilityStick: a rough wall); its sizes M (diameters) and N (speeds)
  * into *nd, *nvn (may be NULL; 0 without a table). */
 int sww_probability_table(const sww_model *m, size_t *nd, size_t *nvn);
-/* Normal rebound factor e_n(v_n) (Thornton with yieldVelocity, or the constant). */
+/* Normal rebound factor e_n(v_n) of the classic rebound (Thornton with
+ * yieldVelocity, or the constant reboundNormal; 1 without either). */
 double sww_rebound_normal(const sww_model *m, double vn);
+/* The rebound factors a bounce of (d, v_n, v_t) leaves with under the model's
+ * rebound choice (sww_set_rebound_model): the kernel's tables, interpolated
+ * bilinearly in (ln d, ln v_n) on each v_t layer and linearly in ln v_t between
+ * the non-zero layers (linearly in v_t between the layers 0 and 1 for e_n; e_t
+ * takes layer 1 there), clamped to the end nodes in d and v_t and below the first
+ * v_n node, continued above the last v_n node by Thornton's e_p(V_y/v_n) /
+ * e_p(V_y/v_N) when the regime has yieldVelocity (else clamped); or the classic
+ * rebound. In [0, 1], never NaN for finite d > 0, v_n >= 0, v_t >= 0 (NaN for
+ * other input or a model that is not ready). */
+void sww_rebound(const sww_model *m, double d, double vn, double vt, double *e_n, double *e_t);
+/* 1 when the regime has the kernel's rebound tables; their sizes M (diameters),
+ * N (normal speeds) and K (tangential speeds; 1 without reboundVt) into *nd,
+ * *nvn, *nvt (may be NULL; 0 without tables). */
+int sww_rebound_table(const sww_model *m, size_t *nd, size_t *nvn, size_t *nvt);
+/* 1 when a bounce uses the tables (AUTO with tables, or TABLE). */
+int sww_rebound_uses_table(const sww_model *m);
 /* Tangential limit vtMax(d) [m/s] of the constant gate (INFINITY when that
  * gate is off, or the regime gate is on: see sww_dcrit_oblique); NaN for a d
  * that is not finite and > 0. */

@@ -6,6 +6,7 @@
 
 #define SWW_MAX_COEFFS 16
 #define SWW_MAX_TABLE 4096
+#define SWW_MAX_REBOUND 65536   /* reboundEn / reboundEt: K x M x N values */
 #define SWW_ERRLEN 512
 #define SWW_LABELLEN 256
 
@@ -46,6 +47,16 @@ struct sww_model {
     double pr_x0[2], pr_inv[2];
     double pr_lo[2], pr_hi[2];     /* the span of each axis as given [m], [m/s] */
     int pr_ready;                  /* the table passed the commit checks */
+    /* the kernel's rebound of bouncing impacts (issue 23): reboundD, reboundVn,
+     * optional reboundVt, reboundEn (K x M x N, layers by v_t, rows by d; K = 1
+     * without reboundVt), reboundEt (K x M x N, with reboundVt only) */
+    double *rb_lnd, *rb_lnv, *rb_vt, *rb_lnt;  /* ln d, ln v_n, v_t, ln v_t (layers >= 1) */
+    double *rb_en, *rb_et;
+    size_t rb_nd, rb_nvn, rb_nvt, rb_nen, rb_net;
+    double rb_lo[2], rb_hi[2];     /* span of d and v_n as given [m], [m/s] */
+    double rb_ep_hi;               /* Thornton e_p at the last v_n node (0: no continuation) */
+    int rb_ready;                  /* the tables passed the commit checks */
+    int rb_model;                  /* SWW_REBOUND_AUTO / _TABLE / _CLASSIC */
     /* derived at commit */
     int ready;
     double d_lo, d_hi;             /* d_crit at vnMin, vnMax */

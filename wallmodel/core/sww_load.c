@@ -174,30 +174,52 @@ static int parse_entry(lexer *L, const char *key, int keyline, int use, int dept
         return next(L);
     }
     if (L->kind == T_LPAR) {
-        double vals[SWW_MAX_TABLE];
-        size_t n = 0;
+        /* the rebound tables (K x M x N values) may be longer than the others */
+        const size_t limit = use && (!strcmp(key, "reboundEn") || !strcmp(key, "reboundEt"))
+                           ? SWW_MAX_REBOUND : SWW_MAX_TABLE;
+        double *vals = NULL;
+        size_t n = 0, cap = 0;
         int line = L->tline;
+        rc = SWW_OK;
         for (;;) {
             if ((rc = next(L)))
-                return rc;
+                break;
             if (L->kind == T_RPAR)
                 break;
-            if (L->kind != T_WORD)
-                return expect_fail(L, key, "a number or ')'");
-            if (n >= SWW_MAX_TABLE)
-                return sww_fail(L->m, SWW_EPARSE, "%s:%d: key '%s': more than %d values", L->path,
-                                L->tline, key, SWW_MAX_TABLE);
-            if (!to_number(L->text, &vals[n]))
-                return sww_fail(L->m, SWW_EINVAL, "%s:%d: key '%s': value '%s' (entry %zu) is "
-                                "not a number", L->path, L->tline, key, L->text, n);
+            if (L->kind != T_WORD) {
+                rc = expect_fail(L, key, "a number or ')'");
+                break;
+            }
+            if (n >= limit) {
+                rc = sww_fail(L->m, SWW_EPARSE, "%s:%d: key '%s': more than %zu values", L->path,
+                              L->tline, key, limit);
+                break;
+            }
+            if (n == cap) {
+                const size_t nc = cap ? 2 * cap : 64;
+                double *p = realloc(vals, (nc < limit ? nc : limit) * sizeof *p);
+                if (!p) {
+                    rc = sww_fail(L->m, SWW_ENOMEM, "%s:%d: key '%s': out of memory", L->path,
+                                  L->tline, key);
+                    break;
+                }
+                vals = p;
+                cap = nc < limit ? nc : limit;
+            }
+            if (!to_number(L->text, &vals[n])) {
+                rc = sww_fail(L->m, SWW_EINVAL, "%s:%d: key '%s': value '%s' (entry %zu) is "
+                              "not a number", L->path, L->tline, key, L->text, n);
+                break;
+            }
             n++;
         }
-        if ((rc = next(L)))
+        if (rc == SWW_OK && (rc = next(L)) == SWW_OK && L->kind != T_SEMI)
+            rc = expect_fail(L, key, "';' after the list");
+        if (rc == SWW_OK && use && (rc = sww_regime_list(L->m, key, vals, n)))
+            rc = setter_fail(L, line, rc);
+        free(vals);
+        if (rc)
             return rc;
-        if (L->kind != T_SEMI)
-            return expect_fail(L, key, "';' after the list");
-        if (use && (rc = sww_regime_list(L->m, key, vals, n)))
-            return setter_fail(L, line, rc);
         return next(L);
     }
     if (L->kind == T_WORD || L->kind == T_STRING) {
@@ -272,6 +294,7 @@ int sww_regime_load(sww_model *m, const char *path)
     t->tau_c = m->tau_c;
     t->roughness = m->roughness;
     t->e_t = m->e_t;
+    t->rb_model = m->rb_model;
     const int rc = path ? regime_load(t, path) : sww_fail(t, SWW_EIO, "no file name");
     if (rc != SWW_OK) {
         snprintf(m->err, sizeof m->err, "%s", t->err);

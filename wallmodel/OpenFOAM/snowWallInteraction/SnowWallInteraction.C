@@ -271,7 +271,8 @@ inline void checkCoeffKeys(const dictionary& cd)
     (
         cd,
         {
-            "patches", "regime", "stuckParcels", "reboundTangential",
+            "patches", "regime", "stuckParcels", "reboundTangential", "rebound",
+            "randomSeed",
             "tangentialGate", "shearGate", "buildUp", "wallRegimes"
         },
         std::string(cd.dictName())
@@ -649,6 +650,25 @@ void Foam::SnowWallInteraction<CloudType>::applyGates
         cd
     );
 
+    // The rebound of a bounce (issue 23): the kernel's tables of the regime
+    // file when it has them (auto), required (table), or the classic
+    // Thornton / constant e_n with reboundTangential (classic)
+    {
+        const word rb(cd.lookupOrDefault<word>("rebound", "auto"));
+        const int code =
+            rb == "auto" ? SWW_REBOUND_AUTO
+          : rb == "table" ? SWW_REBOUND_TABLE
+          : rb == "classic" ? SWW_REBOUND_CLASSIC
+          : -1;
+        if (code < 0)
+        {
+            snowWallDetail::fatalAt(cd, cd.findEntry("rebound", keyType::LITERAL))
+                << "snowWallInteraction: rebound '" << rb
+                << "' is not auto, table or classic" << exit(FatalIOError);
+        }
+        check(m, sww_set_rebound_model(m, code), cd, cd.findEntry("rebound", keyType::LITERAL));
+    }
+
     if (cd.isDict("tangentialGate"))
     {
         const dictionary& g = cd.subDict("tangentialGate");
@@ -1015,6 +1035,7 @@ void Foam::SnowWallInteraction<CloudType>::setup()
     const polyBoundaryMesh& bm = this->owner().mesh().boundaryMesh();
     openPatch_.setSize(bm.size(), false);
     slotOfPatch_.setSize(bm.size(), -1);
+    groupOfPatch_.setSize(bm.size(), -1);
     DynamicList<label> snow;
     forAll(bm, patchi)
     {
@@ -1022,6 +1043,7 @@ void Foam::SnowWallInteraction<CloudType>::setup()
             !isA<wallPolyPatch>(bm[patchi])
          && !polyPatch::constraintType(bm[patchi].type());
         const label groupi = patchData_.applyToPatch(patchi);
+        groupOfPatch_[patchi] = groupi;
         if (groupi >= 0 && groupType_[groupi] == 4)
         {
             if (!isA<wallPolyPatch>(bm[patchi]))
@@ -1060,6 +1082,21 @@ void Foam::SnowWallInteraction<CloudType>::setup()
         Info<< endl;
     }
     setupWallRegimes(cd);
+    {
+        const label sd = cd.lookupOrDefault<label>("randomSeed", 1234567);
+        if (sd < 0)
+        {
+            snowWallDetail::fatalAt(cd, cd.findEntry("randomSeed", keyType::LITERAL))
+                << "snowWallInteraction: randomSeed " << sd << " must be >= 0"
+                << exit(FatalIOError);
+        }
+        seed_ = sd;
+        drawMatters_ = covered_ != nullptr;
+        forAll(slotModel_, si)
+        {
+            if (sww_probability_table(slotModel_[si], nullptr, nullptr)) drawMatters_ = true;
+        }
+    }
     nImpact_.setSize(n, 0);
     nStick_.setSize(n, 0);
     nBounce_.setSize(n, 0);
@@ -1081,6 +1118,42 @@ void Foam::SnowWallInteraction<CloudType>::setup()
         this->getModelProperty(pn + ":ripoffs", nRipoff0_[s]);
         this->getModelProperty(pn + ":outsideFitRange", nOutside0_[s]);
         this->getModelProperty(pn + ":depositedMass", massDeposit0_[s]);
+    }
+
+    // Counts by reason: the snow patches, then where parcels escape
+    {
+        DynamicList<label> rep(snowPatches_);
+        forAll(bm, patchi)
+        {
+            const label g = groupOfPatch_[patchi];
+            if
+            (
+                g >= 0
+             && (groupType_[g] == 3 || (groupType_[g] == 0 && openPatch_[patchi]))
+            )
+            {
+                rep.append(patchi);
+            }
+        }
+        reportPatches_.transfer(rep);
+    }
+    const label nc = SWW_NCLASS + 1;
+    reportOfPatch_.setSize(bm.size(), -1);
+    nReason_.setSize(nc*reportPatches_.size(), 0);
+    nReason0_.setSize(nc*reportPatches_.size(), 0);
+    forAll(reportPatches_, r)
+    {
+        reportOfPatch_[reportPatches_[r]] = r;
+        // absent before issue 23: the counts by reason then start here
+        labelList c0;
+        this->getModelProperty(bm[reportPatches_[r]].name() + ":byReason", c0);
+        if (c0.size() == nc)
+        {
+            forAll(c0, c)
+            {
+                nReason0_[nc*r + c] = c0[c];
+            }
+        }
     }
 
     char desc[1024];
@@ -1197,6 +1270,73 @@ void Foam::SnowWallInteraction<CloudType>::writeSeries
 }
 
 
+template<class CloudType>
+void Foam::SnowWallInteraction<CloudType>::writeReasons
+(
+    const labelList& ni,
+    const labelList& nc
+) const
+{
+    if (!Pstream::master())
+    {
+        return;
+    }
+    const Time& time = this->owner().mesh().time();
+    const fileName dir
+    (
+        time.globalPath()/"postProcessing"
+       /(this->owner().name() + ":snowWall")/time.timeName()
+    );
+    mkDir(dir);
+    const fileName final(dir/"reasons.dat"), tmp(dir/".reasons.dat.tmp");
+    const polyBoundaryMesh& bm = this->owner().mesh().boundaryMesh();
+    const label nk = SWW_NCLASS + 1;
+    {
+        OFstream os(tmp);
+        os  << "# snowWallInteraction: counts by reason at time " << time.timeName()
+            << " (cumulative since the start of the case, all processors; on a snow"
+            << " patch impacts = stuck + criterion + tangential + shear + probability,"
+            << " where parcels escape impacts = escaped)"
+            << nl << "# patch type impacts";
+        for (label c = 0; c < nk; ++c)
+        {
+            os  << ' ' << (c < SWW_NCLASS ? sww_class_name(sww_class(c)) : "escaped");
+        }
+        os  << nl;
+        labelList sum(nk + 1, 0);
+        forAll(reportPatches_, r)
+        {
+            // a snow patch's impacts (the core's counter); where parcels
+            // escape, the parcels that escaped there
+            const label imp = r < snowPatches_.size() ? ni[r] : nc[nk*r + SWW_NCLASS];
+            os  << bm[reportPatches_[r]].name() << ' '
+                << (r < snowPatches_.size() ? "snow" : "escape") << ' ' << imp;
+            sum[0] += imp;
+            for (label c = 0; c < nk; ++c)
+            {
+                os  << ' ' << nc[nk*r + c];
+                sum[c + 1] += nc[nk*r + c];
+            }
+            os  << nl;
+        }
+        os  << "total -";
+        forAll(sum, c) os << ' ' << sum[c];
+        os  << nl;
+        if (!os.good())
+        {
+            FatalErrorInFunction
+                << "snowWallInteraction: cannot write " << tmp << exit(FatalError);
+        }
+    }
+    if (!Foam::mv(tmp, final))
+    {
+        FatalErrorInFunction
+            << "snowWallInteraction: cannot rename " << tmp << " to " << final
+            << exit(FatalError);
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -1220,7 +1360,10 @@ Foam::SnowWallInteraction<CloudType>::SnowWallInteraction
     shearOn_(false),
     tauName_("wallShearStress"),
     rhoAir_(-1),
-    rnd_(1234567 + 7919*Pstream::myProcNo()),
+    seed_(1234567),
+    drawMatters_(false),
+    drawStep_(-1),
+    drawsInStep_(),
     openPatch_(),
     slotOfPatch_(),
     snowPatches_(),
@@ -1253,7 +1396,10 @@ Foam::SnowWallInteraction<CloudType>::SnowWallInteraction
     shearOn_(false),
     tauName_("wallShearStress"),
     rhoAir_(-1),
-    rnd_(pim.rnd_),
+    seed_(pim.seed_),
+    drawMatters_(false),
+    drawStep_(-1),
+    drawsInStep_(),
     openPatch_(),
     slotOfPatch_(),
     snowPatches_(),
@@ -1273,6 +1419,8 @@ Foam::SnowWallInteraction<CloudType>::SnowWallInteraction
     nRipoff0_ = pim.nRipoff0_;
     nOutside0_ = pim.nOutside0_;
     massDeposit0_ = pim.massDeposit0_;
+    nReason_ = pim.nReason_;
+    nReason0_ = pim.nReason0_;
     if (pim.depositPtr_.valid())
     {
         // an unregistered copy: the original owns the registered field
@@ -1344,7 +1492,7 @@ bool Foam::SnowWallInteraction<CloudType>::correct
     bool& keepParticle
 )
 {
-    const label groupi = patchData_.applyToPatch(pp.index());
+    const label groupi = groupOfPatch_[pp.index()];
     if (groupi < 0)
     {
         return false;
@@ -1363,6 +1511,10 @@ bool Foam::SnowWallInteraction<CloudType>::correct
     {
         case 0: // none: the cloud removes it on an open patch (counted)
         {
+            if (open)
+            {
+                ++nReason_[(SWW_NCLASS + 1)*reportOfPatch_[pp.index()] + SWW_NCLASS];
+            }
             return false;
         }
         case 1: // rebound, as localInteraction
@@ -1393,6 +1545,7 @@ bool Foam::SnowWallInteraction<CloudType>::correct
         }
         case 3: // escape
         {
+            ++nReason_[(SWW_NCLASS + 1)*reportOfPatch_[pp.index()] + SWW_NCLASS];
             if (!open) this->addToEscapedParcels(mp);
             keepParticle = false;
             p.active(false);
@@ -1459,8 +1612,29 @@ bool Foam::SnowWallInteraction<CloudType>::impactSnow
     in.vn = Un > 0 ? Un : 0;
     in.vt = mag(Ut);
     in.tau_w = shearOn_ ? wallShearStress(pp, facei) : 0;
-    in.u = rnd_.sample01<scalar>();
-    if (in.u >= 1) in.u = 0;
+    if (drawMatters_)
+    {
+        // fixed by the parcel and its impact: (seed, origin processor and
+        // id, time index, impacts of the parcel before in this time step)
+        const label ti = this->owner().mesh().time().timeIndex();
+        if (ti != drawStep_)
+        {
+            drawsInStep_.clear();
+            drawStep_ = ti;
+        }
+        const unsigned long long key =
+            (static_cast<unsigned long long>(static_cast<unsigned int>(p.origProc())) << 32)
+          | static_cast<unsigned int>(p.origId());
+        const label k = drawsInStep_[key]++;
+        in.u = sww_uniform_hash
+        (
+            static_cast<unsigned long long>(seed_), p.origProc(), p.origId(), ti, k
+        );
+    }
+    else
+    {
+        in.u = 0.5;   // a sharp map: any u gives the same answer
+    }
 
     // the patch's own bare-wall regime (the main one or a wallRegimes entry's)
     const sww_model* bare = slotModel_[s];
@@ -1489,6 +1663,8 @@ bool Foam::SnowWallInteraction<CloudType>::impactSnow
 
     ++nImpact_[s];
     if (out.range != 0) ++nOutside_[s];
+    // the slot is the report index of a snow patch (they come first)
+    ++nReason_[(SWW_NCLASS + 1)*s + sww_outcome_class(&out)];
 
     if (debug)
     {
@@ -1496,7 +1672,8 @@ bool Foam::SnowWallInteraction<CloudType>::impactSnow
         Pout<< "snowWallInteraction: impact patch " << pp.name() << " face "
             << facei << " x " << p.position() << " n " << nw << " U " << U
             << " Uwall " << Up << " d " << in.d << " vn " << in.vn << " vt " << in.vt
-            << " u " << in.u << " -> "
+            << " u " << in.u << " parcel " << p.origProc() << ':' << p.origId()
+            << " step " << this->owner().mesh().time().timeIndex() << " -> "
             << (
                    out.fate == SWW_STICK ? "stick"
                  : out.fate == SWW_BOUNCE ? "bounce" : "ripoff"
@@ -1570,6 +1747,32 @@ void Foam::SnowWallInteraction<CloudType>::info(Ostream& os)
     }
     writeSeries(ni, ns, nb, nr, md);
 
+    // counts by reason per reported patch and in total (issue 23)
+    const labelList nc(total(nReason_, nReason0_));
+    const label nk = SWW_NCLASS + 1;
+    labelList sum(nk, 0);
+    label sumImpacts = 0;
+    forAll(reportPatches_, r)
+    {
+        os  << "    snowWall: patch " << bm[reportPatches_[r]].name() << " by reason:";
+        for (label c = 0; c < nk; ++c)
+        {
+            os  << (c ? ", " : " ")
+                << (c < SWW_NCLASS ? sww_class_name(sww_class(c)) : "escaped")
+                << ' ' << nc[nk*r + c];
+            sum[c] += nc[nk*r + c];
+        }
+        os  << nl;
+        sumImpacts += r < snowPatches_.size() ? ni[r] : nc[nk*r + SWW_NCLASS];
+    }
+    os  << "    snowWall: total: impacts " << sumImpacts << " by reason:";
+    for (label c = 0; c < nk; ++c)
+    {
+        os  << (c ? ", " : " ")
+            << (c < SWW_NCLASS ? sww_class_name(sww_class(c)) : "escaped") << ' ' << sum[c];
+    }
+    os  << nl;
+
     if (covered_)
     {
         // faces bare / blending / covered, from the deposit field
@@ -1608,6 +1811,15 @@ void Foam::SnowWallInteraction<CloudType>::info(Ostream& os)
             this->setModelProperty(pn + ":outsideFitRange", no[s]);
             this->setModelProperty(pn + ":depositedMass", md[s]);
         }
+        forAll(reportPatches_, r)
+        {
+            this->setModelProperty
+            (
+                bm[reportPatches_[r]].name() + ":byReason",
+                labelList(SubList<label>(nc, nk, nk*r))
+            );
+        }
+        writeReasons(ni, nc);
     }
 }
 

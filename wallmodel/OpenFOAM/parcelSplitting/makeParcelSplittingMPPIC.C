@@ -1,0 +1,5 @@
+/* parcelSplitting for basicKinematicMPPICCloud (MPPICFoam). */
+#include "basicKinematicMPPICCloud.H"
+#include "ParcelSplitting.H"
+
+makeCloudFunctionObjectType(ParcelSplitting, basicKinematicMPPICCloud);

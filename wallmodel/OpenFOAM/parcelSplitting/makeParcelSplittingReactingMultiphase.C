@@ -1,0 +1,5 @@
+/* parcelSplitting for basicReactingMultiphaseCloud (reactingParcelFoam, simpleReactingParcelFoam; coalChemistryFoam's coalCloud shares the parcel type). */
+#include "basicReactingMultiphaseCloud.H"
+#include "ParcelSplitting.H"
+
+makeCloudFunctionObjectType(ParcelSplitting, basicReactingMultiphaseCloud);
