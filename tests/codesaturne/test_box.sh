@@ -11,7 +11,9 @@
 #  1. the run: 7 impacts, 3 sticks, 3 bounces, 1 rip-off, 3 x 920 pi/6 (10 um)^3 kg
 #     deposited, in the listing and in the counts CSV; the deposit CSV holds that
 #     mass on three faces; the particles still in flight are where their
-#     rebound takes them (p5: e_n v_n over 0.09 s);
+#     rebound takes them (p2, p3, p5: e_n v_n times the time since the impact),
+#     also when the step of the impact starts in the next layer of cells (p2 at
+#     8 m/s, SWCS_BOX=fast), and the tracking never repositions one;
 #  2. with OpenFOAM and the wrapper built: the OpenFOAM box run with the wrapper's
 #     per-impact lines; every impact the same in both codes (time, point, d, v_n,
 #     v_t, fate), the deposit per wall face the same (1e-9), and the particles in
@@ -98,6 +100,17 @@ done
 [ "$(grep -c '^box particle ' "$run/listing")" = 3 ] || fail "not 3 particles in flight at the end"
 grep -q 'repositioned [1-9]' "$run/listing" && fail "a particle was repositioned by the tracking"
 echo "run: ok ($summary)"
+
+# 1b. a bounce in a step that starts a cell above the wall's cells: p2 at 8 m/s from
+#     y = 0.07 m hits the wall 0.07 / 8 s after the start (5 ms), halfway through a
+#     step that begins at y = 0.03 m; at 0.105 s it is e_n(8 m/s) 8 m/s x 0.09125 s up
+solve fast SWCS_BOX=fast || fail "the run with p2 at 8 m/s"
+line=$(grep '^box particle p2 ' "$case_dir/RESU/fast/listing")
+yp=$(echo "$line" | awk '{ print $6 }'); vp=$(echo "$line" | awk '{ print $10 }')
+close "$yp" "$(awk -v v="$vp" 'BEGIN { printf "%.12g", v * 0.09125 }')" 1e-6 \
+    || fail "fast p2 at y $yp after its rebound at $vp m/s, expected $vp x 0.09125 s"
+echo "$line" | grep -q 'repositioned 0$' || fail "fast p2 repositioned by the tracking: $line"
+echo "bounce across cells: ok (p2 at y $yp m)"
 
 # --- 2. impact by impact against OpenFOAM -----------------------------------------
 if [ -x /usr/bin/icoUncoupledKinematicParcelFoam ] && [ -f "$top/platforms/lib/libsnowWallInteraction.so" ]; then
