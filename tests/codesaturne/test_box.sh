@@ -14,6 +14,8 @@
 #     rebound takes them (p2, p3, p5: e_n v_n times the time since the impact),
 #     also when the step of the impact starts in the next layer of cells (p2 at
 #     8 m/s, SWCS_BOX=fast), and the tracking never repositions one;
+#     the same on 2 MPI ranks (counts summed over the ranks, the deposit per face
+#     from the per-rank CSV files);
 #  2. with OpenFOAM and the wrapper built: the OpenFOAM box run with the wrapper's
 #     per-impact lines; every impact the same in both codes (time, point, d, v_n,
 #     v_t, fate), the deposit per wall face the same (1e-9), and the particles in
@@ -84,6 +86,15 @@ head -1 "$dep" | grep -q '^face,zone,x,y,z,area_m2,deposit_kg,deposit_kg_m2$' ||
 s=$(awk -F, 'NR > 1 { s += $7 } END { printf "%.12g", s }' "$dep")
 close "$s" "$want_mass" || fail "deposit CSV sums to $s kg, expected $want_mass"
 ls "$run"/snowwall-*.tmp > /dev/null 2>&1 && fail "temporary CSV files left"
+# the deposit as a boundary field (swcs_deposit_field) in the EnSight output
+# (EnSight Gold C binary: 80-byte description, "part", its number, "quad4" and one
+# float32 per boundary face: 96 here); it sums to 3 x the deposit of one face
+ens=$(ls "$run"/postprocessing/results_boundary.snowwall_deposit.* 2> /dev/null | tail -1)
+[ -n "$ens" ] || fail "no snowwall_deposit field in the boundary post-processing output"
+s=$(od -A n -j 244 -t f4 -v "$ens" | awk '{ for (i = 1; i <= NF; i++) { s += $i; n++ } } END { printf "%d %.9g", n, s }')
+[ "${s% *}" = 96 ] || fail "$ens: ${s% *} face values, expected 96"
+close "${s#* }" "$(awk -v m="$want_mass" 'BEGIN { printf "%.12g", m / 6.25e-4 }')" 1e-6 \
+    || fail "$ens: the field sums to ${s#* } kg/m2, expected 3 x 920 pi/6 (10 um)^3 / 6.25e-4 m2"
 # p5 (15 um, 2 m/s) bounced at t = 0.01 s with e_n(2 m/s) of the fixture: at 0.1 s it
 # is e_n * 2 * 0.09 m above the wall
 yp5=$(grep '^box particle p5 ' "$run/listing" | awk '{ print $6 }')
@@ -100,6 +111,28 @@ done
 [ "$(grep -c '^box particle ' "$run/listing")" = 3 ] || fail "not 3 particles in flight at the end"
 grep -q 'repositioned [1-9]' "$run/listing" && fail "a particle was repositioned by the tracking"
 echo "run: ok ($summary)"
+
+# 1a. the same run on 2 MPI ranks: the same totals (summed over the ranks), the
+#     deposit per face the same (one CSV per rank, faces by their global number)
+mpi=$(command -v mpiexec.openmpi || command -v mpiexec || true)
+if [ -n "$mpi" ]; then
+    cp -r "$case_dir/RESU/base" "$case_dir/RESU/np2"
+    (cd "$case_dir/RESU/np2" && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1 \
+        "$mpi" -n 2 --oversubscribe ./cs_solver --mpi > log.solver 2>&1) \
+        || { tail -20 "$case_dir/RESU/np2/log.solver" >&2; fail "the box run on 2 ranks"; }
+    [ "$(grep '^SnowWall: zone wall (snow):' "$case_dir/RESU/np2/listing" | tail -1)" = "$summary" ] \
+        || fail "np 2: '$(grep '^SnowWall: zone wall (snow):' "$case_dir/RESU/np2/listing" | tail -1)' != serial '$summary'"
+    cmp -s <(cut -d, -f3- "$counts") <(cut -d, -f3- "$case_dir/RESU/np2/snowwall-counts-000021.csv") \
+        || fail "np 2: the counts CSV differs from the serial one"
+    [ -f "$case_dir/RESU/np2/snowwall-deposit-000021.r1.csv" ] || fail "np 2: no deposit CSV of rank 1"
+    cmp -s <(tail -n +2 "$dep" | cut -d, -f2- | sort) \
+           <(tail -q -n +2 "$case_dir"/RESU/np2/snowwall-deposit-000021.r*.csv | cut -d, -f2- | sort) \
+        || fail "np 2: the deposit per face differs from the serial one"
+    n1=$(tail -n +2 "$case_dir/RESU/np2/snowwall-deposit-000021.r1.csv" | awk -F, '$7 > 0' | wc -l)
+    echo "np 2: ok (the same counts and deposit; rank 1 holds $n1 of the 3 snowy faces)"
+else
+    echo "NOTE: no mpiexec: the 2-rank run not done"
+fi
 
 # 1b. a bounce in a step that starts a cell above the wall's cells: p2 at 8 m/s from
 #     y = 0.07 m hits the wall 0.07 / 8 s after the start (5 ms), halfway through a

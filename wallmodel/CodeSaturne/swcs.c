@@ -24,6 +24,8 @@
 #include "cs_parall.h"
 #include "cs_parameters.h"
 #include "cs_physical_constants.h"
+#include "cs_post.h"
+#include "cs_mesh_location.h"
 #include "cs_random.h"
 #include "cs_time_step.h"
 
@@ -234,6 +236,26 @@ static void freeze(void)
     _s.frozen = 1;
 }
 
+void swcs_deposit_field(void)
+{
+    cs_field_t *f = cs_field_find_or_create(SWCS_DEPOSIT_FIELD,
+                                            CS_FIELD_INTENSIVE | CS_FIELD_POSTPROCESS,
+                                            CS_MESH_LOCATION_BOUNDARY_FACES, 1, false);
+    cs_field_set_key_int(f, cs_field_key_id("post_vis"), CS_POST_ON_LOCATION);
+}
+
+/* the deposit per area into the field, when the case made it */
+static void fill_field(void)
+{
+    cs_field_t *f = cs_field_by_name_try(SWCS_DEPOSIT_FIELD);
+    if (!f || !f->val) return;
+    const cs_lnum_t nf = cs_glob_mesh->n_b_faces;
+    const cs_real_t *area = cs_glob_mesh_quantities->b_face_surf;
+    const double *dep = swcs_book_deposit(_s.book);
+    for (cs_lnum_t i = 0; i < nf; ++i)
+        f->val[i] = area[i] > 0 ? dep[i] / area[i] : 0;
+}
+
 double swcs_wall_shear(cs_lnum_t face_id)
 {
     const cs_mesh_quantities_t *q = cs_glob_mesh_quantities;
@@ -363,6 +385,7 @@ void swcs_end_of_step(void)
 {
     if (!_s.book || !_s.model) return;   /* no set-up: nothing to report */
     freeze();
+    fill_field();
     const cs_time_step_t *ts = cs_glob_time_step;
     const int last = ts->nt_max > 0 && ts->nt_cur >= ts->nt_max;
     if (!(last || ts->nt_cur % _s.every == 0) || ts->nt_cur == _s.last_written) return;

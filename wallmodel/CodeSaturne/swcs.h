@@ -12,6 +12,8 @@
  *       swcs_output(10);                           CSV every 10 steps and at the end
  *   cs_lagr_user_boundary_interaction(...same arguments...):
  *       swcs_boundary_interaction(...the same arguments...);
+ *   cs_user_parameters(domain):                    (optional)
+ *       swcs_deposit_field();                      the deposit as a boundary field
  *   cs_user_extra_operations(domain):
  *       swcs_end_of_step();                        listing lines and CSV files
  *
@@ -42,6 +44,12 @@ void swcs_rebound_tangential(double e_t);
  * snowwall/deposit-<step>.csv in the run folder) every `every` time steps and
  * at the last one; every >= 1 (default 1). */
 void swcs_output(int every);
+/* Optional, from cs_user_parameters (before the fields are allocated): a
+ * boundary-face field SWCS_DEPOSIT_FIELD ("snowwall_deposit") with the deposit
+ * [kg/m2] of each face, filled every step by swcs_end_of_step and written with
+ * Code_Saturne's boundary post-processing (EnSight, ParaView). */
+#define SWCS_DEPOSIT_FIELD "snowwall_deposit"
+void swcs_deposit_field(void);
 /* One listing line per impact (zone, face, time, point, normal, d, v_n, v_t,
  * tau_w, the random number, the fate) when on != 0 (default off). */
 void swcs_verbose(int on);

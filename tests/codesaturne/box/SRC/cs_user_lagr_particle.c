@@ -18,6 +18,7 @@
 #include "cs_mesh.h"
 #include "cs_mesh_quantities.h"
 #include "cs_time_step.h"
+#include "cs_volume_zone.h"
 
 BEGIN_C_DECLS
 
@@ -28,10 +29,11 @@ static const double _box_u[7][3] = {
   {0, -1, 0}, {0, -1, 0}, {0, -1, 0}, {0, -2, 0}, {0, -2, 0}, {0.8, -1, 0}, {0, -0.1, 0}};
 static const double _box_d[7] = {1e-5, 4e-5, 2e-5, 1e-5, 1.5e-5, 1e-5, 1e-5};
 
-/* Injection places a particle at a random point of the zone, and Code_Saturne
- * 6.0 restores that point after cs_user_lagr_in: so the particles are injected
- * at rest in the first time step and put in the OpenFOAM box's places, with its
- * velocities, at the end of it. The run starts one step later than the
+/* Injection places a particle at a random point of its zone (here the cell of
+ * its start point), and Code_Saturne 6.0 restores that point after
+ * cs_user_lagr_in: so the particles are injected at rest in the first time
+ * step and put in the OpenFOAM box's places, in the same cell and so on the
+ * same MPI rank, with its velocities, at the end of it. The run starts one step later than the
  * OpenFOAM box (21 steps; every time here is the OpenFOAM one + 5 ms). */
 void
 cs_user_lagr_in(cs_lagr_particle_set_t         *particles,
@@ -40,12 +42,14 @@ cs_user_lagr_in(cs_lagr_particle_set_t         *particles,
                 const cs_lnum_t                 particle_face_id[],
                 const cs_real_t                 visc_length[])
 {
-  CS_UNUSED(zis);
   CS_UNUSED(particle_face_id);
   CS_UNUSED(visc_length);
+  /* which of the seven: the name of its volume zone, p1 .. p7 */
+  const cs_zone_t *z = cs_volume_zone_by_id(zis->zone_id);
+  const int i = (z && z->name[0] == 'p') ? atoi(z->name + 1) - 1 : -1;
+  if (i < 0 || i >= 7)
+    return;
   for (cs_lnum_t p = particle_range[0]; p < particle_range[1]; p++) {
-    const int i = (int)(p - particle_range[0]);
-    if (i >= 7) break;
     const double d = _box_d[i];
     cs_real_t *u = cs_lagr_particles_attr(particles, p, CS_LAGR_VELOCITY);
     cs_real_t *us = cs_lagr_particles_attr(particles, p, CS_LAGR_VELOCITY_SEEN);
@@ -53,7 +57,6 @@ cs_user_lagr_in(cs_lagr_particle_set_t         *particles,
       u[k] = us[k] = 0;
     cs_lagr_particles_set_real(particles, p, CS_LAGR_DIAMETER, d);
     cs_lagr_particles_set_real(particles, p, CS_LAGR_MASS, 920.0 * cs_math_pi / 6 * d * d * d);
-    /* which of the seven it is */
     cs_lagr_particles_set_real(particles, p, CS_LAGR_RANDOM_VALUE, (double)i);
   }
 }
@@ -76,8 +79,6 @@ cs_user_lagr_extra_operations(const cs_real_t  dt[])
   }
   if (cs_glob_time_step->nt_cur != 1)
     return;
-  const cs_lnum_t nc = cs_glob_mesh->n_cells;
-  const cs_real_t *xc = cs_glob_mesh_quantities->cell_cen;
   const int nt = particles->p_am->n_time_vals;
   const char *e = getenv("SWCS_BOX");
   const int fast = e && strcmp(e, "fast") == 0;
@@ -85,15 +86,8 @@ cs_user_lagr_extra_operations(const cs_real_t  dt[])
     const int i = (int)lround(cs_lagr_particles_get_real(particles, p, CS_LAGR_RANDOM_VALUE));
     if (i < 0 || i >= 7)
       continue;
-    /* the cell that holds the point: the nearest centre on this uniform mesh */
-    cs_lnum_t best = 0;
-    double dbest = HUGE_VAL;
-    for (cs_lnum_t c = 0; c < nc; c++) {
-      double dd = 0;
-      for (int k = 0; k < 3; k++)
-        dd += (xc[3*c + k] - _box_x[i][k]) * (xc[3*c + k] - _box_x[i][k]);
-      if (dd < dbest) { dbest = dd; best = c; }
-    }
+    /* it was injected, at rest, in the cell that holds its point (its zone) */
+    const cs_lnum_t best = cs_lagr_particles_get_lnum(particles, p, CS_LAGR_CELL_ID);
     for (int t = 0; t < nt; t++) {
       cs_real_t *x = cs_lagr_particles_attr_n(particles, p, t, CS_LAGR_COORDS);
       cs_real_t *u = cs_lagr_particles_attr_n(particles, p, t, CS_LAGR_VELOCITY);

@@ -9,6 +9,8 @@
 #include "cs_time_step.h"
 #include "cs_turbulence_model.h"
 
+#include "swcs.h"
+
 BEGIN_C_DECLS
 
 void
@@ -28,6 +30,8 @@ cs_user_parameters(cs_domain_t *domain)
   fp->viscl0 = 1.0;
   cs_physical_constants_t *pc = cs_get_glob_physical_constants();
   pc->gravity[0] = pc->gravity[1] = pc->gravity[2] = 0.0;
+  /* SnowWall's deposit as a boundary field in the post-processing output */
+  swcs_deposit_field();
 }
 
 END_C_DECLS
