@@ -73,6 +73,9 @@ echo "$summary" | grep -q 'impacts 7, sticks 3, bounces 3, ripoffs 1, deposited 
 m=$(echo "$summary" | sed 's/.*deposited mass \([0-9.e-]*\) kg.*/\1/')
 close "$m" "$want_mass" || fail "deposited mass $m kg, expected $want_mass"
 grep -q '^SnowWall: time step 21, t = 0.105 s' "$run/listing" || fail "no summary at the last step (21)"
+# Code_Saturne's own counters (lagrangian.log) agree: 3 deposited, 4 gone (3 + p6's escape)
+lag=$(awk '!/^#/ { o += $7; d += $9 } END { print o, d }' "$run/lagrangian.log")
+[ "$lag" = "4 3" ] || fail "lagrangian.log: '$lag' out/deposited, expected '4 3'"
 counts=$run/snowwall-counts-000021.csv
 [ -f "$counts" ] && [ -f "$run/snowwall-counts-000010.csv" ] || fail "no counts CSV at steps 10 and 21"
 head -1 "$counts" | grep -q '^time,step,zone,type,impacts,sticks,bounces,ripoffs,escapes,outside,deposited_kg,escaped_kg$' \

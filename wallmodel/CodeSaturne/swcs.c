@@ -311,9 +311,9 @@ void swcs_boundary_interaction(cs_lagr_particle_set_t    *particles,
     if (t == SWCS_ESCAPE) {
         if (swcs_book_escape(b, b_zone_id, mass) != SWW_OK)
             stop("%s%s", swcs_book_errmsg(b), NULL);
+        /* (Code_Saturne counts a particle that leaves, CS_LAGR_PART_OUT, in its
+           "exited" counter itself) */
         for (int k = 0; k < 3; ++k) x[k] = c_intersect[k];
-        particles->n_part_out += 1;
-        particles->weight_out += w;
         *event_flag |= CS_EVENT_OUTFLOW;
         *tracking_state = CS_LAGR_PART_OUT;
         return;
@@ -353,7 +353,8 @@ void swcs_boundary_interaction(cs_lagr_particle_set_t    *particles,
             x[k] = c_intersect[k];
             u[k] = 0;
         }
-        particles->n_part_dep += 1;
+        particles->n_part_dep += 1;   /* Code_Saturne's deposit counter (the
+                                         library's own example does the same) */
         particles->weight_dep += w;
         *event_flag |= CS_EVENT_OUTFLOW | CS_EVENT_DEPOSITION;
         *tracking_state = CS_LAGR_PART_OUT;
