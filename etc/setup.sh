@@ -3,7 +3,8 @@
 #
 # Usage: etc/setup.sh [--help] [--no-openfoam]
 #
-# Installs (as root, with apt-get) the Debian packages SnowWall needs, then
+# Installs (as root, with apt-get) the Debian packages SnowWall needs (among
+# them Code_Saturne 6.0 and gfortran, for the Code_Saturne binding's test), then
 # fetches the Debian *source* package of OpenFOAM v1912 and unpacks only
 # src/, wmake/, META-INFO and the pimpleFoam solver folder (whose flow equations
 # the project's solver includes) into the git-ignored cache .cache/openfoam,
@@ -12,7 +13,7 @@
 # does no downloads and returns in well under 5 s.
 #
 # --no-openfoam   install only what the C parts need (compiler, cmake, GSL,
-#                 cmocka, gnuplot); skip OpenFOAM and its headers.
+#                 cmocka, gnuplot); skip OpenFOAM and its headers, and Code_Saturne.
 #
 # Exit status: 0 ready, 1 a step failed (the message names it).
 set -euo pipefail
@@ -21,7 +22,7 @@ top=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 want_of=1
 for a in "$@"; do
     case "$a" in
-        -h|--help) sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
         --no-openfoam) want_of=0 ;;
         *) echo "setup.sh: unknown option '$a' (see --help)" >&2; exit 1 ;;
     esac
@@ -33,8 +34,11 @@ die() { printf 'setup: error: %s\n' "$*" >&2; exit 1; }
 c_pkgs=(build-essential cmake pkg-config libgsl-dev libcmocka-dev gnuplot-nox
         libpng-dev libjpeg-dev)
 of_pkgs=(openfoam openfoam-examples openmpi-bin libopenmpi-dev dpkg-dev)
+# Code_Saturne 6.0 (tests/codesaturne): the solver, its headers, its Python
+# scripts and user templates; gfortran builds a case's Fortran user file
+cs_pkgs=(code-saturne-bin code-saturne-include code-saturne-data gfortran)
 pkgs=("${c_pkgs[@]}")
-[ "$want_of" = 1 ] && pkgs+=("${of_pkgs[@]}")
+[ "$want_of" = 1 ] && pkgs+=("${of_pkgs[@]}" "${cs_pkgs[@]}")
 
 missing=()
 for p in "${pkgs[@]}"; do
