@@ -6,7 +6,8 @@
 # Installs (as root, with apt-get) the Debian packages SnowWall needs (among
 # them Code_Saturne 6.0 and gfortran, for the Code_Saturne binding's test), then
 # fetches the Debian *source* package of OpenFOAM v1912 and unpacks only
-# src/, wmake/, META-INFO and the pimpleFoam solver folder (whose flow equations
+# src/, wmake/, META-INFO, bin/tools (RunFunctions, for the stock tutorials'
+# Allrun scripts) and the pimpleFoam solver folder (whose flow equations
 # the project's solver includes) into the git-ignored cache .cache/openfoam,
 # builds wmake's helpers and the lnInclude folders a Lagrangian model needs.
 # Every step is skipped when its result is already there, so a second run
@@ -65,7 +66,8 @@ stamp="$cache/.ready"
 pimple=applications/solvers/incompressible/pimpleFoam
 if [ -f "$stamp" ] && [ -d "$ofdir/src/lagrangian/intermediate/lnInclude" ] \
    && [ -d "$ofdir/src/lagrangian/spray/lnInclude" ] \
-   && [ -x "$ofdir/platforms/tools/linux64Gcc/wmkdepend" ] && [ -f "$ofdir/$pimple/pEqn.H" ]; then
+   && [ -x "$ofdir/platforms/tools/linux64Gcc/wmkdepend" ] && [ -f "$ofdir/$pimple/pEqn.H" ] \
+   && [ -f "$ofdir/bin/tools/RunFunctions" ]; then
     say "OpenFOAM v1912 sources ready in ${ofdir#$top/}"
     exit 0
 fi
@@ -97,6 +99,13 @@ if [ ! -d "$ofdir/src" ] || [ ! -f "$ofdir/$pimple/pEqn.H" ]; then
         openfoam-OpenFOAM-v1912.200626/src openfoam-OpenFOAM-v1912.200626/wmake \
         openfoam-OpenFOAM-v1912.200626/META-INFO \
         "openfoam-OpenFOAM-v1912.200626/$pimple" || die "unpacking $orig failed"
+fi
+# bin/tools: RunFunctions and CleanFunctions, which a stock tutorial's Allrun
+# sources from $WM_PROJECT_DIR (without them: "runApplication: command not found")
+if [ ! -f "$ofdir/bin/tools/RunFunctions" ]; then
+    say "unpacking bin/tools (RunFunctions for the stock tutorials' Allrun) from ${orig##*/}"
+    tar -xf "$orig" -C "$cache" openfoam-OpenFOAM-v1912.200626/bin/tools \
+        || die "unpacking bin/tools from $orig failed"
 fi
 [ -e "$ofdir/etc" ] || ln -s /usr/share/openfoam/etc "$ofdir/etc"
 # shellcheck source=openfoam-env.sh
