@@ -40,8 +40,18 @@ static char g_script[4200];
 static volatile sig_atomic_t g_script_on;
 static char g_dirbuf[4200];
 
+static volatile pid_t g_child;   /* the gnuplot being waited for, or 0 */
+
 static void on_signal(int sig)
 {
+    /* the plotting child first: stopped and reaped before the temporaries go,
+     * else it writes its PNG after they were removed (issue 22) */
+    const pid_t child = g_child;
+    if (child > 0) {
+        kill(child, SIGTERM);
+        while (waitpid(child, NULL, 0) < 0 && errno == EINTR)
+            ;
+    }
     if (g_script_on)
         unlink(g_script);
     swt_outset *o = g_active;
@@ -388,6 +398,8 @@ int swt_run_gnuplot(const char *dir, const char *script, char *err, size_t errle
     }
     int rc = posix_spawnp(&pid, "gnuplot", &fa, NULL, argv, environ);
     posix_spawn_file_actions_destroy(&fa);
+    if (rc == 0)
+        g_child = pid;
     if (rc != 0) {
         snprintf(err, errlen, "cannot run gnuplot: %s (install gnuplot-nox, or use --no-plot)",
                  strerror(rc));
@@ -396,10 +408,12 @@ int swt_run_gnuplot(const char *dir, const char *script, char *err, size_t errle
     int st;
     while (waitpid(pid, &st, 0) < 0) {
         if (errno != EINTR) {
+            g_child = 0;
             snprintf(err, errlen, "waiting for gnuplot: %s", strerror(errno));
             return -1;
         }
     }
+    g_child = 0;
     if (!WIFEXITED(st) || WEXITSTATUS(st) != 0) {
         snprintf(err, errlen, "gnuplot failed on '%s' (status %d)", script,
                  WIFEXITED(st) ? WEXITSTATUS(st) : -1);

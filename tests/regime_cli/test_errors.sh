@@ -123,4 +123,26 @@ for _ in $(seq 300); do [ -d "$WORK/int/deep" ] && break; sleep 0.1; done
 kill -TERM "$pid"; wait "$pid"; rc=$?
 [ $rc -eq 143 ] || fail "interrupted map: exit $rc, want 143 (SIGTERM)"
 [ ! -e "$WORK/int" ] || fail "interrupted map left $(find "$WORK/int" | head -3)"
+# ... and while gnuplot draws its PNG (issue 22, item 5): the plotting child is stopped
+# before the temporaries go. A stand-in gnuplot on PATH signals that it runs, then
+# writes its output 3 s later unless it is stopped.
+mkdir -p "$WORK/fakebin"
+cat >"$WORK/fakebin/gnuplot" <<'GP'
+#!/bin/sh
+out=$(sed -n "s/^set output '\(.*\)'/\1/p" "$1")   # read first, as gnuplot does
+touch "$GP_MARK"
+sleep 3
+echo png >"$out"
+GP
+chmod +x "$WORK/fakebin/gnuplot"
+mkdir -p "$WORK/plot"   # a folder that exists: the map removes only what it made
+( cd "$WORK" && GP_MARK="$WORK/gp.started" PATH="$WORK/fakebin:$PATH" \
+    exec "$SR" map --nd 6 --nv 6 --out plot >/dev/null 2>&1 ) &
+pid=$!
+for _ in $(seq 300); do [ -e "$WORK/gp.started" ] && break; sleep 0.1; done
+[ -e "$WORK/gp.started" ] || fail "interrupt test: the stand-in gnuplot never ran"
+kill -TERM "$pid"; wait "$pid"; rc=$?
+[ $rc -eq 143 ] || fail "map interrupted while plotting: exit $rc, want 143 (SIGTERM)"
+sleep 4
+[ -z "$(ls -A "$WORK/plot")" ] || fail "map interrupted while plotting left $(ls -A "$WORK/plot" | head -3)"
 finish
