@@ -57,6 +57,17 @@ post_refused() {  # post_refused PATTERN SCRIPT ARGS...
 post_refused "wedge-post: --gate needs a name" wedge-post --case "$w" --out "$tmp/post-out" --gate
 post_refused "wedge-post: --window '1e-,2,3' is not T0,TH,T1" wedge-post --case "$w" --out "$tmp/post-out" --window 1e-,2,3
 post_refused "wedge-post: --window '0,2,1' is not T0,TH,T1 with 0 <= T0 < TH < T1" wedge-post --case "$w" --out "$tmp/post-out" --window 0,2,1
+# a post-processing run that fails on its input leaves --out as it was (issue 22,
+# item 5): not created when it did not exist, untouched when it did
+"$w/post/wedge-post" --case "$w" --out "$tmp/post-out/deep" > "$tmp/out" 2> "$tmp/err"; rc=$?
+[ "$rc" = 1 ] || fail "wedge-post on a case without results: exit $rc, want 1"
+grep -q "wedge-post: missing" "$tmp/err" || fail "wedge-post without results: $(cat "$tmp/err")"
+[ ! -e "$tmp/post-out" ] || fail "a failed wedge-post left the folders it created: $(find "$tmp/post-out" | head -3)"
+mkdir -p "$tmp/kept" && echo old > "$tmp/kept/rear_deposit.csv"
+"$w/post/wedge-post" --case "$w" --out "$tmp/kept" > /dev/null 2>&1 && fail "wedge-post without results succeeded"
+[ "$(ls -A "$tmp/kept")" = rear_deposit.csv ] && [ "$(cat "$tmp/kept/rear_deposit.csv")" = old ] \
+    || fail "a failed wedge-post changed an existing --out: $(ls -A "$tmp/kept")"
+echo "ok   wedge-post failing on its input leaves --out as it was"
 post_refused "wedge-capture: --gate needs a name" wedge-capture --results "$tmp/post-out" --gate
 post_refused "wedge-variant: --log needs a file" wedge-variant --variant rough --log
 post_refused "wedge-compare: --rel needs a number" wedge-compare --rel
