@@ -1083,6 +1083,9 @@ static void loader_errors(void **s)
         { "vnMax", "vnMax 6.0; colour blue;", SWW_EINVAL, "key 'colour' is not a regime key", NULL },
         { "vnMax", "vnMax 6.0; extra { a 1; }", SWW_EINVAL, "key 'extra': a sub-dictionary is not a regime key", NULL },
         { "vnMax", "vnMax 6.0; dMin 1e-4; dMax 1e-5;", SWW_EINVAL, "keys 'dMin', 'dMax'", "must be below" },
+        /* a consistency error of the commit names the lines that set the keys (issue 22) */
+        { "vnMax", "vnMax 6.0;\n dMin 1e-4;\n dMax 1e-5;", SWW_EINVAL, "must be below 1e-05 (dMin line ",
+          ", dMax line " },
         { NULL, "other { a 1; }\n", SWW_EMISSING, "missing sub-dictionary 'regime", NULL },
         { NULL, "regime { vnMin 1; ", SWW_EPARSE, "'regime'", "not closed" },
         { NULL, "regime { vnMin 1; } }", SWW_EPARSE, "found '}'", NULL },

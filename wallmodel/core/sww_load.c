@@ -26,7 +26,41 @@ typedef struct {
     int tline;
     char text[MAX_TOK];
     sww_model *m;
+    /* the line of every key set, for the consistency errors of the commit,
+     * which know the keys but not the file (issue 22) */
+    struct { char key[48]; int line; } keys[96];
+    int nkeys;
 } lexer;
+
+static void note_key(lexer *L, const char *key, int line)
+{
+    if (L->nkeys < (int)(sizeof L->keys / sizeof L->keys[0])) {
+        snprintf(L->keys[L->nkeys].key, sizeof L->keys[0].key, "%s", key);
+        L->keys[L->nkeys++].line = line;
+    }
+}
+
+/* A commit error names keys ('dMin', 'dMax'): add the lines that set them. */
+static void add_key_lines(const lexer *L, sww_model *m)
+{
+    char add[400] = "";
+    size_t n = 0;
+    for (int i = 0; i < L->nkeys && n + 1 < sizeof add; i++) {
+        char q[52];
+        snprintf(q, sizeof q, "'%s'", L->keys[i].key);
+        if (!strstr(m->err, q))
+            continue;
+        const int w = snprintf(add + n, sizeof add - n, "%s%s line %d", n ? ", " : "",
+                               L->keys[i].key, L->keys[i].line);
+        if (w < 0)
+            break;
+        n += (size_t)w < sizeof add - n ? (size_t)w : sizeof add - n - 1;
+    }
+    if (n) {
+        const size_t e = strlen(m->err);
+        snprintf(m->err + e, sizeof m->err - e, " (%s)", add);
+    }
+}
 
 static int lex_fail(lexer *L, int code, int line, const char *what)
 {
@@ -217,6 +251,8 @@ static int parse_entry(lexer *L, const char *key, int keyline, int use, int dept
             rc = expect_fail(L, key, "';' after the list");
         if (rc == SWW_OK && use && (rc = sww_regime_list(L->m, key, vals, n)))
             rc = setter_fail(L, line, rc);
+        if (rc == SWW_OK && use)
+            note_key(L, key, line);
         free(vals);
         if (rc)
             return rc;
@@ -238,6 +274,7 @@ static int parse_entry(lexer *L, const char *key, int keyline, int use, int dept
                 rc = sww_regime_word(L->m, key, val);
             if (rc)
                 return setter_fail(L, line, rc);
+            note_key(L, key, line);
         }
         return next(L);
     }
@@ -370,7 +407,9 @@ static int regime_load(sww_model *m, const char *path)
         return sww_fail(m, SWW_EMISSING, "%s: missing sub-dictionary 'regime { ... }'", path);
     }
     rc = sww_regime_commit(m, path);
-    if (rc)
+    if (rc) {
+        add_key_lines(&L, m);
         m->ready = 0;
+    }
     return rc;
 }
