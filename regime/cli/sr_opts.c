@@ -1,0 +1,181 @@
+/* sr_opts.c - the option handling the snowregime commands share: options and
+ * flags, settings (--config/--set/--threads), the rough-wall options, messages
+ * and exit codes, the automatic speed range. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sr.h"
+
+int sr_opt(sr_args *a, const char *name, const char **val)
+{
+    const char *w = a->argv[a->i];
+    size_t n = strlen(name);
+    if (strncmp(w, name, n) != 0) return 0;
+    if (w[n] == '=') { *val = w + n + 1; return 1; }
+    if (w[n] != '\0') return 0;
+    if (a->i + 1 >= a->argc) {
+        *val = NULL;
+        snprintf(a->err, sizeof a->err, "%s: missing value", name);
+        return 1;
+    }
+    *val = a->argv[++a->i];
+    return 1;
+}
+
+int sr_flag(sr_args *a, const char *name)
+{
+    return strcmp(a->argv[a->i], name) == 0;
+}
+
+int sr_settings_opt(sr_args *a, sr_settings *s)
+{
+    const char *v;
+    if (sr_opt(a, "--config", &v)) {
+        if (!v) return -1;
+        s->config = v;
+        return 1;
+    }
+    if (sr_opt(a, "--set", &v)) {
+        if (!v) return -1;
+        if (s->nsets == (int)(sizeof s->sets / sizeof s->sets[0])) {
+            snprintf(a->err, sizeof a->err, "--set: too many (max 256)");
+            return -1;
+        }
+        s->sets[s->nsets++] = v;
+        return 1;
+    }
+    if (sr_opt(a, "--threads", &v)) {
+        long n;
+        if (!v || swt_parse_int("--threads", v, 1, 64, &n, a->err, sizeof a->err) != 0) return -1;
+        s->threads = (int)n;
+        return 1;
+    }
+    return 0;
+}
+
+int sr_settings_apply(const sr_settings *s, swr_params *p, char *err, size_t errlen)
+{
+    char e[300];
+    swr_params_default(p);
+    if (s->config && swr_params_load(p, s->config, e, sizeof e) != 0) {
+        snprintf(err, errlen, "--config: %s", e);
+        return -1;
+    }
+    for (int k = 0; k < s->nsets; k++)
+        if (swr_params_set_kv(p, s->sets[k], e, sizeof e) != 0) {
+            snprintf(err, errlen, "--set: %s", e);
+            return -1;
+        }
+    if (swr_params_validate(p, e, sizeof e) != 0) {
+        snprintf(err, errlen, "settings: %s", e);
+        return -1;
+    }
+    return 0;
+}
+
+int sr_rough_opt(sr_args *a, swt_vcrit_opts *o)
+{
+    const char *v;
+    long n;
+    if (sr_opt(a, "--points", &v)) {
+        if (!a->rough_only) a->rough_only = "--points";
+        if (!v || swt_parse_int("--points", v, 1, 100000, &n, a->err, sizeof a->err) != 0) return -1;
+        o->points = (int)n;
+        return 1;
+    }
+    if (sr_opt(a, "--seed", &v)) {
+        if (!a->rough_only) a->rough_only = "--seed";
+        if (!v || swt_parse_int("--seed", v, 0, 4294967295L, &n, a->err, sizeof a->err) != 0) return -1;
+        o->seed = (unsigned long)n;
+        return 1;
+    }
+    if (sr_opt(a, "--level", &v)) {
+        if (!a->rough_only) a->rough_only = "--level";
+        if (!v || swt_parse_double("--level", v, 1e-6, 1.0, &o->level, a->err, sizeof a->err) != 0)
+            return -1;
+        return 1;
+    }
+    return 0;
+}
+
+int sr_rough_only_check(const sr_args *a, const swr_model *m, char *err, size_t errlen)
+{
+    if (!a->rough_only || swr_model_rough(m))
+        return 0;
+    snprintf(err, errlen, "%s: only for a rough wall (--set wall=lattice); this wall is flat, "
+             "where every impact point gives the same outcome", a->rough_only);
+    return -1;
+}
+
+const char *sr_outcome_text(const swt_vcrit_opts *o, char *buf, size_t n)
+{
+    if (o->max_slide > 0.0)
+        snprintf(buf, n, "full stick, at rest within %g m of the impact", o->max_slide);
+    else
+        snprintf(buf, n, "%s", o->full_stick ? "full stick" : "normal contact kept");
+    return buf;
+}
+
+int sr_usage_error(const char *cmd, const char *msg)
+{
+    fprintf(stderr, "snowregime%s%s: %s\n", cmd ? " " : "", cmd ? cmd : "", msg);
+    return SR_EXIT_USAGE;
+}
+
+int sr_out_error(const char *cmd, const char *dir, const char *msg)
+{
+    fprintf(stderr, "snowregime %s: --out: '%s': %s\n", cmd, dir, msg);
+    return SR_EXIT_USAGE;
+}
+
+int sr_fail(const char *cmd, const char *msg)
+{
+    fprintf(stderr, "snowregime%s%s: %s\n", cmd ? " " : "", cmd ? cmd : "", msg);
+    return SR_EXIT_FAIL;
+}
+
+/* v_crit of diameter d for the automatic speed range, or -1 with a message. */
+static int auto_vcrit(const swr_model *m, double d, const swt_vcrit_opts *vo, double *vcrit,
+                      char *err, size_t errlen)
+{
+    swt_vcrit_result r;
+    swt_vcrit(m, d, vo, &r);
+    if (r.status != SWT_VCRIT_FOUND) {
+        snprintf(err, errlen, "automatic speed range: no v_crit for d = %g m in [%g, %g] m/s "
+                 "(%s); give --vmin and --vmax", d, vo->vmin, vo->vmax,
+                 r.status == SWT_VCRIT_ALL_STICK ? "sticks everywhere" :
+                 r.status == SWT_VCRIT_NO_STICK ? "bounces everywhere" : r.msg);
+        return -1;
+    }
+    *vcrit = r.vcrit;
+    return 0;
+}
+
+int sr_auto_vrange(const swr_model *m, swt_grid *g, int set_min, int set_max,
+                   const swt_vcrit_opts *o, char *err, size_t errlen)
+{
+    swt_vcrit_opts vo = *o;
+    vo.vmin = 1e-4;
+    vo.vmax = SWR_V_MAX;
+    vo.rtol = 1e-2;
+    double v;
+    if (!set_min) {
+        if (auto_vcrit(m, g->dmax, &vo, &v, err, errlen) != 0)
+            return -1;
+        g->vmin = v / 1.5;
+    }
+    if (!set_max) {
+        if (auto_vcrit(m, g->dmin, &vo, &v, err, errlen) != 0)
+            return -1;
+        /* within the speeds the kernel accepts */
+        g->vmax = 1.5 * v < SWR_V_MAX ? 1.5 * v : SWR_V_MAX;
+    }
+    if (!(g->vmax > g->vmin)) {
+        snprintf(err, errlen, "speed range [%g, %g] m/s is empty: give --vmin and --vmax",
+                 g->vmin, g->vmax);
+        return -1;
+    }
+    return 0;
+}
