@@ -101,9 +101,12 @@ inline bool lineHasValue(const List<std::string>& lines, const entry& e)
         const char* b = l.c_str() + p;
         char* end = nullptr;
         const double v = std::strtod(b, &end);
-        if (end == b) return false;
         const double x = t.number();
-        return std::fabs(v - x) <= 1e-12 * std::max(std::fabs(v), std::fabs(x));
+        if (end == b || !std::isfinite(v) || !std::isfinite(x)) return false;
+        if (v == x) return true;
+        // relative, without a difference that could overflow (OpenFOAM traps it)
+        const double m = std::max(std::fabs(v), std::fabs(x));
+        return std::fabs(v/m - x/m) <= 1e-12;
     }
     if (t.isWord() || t.isString())
     {
