@@ -82,12 +82,26 @@ for a in "vcrit --d -2e-5|--d: '-2e-5'" "vcrit --d 1e-5,,2e-5|empty item" "vcrit
          "collide --d 5e-5 --vn 1e-310|--vn: '1e-310' is too small: the smallest accepted value is 1e-300" \
          "collide --d 0x1p-14 --vn 1|--d: '0x1p-14' is not a decimal number" \
          "vcrit --d 1e-5 --set cor=elastic --set dashpot=both|dashpot: both is not used by cor elastic" \
-         "vcrit --d 1e-5 --set wall=lattice --set lattice=hex --set asperity_r=2e-6 --set asperity_spacing=3e-6|below 2 asperity_r = 4e-06 m"; do
+         "vcrit --d 1e-5 --set wall=lattice --set lattice=hex --set asperity_r=2e-6 --set asperity_spacing=3e-6|below 2 asperity_r = 4e-06 m" \
+         "collide --d 5e-5 --vn 1 --x 1e-7|--x, --y: only for a rough wall" \
+         "collide --d 5e-5 --vn 1 --y 1e-7|--x, --y: only for a rough wall" \
+         "collide --d 5e-5 --vn 1 --stride 5|--stride: only with --trace-csv or --trace-vtk" \
+         "collide --d 5e-5 --vn 1 --trace-csv $WORK/t --trace-vtk $WORK/t|the same file '$WORK/t' for both traces"; do
     args=${a%%|*}; want=${a#*|}
     "$SR" $args >/dev/null 2>"$WORK/err"; rc=$?
     [ $rc -eq 2 ] || fail "'$args': exit $rc, want 2"
     grep -qF -- "$want" "$WORK/err" || fail "'$args': message does not name '$want': $(cat "$WORK/err")"
 done
+# a trace onto a folder or a FIFO (as root, --trace-csv /dev/full renamed a regular file
+# over the device): exit 1 naming it, the FIFO left as it was (hostile sweep, issue 22)
+mkdir -p "$WORK/tracedir"; rm -f "$WORK/fifo"; mkfifo "$WORK/fifo"
+for t in "$WORK/tracedir" "$WORK/fifo"; do
+    "$SR" collide --d 5e-5 --vn 1 --trace-csv "$t" >/dev/null 2>"$WORK/err"; rc=$?
+    [ $rc -eq 1 ] && grep -qF -- "cannot write '$t': it exists and is not a regular file" "$WORK/err" \
+        || fail "--trace-csv $t: exit $rc, $(cat "$WORK/err")"
+done
+[ -p "$WORK/fifo" ] || fail "--trace-csv onto a FIFO replaced it"
+[ -z "$(ls -A "$WORK/tracedir")" ] && [ -z "$(ls -A "$WORK" | grep '^\.tmp-')" ] || fail "--trace-csv onto a folder left files"
 # --out naming an existing file
 : >"$WORK/plainfile"
 "$SR" map --out "$WORK/plainfile" --nd 4 --nv 4 >/dev/null 2>"$WORK/err"; rc=$?
