@@ -102,6 +102,9 @@ for t in "$WORK/tracedir" "$WORK/fifo"; do
 done
 [ -p "$WORK/fifo" ] || fail "--trace-csv onto a FIFO replaced it"
 [ -z "$(ls -A "$WORK/tracedir")" ] && [ -z "$(ls -A "$WORK" | grep '^\.tmp-')" ] || fail "--trace-csv onto a folder left files"
+# --version with more words: refused, not dropped (hostile sweep, issue 22)
+"$SR" --version map >/dev/null 2>"$WORK/err"; rc=$?
+[ $rc -eq 2 ] && grep -qF -- "--version takes no arguments, got 'map'" "$WORK/err" || fail "--version map: exit $rc, $(cat "$WORK/err")"
 # --out naming an existing file
 : >"$WORK/plainfile"
 "$SR" map --out "$WORK/plainfile" --nd 4 --nv 4 >/dev/null 2>"$WORK/err"; rc=$?
