@@ -45,7 +45,7 @@ static const char *help_main =
 "        lateral offset / spacing, <= 0.5),\n"
 "        asperity_dz 0 (random sinking depth [m], below asperity_r), wall_seed 1\n"
 "        (integer), rough_hold 30 (contact times in contact after which a held\n"
-"        sphere counts as stuck).\n"
+"        sphere counts as stuck). These keys are refused on a flat wall.\n"
 "        On a lattice the outcome is a stick probability over impact points\n"
 "        (--points N, --seed S of vcrit and map); cor thornton-ning is refused.\n"
 "\n"

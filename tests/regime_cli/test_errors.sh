@@ -54,6 +54,12 @@ check "dashpot: loading is not used by cor thornton-ning" \
     "$SR" sensitivity --set dashpot=loading --set cor=thornton-ning
 check "asperity_dz: 1e-06 m is not below asperity_r = 1e-06 m: asperities sunk that deep are level with the base plane or below it" \
     "$SR" map --set wall=lattice --set asperity_dz=1e-6
+# rough-wall settings on a flat wall (hostile sweep, issue 22: the flat answer without a word)
+check "settings: asperity_r: 2e-06 is not used on a flat wall (wall flat); set wall=lattice" \
+    "$SR" map --set asperity_r=2e-6
+check "settings: lattice: hex is not used on a flat wall" "$SR" map --set lattice=hex
+printf 'rough_hold 50\n' >"$WORK/hold.cfg"
+check "settings: rough_hold: 50 is not used on a flat wall" "$SR" sensitivity --config "$WORK/hold.cfg"
 # messages that named the wrong thing (issue 22, item 4)
 printf 'gamma 0.3\0\n' >"$WORK/nul.cfg"
 check "--config: $WORK/nul.cfg:1: the line holds a NUL byte" "$SR" map --config "$WORK/nul.cfg"
