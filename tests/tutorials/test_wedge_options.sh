@@ -42,6 +42,9 @@ refused "-oversubscribe needs -parallel N with N > 1" -oversubscribe
 refused "-gate must be off, tangential, shear or regime, got 'on'" -gate on
 refused "-sizes needs whole diameters in um (1..1000)" -sizes 5,,10
 refused "unknown option '-parallell'" -parallell 2
+# hostile sweep (issue 22): two mesh levels or a diameter twice were taken without a word
+refused "-test with -fine: give one mesh level (-fine or -test)" -fine -test
+refused "-sizes: '5,10,05' names a diameter twice" -sizes 5,10,05
 # the post-processing scripts: a missing option value or a malformed --window is a
 # usage error, exit 2, named (issue 22: '--gate' alone exited 1 from the shell's own
 # ${2:?}, and '--window 1e-,2,3' passed as 1,2,3)
