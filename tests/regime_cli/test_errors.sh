@@ -60,6 +60,9 @@ check "settings: asperity_r: 2e-06 is not used on a flat wall (wall flat); set w
 check "settings: lattice: hex is not used on a flat wall" "$SR" map --set lattice=hex
 printf 'rough_hold 50\n' >"$WORK/hold.cfg"
 check "settings: rough_hold: 50 is not used on a flat wall" "$SR" sensitivity --config "$WORK/hold.cfg"
+# a key given twice in one config file (hostile sweep, issue 22: the later one won silently)
+printf 'gamma 0.3\n# comment\ngamma = 0.4\n' >"$WORK/twice.cfg"
+check "twice.cfg:3: key 'gamma' is given twice (first at line 1)" "$SR" map --config "$WORK/twice.cfg"
 # messages that named the wrong thing (issue 22, item 4)
 printf 'gamma 0.3\0\n' >"$WORK/nul.cfg"
 check "--config: $WORK/nul.cfg:1: the line holds a NUL byte" "$SR" map --config "$WORK/nul.cfg"
