@@ -312,7 +312,7 @@ static const char *help_convergence =
 "OPTIONS\n"
 "    --out DIR         output folder (created; required)\n"
 "    --d LIST          diameters [m] (default 10e-6,30e-6,100e-6)\n"
-"    --accuracy LIST   accuracy settings, >= 10 (default 10,15,20,30,45,60,90,120,180,240)\n"
+"    --accuracy LIST   accuracy settings, >= 10, strictly increasing (default 10,15,20,30,45,60,90,120,180,240)\n"
 "    --ref-factor F    reference accuracy = F x the largest setting (default 8)\n"
 "    --tol T           bisection tolerance (default 1e-7)\n"
 "    --min-time S      minimum wall time of each of the 5 timed blocks [s] (default 0.01)\n"

@@ -79,6 +79,8 @@ check "--vt: 60 values x 100 speed nodes (the map's --nv 50 spacing" \
 check "--set: gamma" "$SR" sensitivity --set gamma=1e9
 check "--nd: '0'" "$SR" sensitivity --nd 0
 check "--accuracy: '-3'" "$SR" convergence --accuracy -3
+check "--accuracy: '20,10,10': value 10 (item 2) is not above 20 (item 1)" "$SR" convergence --accuracy 20,10,10
+check "--accuracy: '10,20,20': value 20 (item 3) is not above 20 (item 2)" "$SR" convergence --accuracy 10,20,20
 check "--d: 'nan'" "$SR" convergence --d nan
 # commands without --out
 for a in "vcrit --d -2e-5|--d: '-2e-5'" "vcrit --d 1e-5,,2e-5|empty item" "vcrit --d 1e-5 --tol 0|--tol: '0'" \
