@@ -76,6 +76,16 @@ int sr_settings_apply(const sr_settings *s, swr_params *p, char *err, size_t err
      * refused, not ignored (hostile sweep, issue 22: 'asperity_r=2e-6' on the flat
      * wall gave the flat answer without a word). Detected as a value that differs
      * from the default: a key set to its default changes nothing either way. */
+    /* likewise the work of adhesion without adhesion */
+    if (p->adhesion == SWR_ADHESION_NONE) {
+        swr_params d;
+        swr_params_default(&d);
+        if (p->gamma != d.gamma) {
+            snprintf(err, errlen, "settings: gamma: %g is not used with adhesion none (no "
+                     "adhesive contact); drop it or set adhesion=jkr", p->gamma);
+            return -1;
+        }
+    }
     if (p->wall == SWR_WALL_KIND_FLAT) {
         swr_params d;
         swr_params_default(&d);

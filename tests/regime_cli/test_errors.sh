@@ -58,6 +58,7 @@ check "asperity_dz: 1e-06 m is not below asperity_r = 1e-06 m: asperities sunk t
 check "settings: asperity_r: 2e-06 is not used on a flat wall (wall flat); set wall=lattice" \
     "$SR" map --set asperity_r=2e-6
 check "settings: lattice: hex is not used on a flat wall" "$SR" map --set lattice=hex
+check "settings: gamma: 0.5 is not used with adhesion none" "$SR" map --set adhesion=none --set gamma=0.5
 printf 'rough_hold 50\n' >"$WORK/hold.cfg"
 check "settings: rough_hold: 50 is not used on a flat wall" "$SR" sensitivity --config "$WORK/hold.cfg"
 # a key given twice in one config file (hostile sweep, issue 22: the later one won silently)
