@@ -36,7 +36,7 @@ while [ $# -gt 0 ]; do
     shift
 done
 case "$out" in /*) ;; *) out="$PWD/$out" ;; esac
-cmdline="tests/hostile/sweep.sh${*:+ $*}"
+cmdline="${SW_OPENFOAM_TOP:+SW_OPENFOAM_TOP=$SW_OPENFOAM_TOP }tests/hostile/sweep.sh${*:+ $*}"
 start=$(date +%s)
 work=$(mktemp -d /tmp/sw-hostile-XXXXXX)
 trap 'rm -rf "$work"' EXIT
