@@ -103,8 +103,9 @@ static int parse_double(const char *opt, const char *s, double *out)
     char *end;
     errno = 0;
     double v = strtod(s, &end);
-    if (end == s || *end != '\0' || errno || !isfinite(v)) {
-        fprintf(stderr, "snowphoto: %s: '%s' is not a finite number\n", opt, s);
+    /* decimal only: strtod also takes hexadecimal (0x1p-30) */
+    if (end == s || *end != '\0' || errno || !isfinite(v) || strpbrk(s, "xX")) {
+        fprintf(stderr, "snowphoto: %s: '%s' is not a finite decimal number\n", opt, s);
         return 2;
     }
     *out = v;
@@ -114,6 +115,10 @@ static int parse_double(const char *opt, const char *s, double *out)
 static int parse_corners(const char *s, double c[4][2])
 {
     const char *p = s;
+    if (strpbrk(s, "xX")) {
+        fprintf(stderr, "snowphoto: --corners: '%s' is not 8 comma-separated finite decimal numbers\n", s);
+        return 2;
+    }
     for (int k = 0; k < 8; k++) {
         char *end;
         errno = 0;

@@ -88,7 +88,7 @@ int sr_cmd_collide(int argc, char **argv)
     sr_args a = { argc, argv, 1, cmd, "", NULL };
     sr_settings s = { 0 };
     swr_impact in = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
-    int have_d = 0, have_vn = 0;
+    int have_d = 0, have_vn = 0, have_xy = 0, have_stride = 0;
     long stride = 1;
     const char *csv = NULL, *vtk = NULL, *v;
     for (; a.i < argc; a.i++) {
@@ -113,12 +113,15 @@ int sr_cmd_collide(int argc, char **argv)
         } else if (sr_opt(&a, "--x", &v)) {
             if (!v || swt_parse_double("--x", v, -1.0, 1.0, &in.x, a.err, sizeof a.err))
                 return sr_usage_error(cmd, a.err);
+            have_xy = 1;
         } else if (sr_opt(&a, "--y", &v)) {
             if (!v || swt_parse_double("--y", v, -1.0, 1.0, &in.y, a.err, sizeof a.err))
                 return sr_usage_error(cmd, a.err);
+            have_xy = 1;
         } else if (sr_opt(&a, "--stride", &v)) {
             if (!v || swt_parse_int("--stride", v, 1, 1000000000L, &stride, a.err, sizeof a.err))
                 return sr_usage_error(cmd, a.err);
+            have_stride = 1;
         } else if (sr_opt(&a, "--trace-csv", &v)) {
             if (!v || !*v) return sr_usage_error(cmd, "--trace-csv: missing file name");
             csv = v;
@@ -133,10 +136,20 @@ int sr_cmd_collide(int argc, char **argv)
     }
     if (!have_d) return sr_usage_error(cmd, "--d: missing (particle diameter in m)");
     if (!have_vn) return sr_usage_error(cmd, "--vn: missing (normal approach speed in m/s)");
+    /* options this run would not use are refused, not dropped (issue 22, sweep) */
+    if (have_stride && !csv && !vtk)
+        return sr_usage_error(cmd, "--stride: only with --trace-csv or --trace-vtk (no trace is written)");
+    if (csv && vtk && strcmp(csv, vtk) == 0) {
+        snprintf(a.err, sizeof a.err, "--trace-csv and --trace-vtk: the same file '%s' for both traces", csv);
+        return sr_usage_error(cmd, a.err);
+    }
 
     swr_params p;
     char err[400];
     if (sr_settings_apply(&s, &p, err, sizeof err) != 0) return sr_usage_error(cmd, err);
+    if (have_xy && p.wall != SWR_WALL_KIND_LATTICE)
+        return sr_usage_error(cmd, "--x, --y: only for a rough wall (--set wall=lattice); this wall "
+                                   "is flat, where every impact point gives the same outcome");
     swr_model *m = swr_model_alloc(&p, err, sizeof err);
     if (!m) return sr_usage_error(cmd, err);
 

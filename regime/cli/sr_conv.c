@@ -24,7 +24,19 @@ int sr_cmd_convergence(int argc, char **argv)
         int bad = 0;
         if (sr_opt(&a, "--out", &v)) { if (!v || !*v) { snprintf(a.err, sizeof a.err, "--out: missing folder name"); bad = 1; } else out = v; }
         else if (sr_opt(&a, "--d", &v)) { free(d); d = NULL; bad = !v || swt_parse_list("--d", v, SWR_D_MIN, SWR_D_MAX, &d, &nd, a.err, sizeof a.err); }
-        else if (sr_opt(&a, "--accuracy", &v)) { free(acc); acc = NULL; bad = !v || swt_parse_list("--accuracy", v, 1.0, 1e6, &acc, &nacc, a.err, sizeof a.err); }
+        else if (sr_opt(&a, "--accuracy", &v)) {
+            free(acc); acc = NULL;
+            bad = !v || swt_parse_list("--accuracy", v, 1.0, 1e6, &acc, &nacc, a.err, sizeof a.err);
+            /* as --vt and --angle of map: strictly increasing, each value once (a repeated
+             * or unsorted list was run as given, rows twice; hostile sweep, issue 22) */
+            for (int k = 1; !bad && k < nacc; k++)
+                if (!(acc[k] > acc[k - 1])) {
+                    snprintf(a.err, sizeof a.err, "--accuracy: '%s': value %g (item %d) is not above %g "
+                             "(item %d): the list must increase strictly, each value once",
+                             v, acc[k], k + 1, acc[k - 1], k);
+                    bad = 1;
+                }
+        }
         else if (sr_opt(&a, "--ref-factor", &v)) bad = !v || swt_parse_double("--ref-factor", v, 2.0, 1e3, &ref_factor, a.err, sizeof a.err);
         else if (sr_opt(&a, "--tol", &v)) bad = !v || swt_parse_double("--tol", v, 1e-12, 0.1, &tol, a.err, sizeof a.err);
         else if (sr_opt(&a, "--min-time", &v)) bad = !v || swt_parse_double("--min-time", v, 0.0, 3600.0, &min_time, a.err, sizeof a.err);

@@ -19,6 +19,10 @@ int main(int argc, char **argv)
         return 0;
     }
     if (strcmp(c, "--version") == 0) {
+        if (argc > 2) {   /* not dropped: 'snowregime --version map ...' runs nothing */
+            fprintf(stderr, "snowregime: --version takes no arguments, got '%s'\n", argv[2]);
+            return SR_EXIT_USAGE;
+        }
         puts("snowregime (SnowWall) 0.1");
         return 0;
     }

@@ -72,6 +72,42 @@ int sr_settings_apply(const sr_settings *s, swr_params *p, char *err, size_t err
         snprintf(err, errlen, "settings: %s", e);
         return -1;
     }
+    /* a rough-wall key set (from --set or --config) while the wall stays flat is
+     * refused, not ignored (hostile sweep, issue 22: 'asperity_r=2e-6' on the flat
+     * wall gave the flat answer without a word). Detected as a value that differs
+     * from the default: a key set to its default changes nothing either way. */
+    /* likewise the work of adhesion without adhesion */
+    if (p->adhesion == SWR_ADHESION_NONE) {
+        swr_params d;
+        swr_params_default(&d);
+        if (p->gamma != d.gamma) {
+            snprintf(err, errlen, "settings: gamma: %g is not used with adhesion none (no "
+                     "adhesive contact); drop it or set adhesion=jkr", p->gamma);
+            return -1;
+        }
+    }
+    if (p->wall == SWR_WALL_KIND_FLAT) {
+        swr_params d;
+        swr_params_default(&d);
+        const char *key = NULL;
+        double v = 0.0;
+        if (p->lattice != d.lattice) key = "lattice";
+        else if (p->asperity_r != d.asperity_r) { key = "asperity_r"; v = p->asperity_r; }
+        else if (p->asperity_spacing != d.asperity_spacing) { key = "asperity_spacing"; v = p->asperity_spacing; }
+        else if (p->asperity_jitter != d.asperity_jitter) { key = "asperity_jitter"; v = p->asperity_jitter; }
+        else if (p->asperity_dz != d.asperity_dz) { key = "asperity_dz"; v = p->asperity_dz; }
+        else if (p->wall_seed != d.wall_seed) { key = "wall_seed"; v = p->wall_seed; }
+        else if (p->rough_hold != d.rough_hold) { key = "rough_hold"; v = p->rough_hold; }
+        if (key) {
+            if (strcmp(key, "lattice") == 0)
+                snprintf(err, errlen, "settings: lattice: hex is not used on a flat wall (wall flat); "
+                         "set wall=lattice for a rough wall");
+            else
+                snprintf(err, errlen, "settings: %s: %g is not used on a flat wall (wall flat); "
+                         "set wall=lattice for a rough wall", key, v);
+            return -1;
+        }
+    }
     return 0;
 }
 

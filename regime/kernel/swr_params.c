@@ -296,6 +296,10 @@ int swr_params_load(swr_params *p, const char *path, char *err, size_t errlen)
         return fail(err, errlen, "%s: cannot open: %s", path, strerror(errno));
     char line[1024], key[64], val[256], msg[320];
     int lineno = 0, rc = 0;
+    /* the keys set so far and their lines: a key given twice in one file is an
+     * error (the later one silently won; hostile sweep, issue 22) */
+    struct { char key[64]; int line; } seen[64];
+    int nseen = 0;
     while (fgets(line, sizeof line, f)) {
         lineno++;
         /* a NUL byte ends the string early: found before the line's length
@@ -335,6 +339,19 @@ int swr_params_load(swr_params *p, const char *path, char *err, size_t errlen)
         if (swr_params_set(p, key, val, msg, sizeof msg) != 0) {
             rc = fail(err, errlen, "%s:%d: %s", path, lineno, msg);
             break;
+        }
+        int first = 0;
+        for (int k = 0; k < nseen && !first; k++)
+            if (strcmp(seen[k].key, key) == 0)
+                first = seen[k].line;
+        if (first) {
+            rc = fail(err, errlen, "%s:%d: key '%s' is given twice (first at line %d)", path,
+                      lineno, key, first);
+            break;
+        }
+        if (nseen < (int)(sizeof seen / sizeof seen[0])) {
+            snprintf(seen[nseen].key, sizeof seen[nseen].key, "%s", key);
+            seen[nseen++].line = lineno;
         }
     }
     if (rc == 0 && ferror(f))

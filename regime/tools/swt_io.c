@@ -185,6 +185,15 @@ const char *swt_outset_add(swt_outset *o, const char *name, char *err, size_t er
         if (slash) snprintf(e->tmp, len, "%.*s.tmp-%s", (int)(slash - name + 1), name, slash + 1);
         else snprintf(e->tmp, len, ".tmp-%s", name);
     }
+    /* the temporary is renamed over the final name: an existing folder, device,
+     * FIFO or socket there would be replaced (as root, /dev/full became a file) */
+    struct stat st;
+    if (stat(e->final, &st) == 0 && !S_ISREG(st.st_mode)) {
+        snprintf(err, errlen, "cannot write '%s': it exists and is not a regular file",
+                 e->final);
+        free(e->name); free(e->final); free(e->tmp);
+        return NULL;
+    }
     o->n++;
     return e->tmp;
 }

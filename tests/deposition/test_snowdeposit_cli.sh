@@ -43,6 +43,11 @@ check "--out" "$SD" calibrate
 check "--out" "$SD" channel --out "$WORK/y"
 check "no/such" "$SD" calibrate --out "$WORK/no/such/file"
 check "--t-run" "$SD" channel --t-run 1e300
+# hostile sweep (issue 22): an option of the other command was dropped without a word
+# (channel --law ran the default channel for minutes), and --set named no key
+check "--law is an option of calibrate, not of channel" "$SD" channel --law wood
+check "--closure is an option of channel, not of calibrate" "$SD" calibrate --out "$WORK/x" --closure wood
+check "--set CT: 'nan' is not a finite decimal number" "$SD" channel --set CT=nan
 [ ! -e "$WORK/x" ] && [ ! -e "$WORK/y" ] && ok "no file left by the errors" || fail "a file was left"
 
 # a short calibration: the file, its keys, and the closure at work

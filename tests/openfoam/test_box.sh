@@ -285,6 +285,11 @@ assert s2 != s
 open(p, "w").write(s2)
 PY
 expect_fatal_io "$tmp/emptyPatches" "the patches list is empty: give every boundary patch a type"
+# snowNearWall: a depositionClosure given as a value was taken as no closure (hostile sweep)
+case_from_base "$tmp/nwClosure"
+foamDictionary -entry cloudFunctions -set "{ nw { type snowNearWall; patches (wall); depositionClosure 1; } }" \
+    "$tmp/nwClosure/$cpr" > /dev/null
+expect_fatal_io "$tmp/nwClosure" "snowNearWall: depositionClosure is not a sub-dictionary"
 echo "unknown keys and empty lists: ok"
 
 # 6. the rebound (issue 23): `rebound table` needs the regime file's tables; a file with

@@ -54,6 +54,16 @@ check "dashpot: loading is not used by cor thornton-ning" \
     "$SR" sensitivity --set dashpot=loading --set cor=thornton-ning
 check "asperity_dz: 1e-06 m is not below asperity_r = 1e-06 m: asperities sunk that deep are level with the base plane or below it" \
     "$SR" map --set wall=lattice --set asperity_dz=1e-6
+# rough-wall settings on a flat wall (hostile sweep, issue 22: the flat answer without a word)
+check "settings: asperity_r: 2e-06 is not used on a flat wall (wall flat); set wall=lattice" \
+    "$SR" map --set asperity_r=2e-6
+check "settings: lattice: hex is not used on a flat wall" "$SR" map --set lattice=hex
+check "settings: gamma: 0.5 is not used with adhesion none" "$SR" map --set adhesion=none --set gamma=0.5
+printf 'rough_hold 50\n' >"$WORK/hold.cfg"
+check "settings: rough_hold: 50 is not used on a flat wall" "$SR" sensitivity --config "$WORK/hold.cfg"
+# a key given twice in one config file (hostile sweep, issue 22: the later one won silently)
+printf 'gamma 0.3\n# comment\ngamma = 0.4\n' >"$WORK/twice.cfg"
+check "twice.cfg:3: key 'gamma' is given twice (first at line 1)" "$SR" map --config "$WORK/twice.cfg"
 # messages that named the wrong thing (issue 22, item 4)
 printf 'gamma 0.3\0\n' >"$WORK/nul.cfg"
 check "--config: $WORK/nul.cfg:1: the line holds a NUL byte" "$SR" map --config "$WORK/nul.cfg"
@@ -70,6 +80,8 @@ check "--vt: 60 values x 100 speed nodes (the map's --nv 50 spacing" \
 check "--set: gamma" "$SR" sensitivity --set gamma=1e9
 check "--nd: '0'" "$SR" sensitivity --nd 0
 check "--accuracy: '-3'" "$SR" convergence --accuracy -3
+check "--accuracy: '20,10,10': value 10 (item 2) is not above 20 (item 1)" "$SR" convergence --accuracy 20,10,10
+check "--accuracy: '10,20,20': value 20 (item 3) is not above 20 (item 2)" "$SR" convergence --accuracy 10,20,20
 check "--d: 'nan'" "$SR" convergence --d nan
 # commands without --out
 for a in "vcrit --d -2e-5|--d: '-2e-5'" "vcrit --d 1e-5,,2e-5|empty item" "vcrit --d 1e-5 --tol 0|--tol: '0'" \
@@ -82,12 +94,29 @@ for a in "vcrit --d -2e-5|--d: '-2e-5'" "vcrit --d 1e-5,,2e-5|empty item" "vcrit
          "collide --d 5e-5 --vn 1e-310|--vn: '1e-310' is too small: the smallest accepted value is 1e-300" \
          "collide --d 0x1p-14 --vn 1|--d: '0x1p-14' is not a decimal number" \
          "vcrit --d 1e-5 --set cor=elastic --set dashpot=both|dashpot: both is not used by cor elastic" \
-         "vcrit --d 1e-5 --set wall=lattice --set lattice=hex --set asperity_r=2e-6 --set asperity_spacing=3e-6|below 2 asperity_r = 4e-06 m"; do
+         "vcrit --d 1e-5 --set wall=lattice --set lattice=hex --set asperity_r=2e-6 --set asperity_spacing=3e-6|below 2 asperity_r = 4e-06 m" \
+         "collide --d 5e-5 --vn 1 --x 1e-7|--x, --y: only for a rough wall" \
+         "collide --d 5e-5 --vn 1 --y 1e-7|--x, --y: only for a rough wall" \
+         "collide --d 5e-5 --vn 1 --stride 5|--stride: only with --trace-csv or --trace-vtk" \
+         "collide --d 5e-5 --vn 1 --trace-csv $WORK/t --trace-vtk $WORK/t|the same file '$WORK/t' for both traces"; do
     args=${a%%|*}; want=${a#*|}
     "$SR" $args >/dev/null 2>"$WORK/err"; rc=$?
     [ $rc -eq 2 ] || fail "'$args': exit $rc, want 2"
     grep -qF -- "$want" "$WORK/err" || fail "'$args': message does not name '$want': $(cat "$WORK/err")"
 done
+# a trace onto a folder or a FIFO (as root, --trace-csv /dev/full renamed a regular file
+# over the device): exit 1 naming it, the FIFO left as it was (hostile sweep, issue 22)
+mkdir -p "$WORK/tracedir"; rm -f "$WORK/fifo"; mkfifo "$WORK/fifo"
+for t in "$WORK/tracedir" "$WORK/fifo"; do
+    "$SR" collide --d 5e-5 --vn 1 --trace-csv "$t" >/dev/null 2>"$WORK/err"; rc=$?
+    [ $rc -eq 1 ] && grep -qF -- "cannot write '$t': it exists and is not a regular file" "$WORK/err" \
+        || fail "--trace-csv $t: exit $rc, $(cat "$WORK/err")"
+done
+[ -p "$WORK/fifo" ] || fail "--trace-csv onto a FIFO replaced it"
+[ -z "$(ls -A "$WORK/tracedir")" ] && [ -z "$(ls -A "$WORK" | grep '^\.tmp-')" ] || fail "--trace-csv onto a folder left files"
+# --version with more words: refused, not dropped (hostile sweep, issue 22)
+"$SR" --version map >/dev/null 2>"$WORK/err"; rc=$?
+[ $rc -eq 2 ] && grep -qF -- "--version takes no arguments, got 'map'" "$WORK/err" || fail "--version map: exit $rc, $(cat "$WORK/err")"
 # --out naming an existing file
 : >"$WORK/plainfile"
 "$SR" map --out "$WORK/plainfile" --nd 4 --nv 4 >/dev/null 2>"$WORK/err"; rc=$?

@@ -42,6 +42,9 @@ refused "-oversubscribe needs -parallel N with N > 1" -oversubscribe
 refused "-gate must be off, tangential, shear or regime, got 'on'" -gate on
 refused "-sizes needs whole diameters in um (1..1000)" -sizes 5,,10
 refused "unknown option '-parallell'" -parallell 2
+# hostile sweep (issue 22): two mesh levels or a diameter twice were taken without a word
+refused "-test with -fine: give one mesh level (-fine or -test)" -fine -test
+refused "-sizes: '5,10,05' names a diameter twice" -sizes 5,10,05
 # the post-processing scripts: a missing option value or a malformed --window is a
 # usage error, exit 2, named (issue 22: '--gate' alone exited 1 from the shell's own
 # ${2:?}, and '--window 1e-,2,3' passed as 1,2,3)
@@ -72,6 +75,21 @@ post_refused "wedge-capture: --gate needs a name" wedge-capture --results "$tmp/
 post_refused "wedge-variant: --log needs a file" wedge-variant --variant rough --log
 post_refused "wedge-compare: --rel needs a number" wedge-compare --rel
 post_refused "wedge-panels: --title needs a text" wedge-panels --title
+# a results folder without the results: exit 1 with a message (hostile sweep, issue 22:
+# an empty 'ls | sort' under pipefail ended wedge-capture and -compose with exit 2 and
+# wedge-dispersion with exit 1, without a word)
+post_missing() {  # post_missing PATTERN SCRIPT ARGS...
+    local want=$1 script=$2; shift 2
+    "$w/post/$script" "$@" > "$tmp/out" 2> "$tmp/err"; local rc=$?
+    [ "$rc" = 1 ] || fail "$script $*: exit $rc, want 1 ($(cat "$tmp/err"))"
+    grep -qF -- "$want" "$tmp/err" || fail "$script $*: the message does not say '$want': $(cat "$tmp/err")"
+    echo "ok   $script $*: $(head -1 "$tmp/err")"
+}
+mkdir -p "$tmp/noresults"
+post_missing "wedge-capture: no $tmp/noresults/d<N>um results" wedge-capture --results "$tmp/noresults"
+post_missing "wedge-compose: no $tmp/noresults/d<N>um results" wedge-compose --results "$tmp/noresults" --out "$tmp/compose-out" --mvd 30
+post_missing "wedge-dispersion: no main deposit_per_patch.csv in $tmp/noresults" wedge-dispersion --results "$tmp/noresults" --main nearwall --others crw
+[ ! -e "$tmp/compose-out" ] || fail "wedge-compose without results created --out"
 # mpirun is asked before anything is written: a (fake) mpirun that cannot start the
 # processes stops Allrun with its message
 if [ "$ncpu" -ge 2 ]; then

@@ -74,6 +74,9 @@ bad "zero parcel mass" "--parcel-mass 0" regions --sim "$tmp/left.csv" --parcel-
 # issue 22: 1e-300 and 1e300 were taken; the range is [1e-20, 1000] kg
 bad "tiny parcel mass" "--parcel-mass 1e-300 is outside .1e-20, 1000. kg" regions --sim "$tmp/left.csv" --parcel-mass 1e-300
 bad "huge parcel mass" "--parcel-mass 1e300 is outside .1e-20, 1000. kg" regions --sim "$tmp/left.csv" --parcel-mass 1e300
+# hostile sweep (issue 22): hexadecimal numbers were taken by strtod
+bad "hexadecimal parcel mass" "--parcel-mass: .0x1p-30. is not a finite decimal number" regions --sim "$tmp/left.csv" --parcel-mass 0x1p-30
+bad "hexadecimal corner" "--corners: .0x64,80,540,60,580,420,60,400. is not 8" compare --photo "$tmp/photo.png" --corners 0x64,80,540,60,580,420,60,400 --sim "$tmp/sim.csv" --out "$tmp/bad.png"
 echo "not an image" > "$tmp/text.png"
 bad "not an image" "neither PNG nor JPEG" compare --photo "$tmp/text.png" --corners $corners --sim "$tmp/sim.csv" --out "$tmp/bad.png"
 bad "missing photo" "nothere.jpg" compare --photo "$tmp/nothere.jpg" --corners $corners --sim "$tmp/sim.csv" --out "$tmp/bad.png"

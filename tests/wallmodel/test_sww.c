@@ -1056,6 +1056,12 @@ static void loader_errors(void **s)
         { "coeffs", "coeffs (-10 nan);", SWW_EINVAL, "key 'coeffs'", "entry 1" },
         { "coeffs", "coeffs (-10 abc);", SWW_EINVAL, "key 'coeffs'", "'abc'" },
         { "vnMin", "vnMin 0.2x;", SWW_EINVAL, "key 'vnMin'", "'0.2x' is not a number" },
+        /* the other representation's keys: refused, not dropped (hostile sweep, issue 22) */
+        { "vnMax", "vnMax 6.0; vn (0.2 6); dCrit (1e-5 2e-5);", SWW_EINVAL, "key 'vn'",
+          "not used with representation polynomial" },
+        /* hexadecimal: strtod took it, OpenFOAM's reader does not (hostile sweep, issue 22) */
+        { "vnMax", "vnMax 0x6;", SWW_EINVAL, "key 'vnMax'", "'0x6' is not a number" },
+        { "coeffs", "coeffs (0x1p3 -1.3 -0.02 -0.005);", SWW_EINVAL, "key 'coeffs'", "'0x1p3' (entry 0) is not a number" },
         { "vnMin", "vnMin 7;", SWW_EINVAL, "key 'vnMin'", "7 is not below vnMax 6" },
         { "vnMin", "vnMin 6;", SWW_EINVAL, "key 'vnMin'", "6 is not below vnMax 6" },
         { "vnMin", "vnMin -1;", SWW_EINVAL, "key 'vnMin'", "-1 must be > 0" },

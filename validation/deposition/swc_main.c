@@ -99,6 +99,7 @@ typedef struct {
     size_t ntau;
     const char *out;
     const char *law;
+    int law_given;   /* --law was on the command line */
     const char *closure;
     double sublayer;
     int radius;
@@ -269,6 +270,7 @@ static int parse(int argc, char **argv, opts *o, swd_model *m)
             if (check_law(a, v))
                 return 2;
             o->law = v;
+            o->law_given = 1;
         } else if (!strcmp(a, "--closure")) {
             if (check_law(a, v))
                 return 2;
@@ -287,7 +289,9 @@ static int parse(int argc, char **argv, opts *o, swd_model *m)
                 return usage_error("%s: '%s' is not KEY=VALUE", a, v);
             memcpy(key, v, (size_t)(eq - v));
             key[eq - v] = '\0';
-            if (number(a, eq + 1, &x))
+            char opt[80];
+            snprintf(opt, sizeof opt, "--set %s", key);   /* the message names the key */
+            if (number(opt, eq + 1, &x))
                 return 2;
             if (swd_set(m, key, x) != SWD_OK) {
                 fprintf(stderr, "snowdeposit: --set %s: %s\n", v, swd_errmsg(m));
@@ -392,6 +396,17 @@ int main(int argc, char **argv)
     if (!cal && o.out) {
         swd_free(m);
         return usage_error("--out is an option of calibrate, not of channel%s%s", "", "");
+    }
+    /* an option of the other command is refused, not dropped (hostile sweep, issue 22) */
+    if (!cal && o.law_given) {
+        swd_free(m);
+        return usage_error("--law is an option of calibrate, not of channel (channel --closure %s "
+                           "calibrates for that law and uses it)%s", o.law, "");
+    }
+    if (cal && o.closure) {
+        swd_free(m);
+        return usage_error("--closure is an option of channel, not of calibrate (calibrate --law %s "
+                           "names the law to calibrate for)%s", o.closure, "");
     }
     if (cal) {
         /* the folder of FILE must take a file, checked before the work */

@@ -628,7 +628,17 @@ int sww_regime_commit(sww_model *m, const char *origin)
         if (m->has[K_DEGREE] && m->num[K_DEGREE] != (double)(m->ncoeffs - 1))
             return sww_fail(m, SWW_EINVAL, "%s: key 'degree': value %g does not match the %zu "
                             "coeffs (degree %zu)", o, m->num[K_DEGREE], m->ncoeffs, m->ncoeffs - 1);
+        /* the other representation's keys are refused, not ignored (hostile sweep,
+         * issue 22: a table beside the polynomial was dropped without a word) */
+        if (m->has_vn || m->has_dcrit)
+            return sww_fail(m, SWW_EINVAL, "%s: key '%s': not used with representation "
+                            "polynomial (vn and dCrit belong to representation table)", o,
+                            m->has_vn ? "vn" : "dCrit");
     } else {
+        if (m->ncoeffs || m->has[K_DEGREE])
+            return sww_fail(m, SWW_EINVAL, "%s: key '%s': not used with representation table "
+                            "(coeffs and degree belong to representation polynomial)", o,
+                            m->ncoeffs ? "coeffs" : "degree");
         fitkey = "dCrit";
         if (!m->has_vn)
             return sww_fail(m, SWW_EMISSING, "%s: missing key 'vn' (representation table)", o);

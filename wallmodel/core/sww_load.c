@@ -161,10 +161,13 @@ static int expect_fail(lexer *L, const char *key, const char *what)
                     L->tline, key, what, tok_desc(L));
 }
 
-/* strict number: the whole word must convert, finite */
+/* strict number: the whole word must convert, finite; decimal only (strtod also
+ * takes hexadecimal "0x6", which OpenFOAM's reader does not: one file, one meaning) */
 static int to_number(const char *w, double *v)
 {
     char *e;
+    if (strpbrk(w, "xX"))
+        return 0;
     errno = 0;
     *v = strtod(w, &e);
     return e != w && *e == '\0';

@@ -28,6 +28,20 @@ void Foam::ParcelSplitting<CloudType>::readRegions()
     const char* const form =
         "regions ( name { box (min) (max); factor F; } ... );";
 
+    // every key is known: a misspelt one ('maxCopy') was ignored without a word
+    // (hostile sweep, issue 22)
+    const wordList known({"type", "regions", "maxParcels", "maxCopies"});
+    for (const entry& e : dict)
+    {
+        if (!known.found(e.keyword()))
+        {
+            FatalIOErrorInFunction(dict)
+                << "parcelSplitting " << name << ": unknown key '" << e.keyword()
+                << "'; the accepted keys are " << known
+                << exit(FatalIOError);
+        }
+    }
+
     // the form is checked before the entries are read: OpenFOAM's own reading
     // of a dictionary as a list aborts with a message naming neither
     const entry* re = dict.findEntry("regions", keyType::LITERAL);
@@ -95,6 +109,26 @@ void Foam::ParcelSplitting<CloudType>::readRegions()
         }
         const dictionary& rd = entries[r].dict();
         regionNames_[r] = entries[r].keyword();
+        // a region's keys: a misspelt 'factr' was ignored, and 'box' beside
+        // 'boxes' dropped the boxes (hostile sweep, issue 22)
+        const wordList regionKeys({"box", "boxes", "factor"});
+        for (const entry& e : rd)
+        {
+            if (!regionKeys.found(e.keyword()))
+            {
+                at(rd)
+                    << "parcelSplitting " << name << ": region "
+                    << regionNames_[r] << ": unknown key '" << e.keyword()
+                    << "'; the accepted keys are " << regionKeys
+                    << exit(FatalIOError);
+            }
+        }
+        if (rd.found("box") && rd.found("boxes"))
+        {
+            at(rd)
+                << "parcelSplitting " << name << ": region " << regionNames_[r]
+                << ": give 'box' or 'boxes', not both" << exit(FatalIOError);
+        }
         for (label q = 0; q < r; ++q)
         {
             if (regionNames_[q] == regionNames_[r])

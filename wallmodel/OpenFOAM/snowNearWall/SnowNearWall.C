@@ -50,6 +50,16 @@ void Foam::SnowNearWall<CloudType>::readSettings(const dictionary& dict)
     }
 
     const bool closure = dict.lookupOrDefault<bool>("closure", true);
+    // a depositionClosure given as a value was taken as no closure at all
+    // (hostile sweep, issue 22)
+    const entry* ce = dict.findEntry("depositionClosure", keyType::LITERAL);
+    if (ce && !ce->isDict())
+    {
+        FatalIOErrorInFunction(dict)
+            << "snowNearWall: depositionClosure is not a sub-dictionary { ... } "
+            << "(#include the file of snowdeposit calibrate, or drop the key)"
+            << exit(FatalIOError);
+    }
     const dictionary* cd = dict.findDict("depositionClosure");
     if (closure && cd)
     {
