@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "check_util.h"
 #include "sww.h"
 #include "swt_oblique.h"
 
@@ -31,20 +32,10 @@ static double slide_of(const char *path)
 
 static double vt_last(const char *path)
 {
-    FILE *f = fopen(path, "r");
-    char line[4096];
-    double last = -1.0;
-    while (f && fgets(line, sizeof line, f)) {
-        char *p = strstr(line, "obliqueVt");
-        if (!p || !(p = strchr(p, '(')))
-            continue;
-        for (char *t = strtok(p + 1, " )"); t; t = strtok(NULL, " )"))
-            if (*t != ';')
-                last = atof(t);
-        break;
-    }
-    if (f)
-        fclose(f);
+    int n = 0;
+    double *v = list_of(path, "obliqueVt", &n);
+    const double last = v && n > 0 ? v[n - 1] : -1.0;
+    free(v);
     return last;
 }
 
@@ -66,19 +57,9 @@ int main(int argc, char **argv)
     }
     const int n = atoi(argv[2]);
     srand48(atol(argv[3]));
-    swr_params p;
-    swr_params_default(&p);
-    char err[256];
-    for (int i = 4; i < argc; i++)
-        if (swr_params_set_kv(&p, argv[i], err, sizeof err) != 0) {
-            fprintf(stderr, "oblique_check: %s\n", err);
-            return 2;
-        }
-    swr_model *m = swr_model_alloc(&p, err, sizeof err);
-    if (!m) {
-        fprintf(stderr, "oblique_check: %s\n", err);
+    swr_model *m = kernel_of_args("oblique_check", argc, argv, 4);
+    if (!m)
         return 2;
-    }
     swt_vcrit_opts o;
     swt_vcrit_opts_default(&o);
     o.full_stick = 1;

@@ -16,34 +16,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "swr_collide.h"
-#include "swr_params.h"
+#include "check_util.h"
 #include "sww.h"
-
-/* The list of key in FILE (NULL when absent); *n its length. */
-static double *list_of(const char *path, const char *key, int *n)
-{
-    FILE *f = fopen(path, "r");
-    if (!f)
-        return NULL;
-    char line[1 << 16];
-    double *v = NULL;
-    *n = 0;
-    const size_t kl = strlen(key);
-    while (fgets(line, sizeof line, f)) {
-        char *p = line;
-        while (*p == ' ')
-            p++;
-        if (strncmp(p, key, kl) != 0 || p[kl] != ' ' || !(p = strchr(p, '(')))
-            continue;
-        v = malloc(4096 * sizeof *v);
-        for (char *t = strtok(p + 1, " );\n"); t && v && *n < 4096; t = strtok(NULL, " );\n"))
-            v[(*n)++] = atof(t);
-        break;
-    }
-    fclose(f);
-    return v;
-}
 
 static size_t cell(const double *X, int n, double x)
 {
@@ -92,19 +66,9 @@ int main(int argc, char **argv)
     }
     const int n = atoi(argv[2]);
     srand48(atol(argv[3]));
-    swr_params p;
-    swr_params_default(&p);
-    char err[256];
-    for (int i = 4; i < argc; i++)
-        if (swr_params_set_kv(&p, argv[i], err, sizeof err) != 0) {
-            fprintf(stderr, "rebound_check: %s\n", err);
-            return 2;
-        }
-    swr_model *m = swr_model_alloc(&p, err, sizeof err);
-    if (!m) {
-        fprintf(stderr, "rebound_check: %s\n", err);
+    swr_model *m = kernel_of_args("rebound_check", argc, argv, 4);
+    if (!m)
         return 2;
-    }
     stat en_in = { 0 }, et_in = { 0 }, en_all = { 0 }, et_all = { 0 };
     double wd = 0, wv = 0, wt = 0, wk = 0, wm = 0;
     int kept = 0;
