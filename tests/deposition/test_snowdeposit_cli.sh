@@ -48,6 +48,10 @@ check "--t-run" "$SD" channel --t-run 1e300
 check "--law is an option of calibrate, not of channel" "$SD" channel --law wood
 check "--closure is an option of channel, not of calibrate" "$SD" calibrate --out "$WORK/x" --closure wood
 check "--set CT: 'nan' is not a finite decimal number" "$SD" channel --set CT=nan
+# hostile sweep (issue 22): 1e8 particles over t+ 1e9 started a run of centuries without
+# a word; the work is estimated before it starts and refused over the limit
+check "at least 5e+16 particle steps" "$SD" channel --particles 1e8 --t-run 1e9 --tau-plus 1
+check "--force" "$SD" calibrate --out "$WORK/x" --particles 1e6
 [ ! -e "$WORK/x" ] && [ ! -e "$WORK/y" ] && ok "no file left by the errors" || fail "a file was left"
 
 # a short calibration: the file, its keys, and the closure at work

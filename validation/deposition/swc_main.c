@@ -79,7 +79,16 @@ static const char *usage =
 "    --set KEY=VALUE     a setting of the near-wall model: layerYPlus, blendYPlus,\n"
 "                        CT, Cmu (wallmodel/core/swd.h)\n"
 "    --seed S            random seed, an integer >= 0 (default 1)\n"
+"    --force             run even when the work estimate is over the limit below\n"
 "    -h, --help          this text\n"
+"\n"
+"WORK LIMIT\n"
+"    Before any work the command estimates the particle steps from below:\n"
+"    N (t-warm + t-run) / dt-max per tau+ value and run (calibrate makes two\n"
+"    runs per value, channel --closure three). Over 1e10 steps (at about\n"
+"    0.25 us a step on a 2-core reference machine, over 40 min) it refuses,\n"
+"    exit 2, unless --force is given; over 4e8 steps (about 100 s) it prints\n"
+"    the estimate to stderr before it starts.\n"
 "\n"
 "EXIT STATUS\n"
 "    0 success, 2 usage or input error (one line naming the option and the value),\n"
@@ -103,6 +112,7 @@ typedef struct {
     const char *closure;
     double sublayer;
     int radius;
+    int force;   /* --force: run beyond the work limit */
 } opts;
 
 static int usage_error(const char *fmt, const char *a, const char *b)
@@ -256,6 +266,10 @@ static int parse(int argc, char **argv, opts *o, swd_model *m)
         }
         if (!strcmp(a, "--radius")) {
             o->radius = 1;
+            continue;
+        }
+        if (!strcmp(a, "--force")) {
+            o->force = 1;
             continue;
         }
         if (!v)
@@ -428,6 +442,27 @@ int main(int argc, char **argv)
             swd_free(m);
             return 2;
         }
+    }
+    /* the work, estimated from below before any of it (hostile sweep, issue 22: 1e8
+       particles over t+ 1e9 started a run of centuries without a word) */
+    {
+        const double runs = cal ? 2.0 : (o.closure ? 3.0 : 1.0);
+        const double steps = (double)o.p.n * (o.p.t_warm + o.p.t_run) / o.p.dt_max
+                             * (double)o.ntau * runs;
+        const double sec = steps * 0.25e-6;
+        if (steps > 1e10 && !o.force) {
+            fprintf(stderr,
+                    "snowdeposit: the run needs at least %.3g particle steps (--particles %zu x "
+                    "(--t-warm %g + --t-run %g) / --dt-max %g x %zu tau+ x %g runs), about %.3g h; "
+                    "the limit is 1e10 steps (about 40 min): use fewer particles or a shorter "
+                    "window, or --force\n",
+                    steps, o.p.n, o.p.t_warm, o.p.t_run, o.p.dt_max, o.ntau, runs, sec / 3600.0);
+            swd_free(m);
+            return 2;
+        }
+        if (steps > 4e8)
+            fprintf(stderr, "snowdeposit: estimate: at least %.3g particle steps, about %.0f s "
+                            "at 0.25 us a step\n", steps, sec);
     }
     const size_t n = o.ntau;
     double law[MAXTAU], vs[MAXTAU], vcrw[MAXTAU], vcrw_se[MAXTAU], cs[MAXTAU], vt[MAXTAU],
