@@ -168,7 +168,14 @@ expect_fatal() { # CASE PATTERN
 }
 prep "$tmp/noTau"
 foamDictionary -entry functions -remove "$tmp/noTau/system/controlDict" > /dev/null
-expect_fatal "$tmp/noTau" "the shear gate is on but the field 'wallShearStress' does not exist"
+expect_fatal_io "$tmp/noTau" "shearGate: the field 'wallShearStress' is not registered, not in the start time's folder and made by no function object"
+# a field no function object makes: refused at set-up, before the function objects
+# start and write postProcessing/ (hostile sweep case 496 of issue 22)
+prep "$tmp/noField"
+sed -i 's/^\( *\)roughnessFactor *0.01;/&\n\1field noSuchField;/' "$tmp/noField/constant/kinematicCloudProperties"
+grep -q "^ *field noSuchField;" "$tmp/noField/constant/kinematicCloudProperties" || fail "noField: field not written"
+expect_fatal_io "$tmp/noField" "shearGate: the field 'noSuchField' is not registered"
+[ ! -e "$tmp/noField/postProcessing" ] || fail "noField: postProcessing/ left behind: $(find "$tmp/noField/postProcessing")"
 prep "$tmp/noRho"
 foamDictionary -entry subModels/snowWallInteractionCoeffs/shearGate/rhoAir -remove \
     "$tmp/noRho/constant/kinematicCloudProperties" > /dev/null

@@ -382,6 +382,52 @@ bool collidingParcel(const P*, long)
     return false;
 }
 
+//- Whether the shear gate's field will be there at the first impact: it is
+//  registered now, or it can be read from the start time's folder, or a
+//  function object of system/controlDict makes it (a wallShearStress entry
+//  makes "wallShearStress"; any entry whose 'result' or 'field'... names it
+//  is taken at its word). Checked at set-up, before the function objects
+//  start and write anything (hostile sweep case 496 of issue 22).
+inline bool shearFieldProvided(const fvMesh& mesh, const word& name)
+{
+    if (mesh.foundObject<volVectorField>(name))
+    {
+        return true;
+    }
+    IOobject io
+    (
+        name, mesh.time().timeName(), mesh,
+        IOobject::MUST_READ, IOobject::NO_WRITE, false
+    );
+    if (io.typeHeaderOk<volVectorField>(false))
+    {
+        return true;
+    }
+    const dictionary& cd = mesh.time().controlDict();
+    if (!cd.isDict("functions"))
+    {
+        return false;
+    }
+    for (const entry& e : cd.subDict("functions"))
+    {
+        if (!e.isDict())
+        {
+            continue;
+        }
+        const dictionary& fd = e.dict();
+        const word type(fd.lookupOrDefault<word>("type", word::null));
+        if (type == "wallShearStress" && name == "wallShearStress")
+        {
+            return true;
+        }
+        if (fd.lookupOrDefault<word>("result", word::null) == name)
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
 } // End namespace snowWallDetail
 } // End namespace Foam
 
@@ -776,6 +822,28 @@ void Foam::SnowWallInteraction<CloudType>::applyGates
             }
             shearOn_ = true;
             tauName_ = g.lookupOrDefault<word>("field", "wallShearStress");
+            if
+            (
+               !snowWallDetail::shearFieldProvided
+                (
+                    this->owner().mesh(), tauName_
+                )
+            )
+            {
+                FatalIOErrorInFunction(g)
+                    << "snowWallInteraction: shearGate: the field '"
+                    << tauName_ << "' is not registered, not in the "
+                    << "start time's folder and made by no function object "
+                    << "of system/controlDict (a 'wallShearStress' entry of "
+                    << "type wallShearStress makes the field wallShearStress;"
+                    << " an entry whose 'result' names it is taken too). "
+                    << "Add to system/controlDict:" << nl
+                    << "    functions { wallShearStress { type wallShearStress;"
+                    << " libs (\"libfieldFunctionObjects.so\");"
+                    << " writeControl writeTime; } }" << nl
+                    << "or set shearGate { active false; }"
+                    << exit(FatalIOError);
+            }
             // checked here, not at the first impact: a huge value would
             // overflow rhoAir*tau there (SIGFPE under OpenFOAM's traps)
             rhoAir_ =
