@@ -297,6 +297,18 @@ case_from_base "$tmp/nwClosure"
 foamDictionary -entry cloudFunctions -set "{ nw { type snowNearWall; patches (wall); depositionClosure 1; } }" \
     "$tmp/nwClosure/$cpr" > /dev/null
 expect_fatal_io "$tmp/nwClosure" "snowNearWall: depositionClosure is not a sub-dictionary"
+# the #included regime file with a key or the block twice: OpenFOAM merged them (the
+# later won) where the C loader refuses; refused with the file and the key (issue 22)
+case_from_base "$tmp/dupKey"
+sed -i 's/^\( *vnMax .*\)$/&\n    vnMax 5.0;/' "$tmp/dupKey/constant/regime.coeffs"
+[ "$(grep -c '^ *vnMax ' "$tmp/dupKey/constant/regime.coeffs")" = 2 ] || fail "dupKey: vnMax not doubled"
+expect_fatal_io "$tmp/dupKey" "regime file .*dupKey/constant/regime.coeffs: duplicate entry: vnMax"
+line=$(grep -n '^ *vnMax 5.0;' "$tmp/dupKey/constant/regime.coeffs" | cut -d: -f1)
+grep -q "^file: .*/dupKey/constant/regime.coeffs at line $line\." "$tmp/dupKey/log.run" \
+    || fail "dupKey: not regime.coeffs line $line: $(grep '^file:' "$tmp/dupKey/log.run")"
+case_from_base "$tmp/dupBlock"
+printf 'regime { version 1; }\n' >> "$tmp/dupBlock/constant/regime.coeffs"
+expect_fatal_io "$tmp/dupBlock" "regime file .*dupBlock/constant/regime.coeffs: duplicate entry: regime"
 echo "unknown keys and empty lists: ok"
 
 # 6. the rebound (issue 23): `rebound table` needs the regime file's tables; a file with

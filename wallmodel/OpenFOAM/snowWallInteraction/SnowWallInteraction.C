@@ -5,6 +5,7 @@
 #include "SnowWallInteraction.H"
 #include "fvMesh.H"
 #include "Time.H"
+#include "IFstream.H"
 #include "OSspecific.H"
 #include "patchInteractionData.H"
 #include "emptyPolyPatch.H"
@@ -193,6 +194,52 @@ inline OSstream& fatalAt(const dictionary& d, const entry* e)
         "snowWallInteraction", __FILE__, __LINE__,
         blockFile(d, e ? std::string(e->keyword()) : std::string(), l0), l0, l1
     );
+}
+
+//- A regime file #included into the cloud properties gives each key once:
+//  OpenFOAM merges a repeated key or block silently (the later wins), the C
+//  loader (snowregime, the other hosts) refuses it, so the same file would
+//  mean two things (hostile sweep cases 524, 525 of issue 22). The file is
+//  read again on its own with OpenFOAM's inputMode error; its FatalIOError
+//  is caught and given again with the file, the line and the key.
+inline void checkNoDuplicates(const fileName& f)
+{
+    const entry::inputMode oldMode = entry::globalInputMode;
+    const bool oldThrow = FatalIOError.throwExceptions(true);
+    entry::globalInputMode = entry::inputMode::ERROR;
+    string msg;
+    string file;
+    label line = -1;
+    try
+    {
+        IFstream is(f);
+        // the constructor with a parent: the top-level one resets the mode
+        dictionary d(fileName("regimeFile"), dictionary::null, is);
+    }
+    catch (const Foam::IOerror& err)
+    {
+        msg = err.message();
+        file = err.ioFileName();
+        line = err.ioStartLineNumber();
+    }
+    catch (const Foam::error& err)   // any other: restored below, then given
+    {
+        msg = err.message();
+    }
+    entry::globalInputMode = oldMode;
+    FatalIOError.throwExceptions(oldThrow);
+    if (!msg.empty())
+    {
+        FatalIOError
+        (
+            "snowWallInteraction", __FILE__, __LINE__,
+            file.empty() ? f : fileName(file), line, line
+        )   << "snowWallInteraction: regime file " << f.c_str() << ": " << msg.c_str()
+            << " (a regime file gives each key and the regime block once: "
+            << "OpenFOAM would merge a repeated one, the later winning, while "
+            << "the C loader of snowregime and the other hosts refuses it)"
+            << exit(FatalIOError);
+    }
 }
 
 //- Number `key` of dictionary d, read and checked before it is used: a
@@ -653,6 +700,13 @@ void Foam::SnowWallInteraction<CloudType>::readRegime
     // check() adds the file and lines (read only on an error)
     const std::string origin(regimeDict.dictName());
     check(m, sww_regime_commit(m, origin.c_str()), regimeDict);
+    // an #included regime file: no repeated key or block (an inline regime
+    // block follows OpenFOAM's convention of its dictionary: merged)
+    const fileName f(snowWallDetail::blockFile(regimeDict, std::string(), -1));
+    if (f != snowWallDetail::dictFile(regimeDict))
+    {
+        snowWallDetail::checkNoDuplicates(f);
+    }
 }
 
 
