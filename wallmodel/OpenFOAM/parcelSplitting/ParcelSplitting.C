@@ -71,6 +71,59 @@ void Foam::ParcelSplitting<CloudType>::readRegions()
             << "parentheses:  " << form << "  got  " << is.toString()
             << exit(FatalIOError);
     }
+    // every item: a name, then a { ... } block ('regions ( lower 4 )' read as
+    // entries ran into "attempt to read beyond EOF", naming nothing)
+    for (label k = 1; k < is.size();)
+    {
+        const token& t = is[k];
+        if (t.isPunctuation() && t.pToken() == token::END_LIST)
+        {
+            break;
+        }
+        if (!t.isWord() && !t.isString())
+        {
+            FatalIOErrorInFunction(is)
+                << "parcelSplitting " << name << ": 'regions': expected a "
+                << "region name, got " << t << " (item " << k << " of the "
+                << "list):  " << form << exit(FatalIOError);
+        }
+        const string rn(t.isWord() ? string(t.wordToken()) : t.stringToken());
+        ++k;
+        if
+        (
+            k >= is.size()
+         || !is[k].isPunctuation()
+         || is[k].pToken() != token::BEGIN_BLOCK
+        )
+        {
+            FatalIOErrorInFunction(is)
+                << "parcelSplitting " << name << ": 'regions': region '"
+                << rn.c_str() << "' must be followed by its dictionary "
+                << "{ box (min) (max); factor F; }, got "
+                << (k < is.size() ? is[k].info() : token().info())
+                << ":  " << form << exit(FatalIOError);
+        }
+        label depth = 0;
+        do
+        {
+            if (is[k].isPunctuation() && is[k].pToken() == token::BEGIN_BLOCK)
+            {
+                ++depth;
+            }
+            else if (is[k].isPunctuation() && is[k].pToken() == token::END_BLOCK)
+            {
+                --depth;
+            }
+            ++k;
+        } while (k < is.size() && depth > 0);
+        if (depth > 0)
+        {
+            FatalIOErrorInFunction(is)
+                << "parcelSplitting " << name << ": 'regions': region '"
+                << rn.c_str() << "': '{' without its '}':  " << form
+                << exit(FatalIOError);
+        }
+    }
     const PtrList<entry> entries(is);
 
     // a region's entries read from the list carry only their own name: an
