@@ -297,6 +297,13 @@ case_from_base "$tmp/nwClosure"
 foamDictionary -entry cloudFunctions -set "{ nw { type snowNearWall; patches (wall); depositionClosure 1; } }" \
     "$tmp/nwClosure/$cpr" > /dev/null
 expect_fatal_io "$tmp/nwClosure" "snowNearWall: depositionClosure is not a sub-dictionary"
+# snowNearWall on a laminar flow walked with k = epsilon = 0: dispersion none without a
+# word (hostile sweep case 570); refused at set-up
+case_from_base "$tmp/nwLaminar"
+foamDictionary -entry cloudFunctions -set "{ nw { type snowNearWall; patches (wall); } }" \
+    "$tmp/nwLaminar/$cpr" > /dev/null
+expect_fatal_io "$tmp/nwLaminar" "snowNearWall: the flow is laminar (simulationType laminar in"
+! grep -q "^Time = " "$tmp/nwLaminar/log.run" || fail "nwLaminar: refused only after a time step"
 # the #included regime file with a key or the block twice: OpenFOAM merged them (the
 # later won) where the C loader refuses; refused with the file and the key (issue 22)
 case_from_base "$tmp/dupKey"

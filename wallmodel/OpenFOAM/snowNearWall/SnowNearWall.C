@@ -236,6 +236,28 @@ void Foam::SnowNearWall<CloudType>::buildNearest()
 
 
 template<class CloudType>
+void Foam::SnowNearWall<CloudType>::checkTurbulent
+(
+    const turbulenceModel& turb
+) const
+{
+    // a laminar flow has k = epsilon = 0: the walk would add nothing, and the
+    // closure deposit by a u_tau without turbulence; without this the model
+    // ran as dispersion none without a word (hostile sweep case 570, issue 22)
+    const word sim(turb.lookupOrDefault<word>("simulationType", word::null));
+    if (sim == "laminar")
+    {
+        FatalIOErrorInFunction(this->coeffDict())
+            << "snowNearWall: the flow is laminar (simulationType laminar in "
+            << turb.objectPath() << "): the near-wall model walks the "
+            << "particles with the turbulence model's k and epsilon. Use a "
+            << "RAS or LES turbulence model, or remove this cloud function"
+            << exit(FatalIOError);
+    }
+}
+
+
+template<class CloudType>
 void Foam::SnowNearWall<CloudType>::refreshFlow()
 {
     const CloudType& cloud = this->owner();
@@ -251,6 +273,7 @@ void Foam::SnowNearWall<CloudType>::refreshFlow()
             << " in the registry: the model needs its k, epsilon and wall"
             << " shear stress" << exit(FatalError);
     }
+    checkTurbulent(*turb);
     k_ = turb->k()().primitiveField();
     epsilon_ = turb->epsilon()().primitiveField();
     nu_ = turb->nu()().primitiveField();
@@ -322,6 +345,22 @@ Foam::SnowNearWall<CloudType>::SnowNearWall
         FatalErrorInFunction << "snowNearWall: out of memory" << exit(FatalError);
     }
     readSettings(this->coeffDict());
+    {
+        // checked at set-up when the flow's turbulence model is already
+        // there (most solvers make it before the cloud), else at the first
+        // step
+        const word turbName =
+            IOobject::groupName
+            (
+                turbulenceModel::propertiesName, owner.U().group()
+            );
+        const turbulenceModel* turb =
+            owner.mesh().template findObject<turbulenceModel>(turbName);
+        if (turb)
+        {
+            checkTurbulent(*turb);
+        }
+    }
     buildNearest();
     nClosure_.setSize(patches_.size(), Zero);
     mClosure_.setSize(patches_.size(), Zero);
