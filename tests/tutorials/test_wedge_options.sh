@@ -38,6 +38,7 @@ refused "got '007'" -parallel 007
 refused "got '99999999999999999999'" -parallel 99999999999999999999
 refused "got '-2'" -parallel -2
 refused "got ''" -parallel
+refused "-rebound needs the transient route" -steady -rebound
 refused "-oversubscribe needs -parallel N with N > 1" -oversubscribe
 refused "-gate must be off, tangential, shear or regime, got 'on'" -gate on
 refused "-sizes needs whole diameters in um (1..1000)" -sizes 5,,10
