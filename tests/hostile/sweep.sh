@@ -505,6 +505,9 @@ hc $S err 'foo' '--set foo=1 unknown key' '$SD channel --set foo=1'
 hc $S err 'CT' '--set CT=nan' '$SD channel --set CT=nan'
 hc $S err 'frob' 'unknown option' '$SD channel --frob'
 hc $S err 'particles|t-run|work|steps|limit' '1e8 particles over t+ 1e9: work beyond any limit refused' '$SD channel --particles 1e8 --t-run 1e9 --tau-plus 1'
+hc $S err 'particle steps|force' 'calibrate with 1e6 particles (3.3e11 steps, about a day): refused, --force named' '$SD calibrate --out c.coeffs --particles 1e6'
+hc $S err 'particle steps|force' 'channel --closure with 1e7 particles: the closure runs counted in the estimate' '$SD channel --closure wood --particles 1e7 --tau-plus 1,10'
+hc $S err "unknown option '1'" '--force takes no value: the stray value named' '$SD channel --force 1 --tau-plus 1'
 
 # ---------------------------------------------------------------- snowphoto
 S=snowphoto
@@ -569,7 +572,7 @@ hc $S ok '' 'a valid option set reaches the pre-run checks (control)' 'eval "$AR
 for a in "-parallel 999" "-parallel 0" "-parallel abc" "-parallel 1.5" "-parallel" "-gate on" "-gate" "-sizes 0" \
          "-sizes 2000" "-sizes 5,,10" "-sizes 5.5" "-sizes" "-dispersion foo" "-dispersion nearwall,nearwall" \
          "-dispersion" "-oversubscribe" "-parallell 2" "--steady" "-steady -sizes 5" "-steady -feedback" \
-         "-steady -rough" "-rough -gate regime" "-steady -dispersion nearwall,crw" "-parallel 2 -test -parallel 99"; do
+         "-steady -rough" "-steady -rebound" "-rebound 2" "-rough -gate regime" "-steady -dispersion nearwall,crw" "-parallel 2 -test -parallel 99"; do
     hc $S err "${a%% *}|Allrun" "Allrun $a refused before anything is written" "eval \"\$AR $a\""
 done
 hc $S err 'sizes' 'Allrun -sizes 5,5 (a diameter twice)' 'eval "$AR -sizes 5,5"'
@@ -618,7 +621,7 @@ done
 for a in "" "--out o.png" "--out o.png --title T" "--out o.png --title T a.csv"; do
     hc $S err "wedge-panels" "wedge-panels $a" "\$W/post/wedge-panels $a"
 done
-for a in "" "--variant foo --results . --gate off" "--variant rough --results . --gate" "--variant rough --results . --gate off --rel 0"; do
+for a in "" "--variant foo --results . --gate off" "--variant rough --results . --gate" "--variant rough --results . --gate off --rel 0" "--variant rebound --results . --gate off --rel 2"; do
     hc $S err "wedge-variant" "wedge-variant $a" "\$W/post/wedge-variant $a"
 done
 
@@ -769,6 +772,8 @@ of 'regions' 'regions as a word' '' 'split { type parcelSplitting; regions lower
 of 'regions' 'regions missing' '' 'split { type parcelSplitting; }'
 of 'regions' 'regions ()' '' 'split { type parcelSplitting; regions (); }'
 of 'lower' 'a region as a value' '' 'split { type parcelSplitting; regions ( lower 4 ); }'
+of 'region name|4' 'a number where a region name belongs' '' 'split { type parcelSplitting; regions ( 4 ); }'
+of 'region name|box' 'a second region without its name' '' 'split { type parcelSplitting; regions ( lower { box (-1 0.025 -1) (1 0.06 1); factor 4; } { box (-1 0 -1) (1 0.01 1); factor 2; } ); }'
 of 'lower' 'a region named twice' '' 'split { type parcelSplitting; regions ( lower { box (-1 0.025 -1) (1 0.06 1); factor 4; } lower { box (-1 0.025 -1) (1 0.06 1); factor 2; } ); }'
 of 'factr' 'a misspelt key in a region' '' 'split { type parcelSplitting; regions ( lower { box (-1 0.025 -1) (1 0.06 1); factr 4; factor 4; } ); }'
 of 'maxCopy' 'a misspelt key of parcelSplitting' '' "split { type parcelSplitting; maxCopy 10; $L }"
@@ -814,6 +819,21 @@ Each with a regression test in the test file of its surface; the cases below are
   own message, exit 1 as documented.
 - `snowdeposit --set CT=nan` did not name the key.
 
+Found by the run of 2026-11-25 17:14 and fixed (main, after the merge of issue22-sweep):
+
+- **Work without bound**: `snowdeposit channel --particles 1e8 --t-run 1e9` started a run of
+  centuries without a word. The particle steps are now estimated from below before any work
+  and refused over 1e10 unless `--force` (validation/deposition/swc_main.c).
+- **Leftover**: a shear gate whose `field` no function object makes stopped at the first
+  impact, after the function objects had written `postProcessing/`; the field is now checked
+  at set-up (registered, in the start time's folder, or made by a function object).
+- **Silent**: a regime file `#include`d with a key or the `regime` block twice was merged by
+  OpenFOAM (the later won) where the C loader refuses it; the wrapper now reads the file again
+  with `inputMode error` and names the file, line and key. `snowNearWall` on a laminar flow
+  walked with k = eps = 0 (dispersion none); refused at set-up.
+- **Unnamed**: `parcelSplitting { regions ( lower 4 ); }` ended in "attempt to read beyond
+  EOF"; the list is checked item by item (a name, then its block).
+
 NOTES
 secs=$(( $(date +%s) - start ))
 total=$(wc -l < "$rows")
@@ -850,7 +870,7 @@ for k in order:
         o.append("| %s | %d |" % (k, cnt[k]))
 o.append("| **total** | **%d** |\n" % len(rows))
 o.append("Cases per surface: " + ", ".join("%s %d" % (k, v) for k, v in surf.items()) + ".\n")
-o.append("## Found by this sweep and fixed (branch issue22-sweep)\n")
+o.append("## Found by the sweeps of issue 22 and fixed\n")
 o.append(open(os.environ["SW_NOTES"]).read())
 o.append("## Findings of this run (cases that are not clean)\n")
 bad = [r for r in rows if r[4] != "clean"]
