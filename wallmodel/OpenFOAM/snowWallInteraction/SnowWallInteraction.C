@@ -432,8 +432,8 @@ bool collidingParcel(const P*, long)
 //- Whether the shear gate's field will be there at the first impact: it is
 //  registered now, or it can be read from the start time's folder, or a
 //  function object of system/controlDict makes it (a wallShearStress entry
-//  makes "wallShearStress"; any entry whose 'result' or 'field'... names it
-//  is taken at its word). Checked at set-up, before the function objects
+//  makes "wallShearStress"; any entry whose 'result' names it is taken at
+//  its word). Checked at set-up, before the function objects
 //  start and write anything (hostile sweep case 496 of issue 22).
 inline bool shearFieldProvided(const fvMesh& mesh, const word& name)
 {
