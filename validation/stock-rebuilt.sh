@@ -25,7 +25,7 @@
 # printed), 2 usage error.
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
-out= name= end= stock=0 solver=
+out='' name='' end='' stock=0 solver=''
 usage() { echo "stock-rebuilt.sh: $1 (see --help)" >&2; exit 2; }
 while [ $# -gt 0 ]; do
     case "$1" in
