@@ -132,6 +132,7 @@ stock_build() {
     . "$top/etc/openfoam-env.sh"
     local n d l exe mark log
     [ -n "${orig:-}" ] || orig=$(ls "$cache"/openfoam_1912.200626.orig.tar.* 2>/dev/null | head -n1 || true)
+    local todo=() get=()
     for n in "${stock[@]}"; do
         stock_spec "$n"
         exe="$FOAM_USER_APPBIN/$n" mark="$FOAM_USER_APPBIN/.$n.stock"
@@ -139,12 +140,21 @@ stock_build() {
             say "stock $n already built with '$s_flags' in ${exe#$top/}"
             continue
         fi
+        todo+=("$n")
         for d in "${s_unpack[@]}"; do
-            [ -d "$ofdir/$d" ] && continue
-            say "unpacking $d from ${orig##*/}"
-            tar -xf "$orig" -C "$cache" "openfoam-OpenFOAM-v1912.200626/$d" \
-                || die "unpacking $d from $orig failed"
+            [ -d "$ofdir/$d" ] || get+=("openfoam-OpenFOAM-v1912.200626/$d")
         done
+    done
+    [ ${#todo[@]} -gt 0 ] || return 0
+    if [ ${#get[@]} -gt 0 ]; then
+        # one pass over the tarball (about 10 s each)
+        say "unpacking ${get[*]#openfoam-OpenFOAM-v1912.200626/} from ${orig##*/}"
+        [ -n "$orig" ] || die "no openfoam_1912.200626.orig.tar.* in $cache (run etc/setup.sh without --stock-solvers first?)"
+        tar -xf "$orig" -C "$cache" "${get[@]}" || die "unpacking ${get[*]} from $orig failed"
+    fi
+    for n in "${todo[@]}"; do
+        stock_spec "$n"
+        exe="$FOAM_USER_APPBIN/$n" mark="$FOAM_USER_APPBIN/.$n.stock"
         for l in "${s_lninc[@]}"; do
             [ -d "$FOAM_SRC/$l" ] || continue   # a -I folder of Make/options that v1912 lacks
             (cd "$FOAM_SRC" && wmakeLnInclude -u "$l" >/dev/null 2>&1) || die "wmakeLnInclude $l failed"
