@@ -37,8 +37,20 @@ int main(int argc, char *argv[])
     {
         if (err[celli] > 1e-9*mag(U0)) ++nBad;
     }
+    // the largest error of each component: which ones the overwrite reaches
+    vector maxComp(Zero);
+    forAll(err, celli)
+    {
+        const vector d(rec.primitiveField()[celli] - U0);
+        for (direction i = 0; i < vector::nComponents; ++i)
+        {
+            maxComp[i] = max(maxComp[i], mag(d[i]));
+        }
+    }
     Info<< "reconstructCheck: cells " << mesh.nCells()
         << ", off by more than 1e-9 |U0|: " << nBad
-        << ", max |error| / |U0|: " << max(err)/mag(U0) << endl;
+        << ", max |error| / |U0|: " << max(err)/mag(U0)
+        << ", per component x y z: " << maxComp[0]/mag(U0) << ' '
+        << maxComp[1]/mag(U0) << ' ' << maxComp[2]/mag(U0) << endl;
     return 0;
 }

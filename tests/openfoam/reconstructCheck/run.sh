@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # run.sh - fvc::reconstruct of a uniform vector on the meshes of Debian's stock tutorials,
 # compiled with GCC's defaults of wmake (-O3) and with the fix -D__restrict__= (the flag of
-# etc/setup.sh --stock-solvers): prints per mesh the cells off by more than 1e-9 |U0| and
-# the largest relative error of each build. On demand (not a ctest test): it compiles
+# etc/setup.sh --stock-solvers): prints per mesh the cells off by more than 1e-9 |U0|, the
+# largest relative error of each build and that of each component. On demand (not a ctest test): it compiles
 # reconstructCheck.C twice (about 1 min each on 2 cores) into a temp folder.
 #
 # Usage: tests/openfoam/reconstructCheck/run.sh [TUTORIAL...]
@@ -34,7 +34,7 @@ build() {
 echo "run.sh: compiling reconstructCheck as wmake does (-O3) and with -D__restrict__="
 build default ""
 build fixed "-D__restrict__="
-printf '| mesh | build | cells | cells off by > 1e-9 U0 | max error / U0 |\n|---|---|---:|---:|---:|\n'
+printf '| mesh | build | cells | cells off by > 1e-9 U0 | max error / U0 | x | y | z |\n|---|---|---:|---:|---:|---:|---:|---:|\n'
 for t in "$@"; do
     [ -d "$examples/$t" ] || { echo "run.sh: no $examples/$t" >&2; exit 1; }
     c="$tmp/case-${t//\//_}"
@@ -44,7 +44,7 @@ for t in "$@"; do
     for b in default fixed; do
         line=$(cd "$c" && "$tmp/bin/reconstructCheck-$b" 2>&1 | grep '^reconstructCheck:') \
             || { echo "run.sh: reconstructCheck-$b failed on $t" >&2; exit 1; }
-        read -r n bad mx <<< "$(sed 's/.*cells \([0-9]*\), off.*: \([0-9]*\), max.*: \(.*\)/\1 \2 \3/' <<< "$line")"
-        printf '| %s | %s | %s | %s | %s |\n' "${t##*/}" "$b" "$n" "$bad" "$mx"
+        read -r n bad mx ex ey ez <<< "$(sed 's/.*cells \([0-9]*\), off.*: \([0-9]*\), max.*: \(.*\), per component x y z: \(.*\)/\1 \2 \3 \4/' <<< "$line")"
+        printf '| %s | %s | %s | %s | %s | %s | %s | %s |\n' "${t##*/}" "$b" "$n" "$bad" "$mx" "$ex" "$ey" "$ez"
     done
 done
