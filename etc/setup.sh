@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # etc/setup.sh - make a Debian 12 machine ready to build and run SnowWall.
 #
-# Usage: etc/setup.sh [--help] [--no-openfoam]
+# Usage: etc/setup.sh [--help] [--no-openfoam] [--stock-solvers NAME[,NAME...]]
 #
 # Installs (as root, with apt-get) the Debian packages SnowWall needs (among
 # them Code_Saturne 6.0 and gfortran, for the Code_Saturne binding's test), then
@@ -15,19 +15,49 @@
 #
 # --no-openfoam   install only what the C parts need (compiler, cmake, GSL,
 #                 cmocka, gnuplot); skip OpenFOAM and its headers, and Code_Saturne.
+# --stock-solvers NAME[,NAME...]
+#                 opt-in, not part of the default set-up (minutes of compiling):
+#                 also rebuild these stock v1912 solvers, which Debian's build of
+#                 them breaks, from the source package with the fix, into
+#                 platforms/bin (FOAM_USER_APPBIN, first on PATH after sourcing
+#                 etc/openfoam-env.sh). Accepted names: MPPICFoam, reactingParcelFoam;
+#                 both are built with -D__restrict__= (their fvc::reconstruct
+#                 breaks the __restrict__ promise of OpenFOAM's loop macros, which
+#                 GCC 12 relies on: wrong on non-Cartesian cells; doc/wallmodel.md,
+#                 "Stock solvers rebuilt"). Skipped when already built with the same fix;
+#                 the first build takes about 1-2 min a solver on 2 cores.
 #
-# Exit status: 0 ready, 1 a step failed (the message names it).
+# Exit status: 0 ready, 1 a step failed or a bad option (the message names it).
 set -euo pipefail
 
 top=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 want_of=1
-for a in "$@"; do
-    case "$a" in
-        -h|--help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+stock=()              # --stock-solvers: the stock solvers to rebuild with the fix
+stock_known=(MPPICFoam reactingParcelFoam)
+stock_list() {        # stock_list LIST: check each name of the comma list, add it once
+    local n k ok names
+    [ -n "$1" ] || { echo "setup.sh: --stock-solvers needs a list of solver names (accepted: ${stock_known[*]})" >&2; exit 1; }
+    IFS=, read -r -a names <<< "$1"
+    for n in "${names[@]}"; do
+        ok=0
+        for k in "${stock_known[@]}"; do [ "$n" = "$k" ] && ok=1; done
+        [ "$ok" = 1 ] || { echo "setup.sh: --stock-solvers: unknown solver '$n' (accepted: ${stock_known[*]})" >&2; exit 1; }
+        case " ${stock[*]:-} " in *" $n "*) ;; *) stock+=("$n") ;; esac
+    done
+}
+while [ $# -gt 0 ]; do
+    case "$1" in
+        -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;;
         --no-openfoam) want_of=0 ;;
-        *) echo "setup.sh: unknown option '$a' (see --help)" >&2; exit 1 ;;
+        --stock-solvers) [ $# -ge 2 ] || stock_list ""; stock_list "$2"; shift ;;
+        --stock-solvers=*) stock_list "${1#--stock-solvers=}" ;;
+        *) echo "setup.sh: unknown option '$1' (see --help)" >&2; exit 1 ;;
     esac
+    shift
 done
+if [ "$want_of" = 0 ] && [ ${#stock[@]} -gt 0 ]; then
+    echo "setup.sh: --stock-solvers needs OpenFOAM: it cannot go with --no-openfoam" >&2; exit 1
+fi
 
 say() { printf 'setup: %s\n' "$*"; }
 die() { printf 'setup: error: %s\n' "$*" >&2; exit 1; }
@@ -64,11 +94,93 @@ cache="$top/.cache/openfoam"
 ofdir="$cache/openfoam-OpenFOAM-v1912.200626"
 stamp="$cache/.ready"
 pimple=applications/solvers/incompressible/pimpleFoam
+
+# --- opt-in (--stock-solvers): stock solvers rebuilt from the source package with the fix ---
+# stock_spec NAME sets s_dir (the solver's folder in the source tree), s_unpack (folders
+# of the orig tarball it needs), s_lninc (folders under src/ whose lnInclude it needs),
+# s_applninc (the same for folders beside the solver) and s_flags (the fix: extra
+# compiler flags, through wmake's FOAM_EXTRA_CXXFLAGS)
+stock_spec() {
+    s_lninc=(); s_applninc=()
+    case "$1" in
+        MPPICFoam)
+            # fvc::reconstruct's inv(tmp) & tmp reuses its input's storage while the
+            # loop macros declare it __restrict__: GCC 12 overwrites the input before
+            # reading it on skewed cells (doc/wallmodel.md)
+            s_dir=applications/solvers/lagrangian/DPMFoam/MPPICFoam
+            s_unpack=(applications/solvers/lagrangian/DPMFoam)
+            s_lninc=(TurbulenceModels/phaseIncompressible)
+            s_applninc=(applications/solvers/lagrangian/DPMFoam/DPMTurbulenceModels)
+            s_flags="-D__restrict__=" ;;
+        reactingParcelFoam)
+            # the same fvc::reconstruct, in its momentum predictor (UEqn.H): wrong on
+            # 1050 of verticalChannel's cells, whose step 2 then stops in
+            # heRhoThermo::correct (doc/wallmodel.md)
+            s_dir=applications/solvers/lagrangian/reactingParcelFoam
+            s_unpack=(applications/solvers/lagrangian/reactingParcelFoam
+                      applications/solvers/combustion/reactingFoam)
+            s_lninc=(sampling thermophysicalModels/chemistryModel ODE combustionModels)
+            s_flags="-D__restrict__=" ;;
+    esac
+}
+
+# stock_build: build each solver of --stock-solvers into platforms/bin, unless the one
+# there was built with the same fix (its stamp platforms/bin/.NAME.stock holds the flags)
+stock_build() {
+    [ ${#stock[@]} -gt 0 ] || return 0
+    # shellcheck source=openfoam-env.sh
+    . "$top/etc/openfoam-env.sh"
+    local n d l exe mark log
+    [ -n "${orig:-}" ] || orig=$(ls "$cache"/openfoam_1912.200626.orig.tar.* 2>/dev/null | head -n1 || true)
+    local todo=() get=()
+    for n in "${stock[@]}"; do
+        stock_spec "$n"
+        exe="$FOAM_USER_APPBIN/$n" mark="$FOAM_USER_APPBIN/.$n.stock"
+        if [ -x "$exe" ] && [ -f "$mark" ] && [ "$(cat "$mark")" = "$s_flags" ]; then
+            say "stock $n already built with '$s_flags' in ${exe#$top/}"
+            continue
+        fi
+        todo+=("$n")
+        for d in "${s_unpack[@]}"; do
+            [ -d "$ofdir/$d" ] || get+=("openfoam-OpenFOAM-v1912.200626/$d")
+        done
+    done
+    [ ${#todo[@]} -gt 0 ] || return 0
+    if [ ${#get[@]} -gt 0 ]; then
+        # one pass over the tarball (about 10 s each)
+        say "unpacking ${get[*]#openfoam-OpenFOAM-v1912.200626/} from ${orig##*/}"
+        [ -n "$orig" ] || die "no openfoam_1912.200626.orig.tar.* in $cache (run etc/setup.sh without --stock-solvers first?)"
+        tar -xf "$orig" -C "$cache" "${get[@]}" || die "unpacking ${get[*]} from $orig failed"
+    fi
+    for n in "${todo[@]}"; do
+        stock_spec "$n"
+        exe="$FOAM_USER_APPBIN/$n" mark="$FOAM_USER_APPBIN/.$n.stock"
+        for l in "${s_lninc[@]}"; do
+            [ -d "$FOAM_SRC/$l" ] || continue   # a -I folder of Make/options that v1912 lacks
+            (cd "$FOAM_SRC" && wmakeLnInclude -u "$l" >/dev/null 2>&1) || die "wmakeLnInclude $l failed"
+        done
+        for l in "${s_applninc[@]}"; do
+            (cd "$WM_PROJECT_DIR" && wmakeLnInclude -u "$l" >/dev/null 2>&1) || die "wmakeLnInclude $l failed"
+        done
+        # objects of an earlier build with other flags would be reused: remove them
+        rm -rf "$WM_PROJECT_DIR/build/$WM_OPTIONS/$s_dir" "$mark"
+        mkdir -p "$FOAM_USER_APPBIN"
+        log="$cache/log.stock-$n"
+        say "building stock $n with '$s_flags' into ${FOAM_USER_APPBIN#$top/} (1-2 min; log ${log#$top/})"
+        (cd "$ofdir/$s_dir" && FOAM_APPBIN="$FOAM_USER_APPBIN" \
+            FOAM_SOLVERS="$ofdir/applications/solvers" FOAM_EXTRA_CXXFLAGS="$s_flags" \
+            wmake) > "$log" 2>&1 || { tail -20 "$log" >&2; die "building stock $n failed (log $log)"; }
+        [ -x "$exe" ] || die "building stock $n left no $exe (log $log)"
+        printf '%s\n' "$s_flags" > "$mark"
+        say "built ${exe#$top/}"
+    done
+}
 if [ -f "$stamp" ] && [ -d "$ofdir/src/lagrangian/intermediate/lnInclude" ] \
    && [ -d "$ofdir/src/lagrangian/spray/lnInclude" ] \
    && [ -x "$ofdir/platforms/tools/linux64Gcc/wmkdepend" ] && [ -f "$ofdir/$pimple/pEqn.H" ] \
    && [ -f "$ofdir/bin/tools/RunFunctions" ]; then
     say "OpenFOAM v1912 sources ready in ${ofdir#$top/}"
+    stock_build
     exit 0
 fi
 mkdir -p "$cache"
@@ -128,3 +240,4 @@ for l in OpenFOAM OSspecific/POSIX finiteVolume meshTools lagrangian/basic \
 done
 touch "$stamp"
 say "ready: OpenFOAM v1912 headers and wmake in ${ofdir#$top/}"
+stock_build

@@ -15,7 +15,9 @@
 #    MPPIC cloud: a region over the lower sixth of the column, factor 4: parcels are
 #    split, the mass balance still closes.
 # (The stock MPPICFoam cases injectionChannel and cyclone diverge within 5 time steps
-# with Debian's v1912 build, with or without this model: doc/wallmodel.md.)
+# with Debian's v1912 build, with or without this model: doc/wallmodel.md. With the
+# opt-in etc/setup.sh --stock-solvers MPPICFoam the rebuilt MPPICFoam runs them, and is
+# the one this test runs too, from PATH; test_stock_rebuilt.sh runs injectionChannel.)
 set -euo pipefail
 # shellcheck source=common.sh
 . "$(dirname "$0")/common.sh"
