@@ -92,6 +92,7 @@ int sr_settings_apply(const sr_settings *s, swr_params *p, char *err, size_t err
         const char *key = NULL;
         double v = 0.0;
         if (p->lattice != d.lattice) key = "lattice";
+        else if (p->rough_step != d.rough_step) key = "rough_step";
         else if (p->asperity_r != d.asperity_r) { key = "asperity_r"; v = p->asperity_r; }
         else if (p->asperity_spacing != d.asperity_spacing) { key = "asperity_spacing"; v = p->asperity_spacing; }
         else if (p->asperity_jitter != d.asperity_jitter) { key = "asperity_jitter"; v = p->asperity_jitter; }
@@ -102,6 +103,9 @@ int sr_settings_apply(const sr_settings *s, swr_params *p, char *err, size_t err
             if (strcmp(key, "lattice") == 0)
                 snprintf(err, errlen, "settings: lattice: hex is not used on a flat wall (wall flat); "
                          "set wall=lattice for a rough wall");
+            else if (strcmp(key, "rough_step") == 0)
+                snprintf(err, errlen, "settings: rough_step: fixed is not used on a flat wall (wall "
+                         "flat); set wall=lattice for a rough wall");
             else
                 snprintf(err, errlen, "settings: %s: %g is not used on a flat wall (wall flat); "
                          "set wall=lattice for a rough wall", key, v);

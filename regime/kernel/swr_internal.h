@@ -11,6 +11,11 @@
 /* Rough wall (swr_rough.c): bound on the free flights between contacts of
  * one impact (the time in contact is bounded by the key rough_hold). */
 #define SWR_ROUGH_FLIGHTS_MAX 10000L
+/* The rough wall's longest step, in steps h0 of the reference contact
+ * (swr_rough.c, step_size). */
+#ifndef SWR_ROUGH_STRETCH
+#define SWR_ROUGH_STRETCH 8.0
+#endif
 
 struct swr_model {
     swr_params p;

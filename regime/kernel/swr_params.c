@@ -102,7 +102,8 @@ void swr_params_default(swr_params *p)
     p->asperity_dz = 0.0;
     p->dashpot_given = 0;
     p->wall_seed = 1.0;
-    p->rough_hold = 30.0;
+    p->rough_hold = 10.0;
+    p->rough_step = SWR_ROUGH_STEP_ADAPTIVE;
 }
 
 /* Strict number: the whole text (surrounding blanks allowed), finite. */
@@ -196,6 +197,15 @@ int swr_params_set(swr_params *p, const char *key, const char *value, char *err,
             p->wall = SWR_WALL_KIND_LATTICE;
         else
             return fail(err, errlen, "wall: '%s' is neither flat nor lattice", value);
+        return 0;
+    }
+    if (strcmp(key, "rough_step") == 0) {
+        if (strcmp(value, "adaptive") == 0)
+            p->rough_step = SWR_ROUGH_STEP_ADAPTIVE;
+        else if (strcmp(value, "fixed") == 0)
+            p->rough_step = SWR_ROUGH_STEP_FIXED;
+        else
+            return fail(err, errlen, "rough_step: '%s' is neither adaptive nor fixed", value);
         return 0;
     }
     if (strcmp(key, "lattice") == 0) {
@@ -379,6 +389,8 @@ int swr_params_validate(const swr_params *p, char *err, size_t errlen)
         return fail(err, errlen, "wall: invalid value %d", (int)p->wall);
     if (p->lattice != SWR_LATTICE_SQUARE && p->lattice != SWR_LATTICE_HEX)
         return fail(err, errlen, "lattice: invalid value %d", (int)p->lattice);
+    if (p->rough_step != SWR_ROUGH_STEP_ADAPTIVE && p->rough_step != SWR_ROUGH_STEP_FIXED)
+        return fail(err, errlen, "rough_step: invalid value %d", (int)p->rough_step);
     if (check_ranges(p, wall_keys, N_WALL, err, errlen) != 0)
         return -1;
     /* Overlapping asperities (spacing below 2 r) put ever more asperities
@@ -429,5 +441,7 @@ void swr_params_print(const swr_params *p, const char *prefix, FILE *stream)
         fprintf(stream, "%swall lattice\n%slattice %s\n", pre, pre,
                 p->lattice == SWR_LATTICE_HEX ? "hex" : "square");
         print_keys(p, wall_keys, N_WALL, pre, stream);
+        fprintf(stream, "%srough_step %s\n", pre,
+                p->rough_step == SWR_ROUGH_STEP_FIXED ? "fixed" : "adaptive");
     }
 }

@@ -41,6 +41,8 @@ typedef enum {
 
 /* Key `wall`: wall geometry (swr_wall.h). */
 typedef enum { SWR_WALL_KIND_FLAT = 0, SWR_WALL_KIND_LATTICE } swr_wall_kind;
+/* Key `rough_step`: the rough wall's time step (swr_rough.c, step_size). */
+typedef enum { SWR_ROUGH_STEP_ADAPTIVE = 0, SWR_ROUGH_STEP_FIXED } swr_rough_step;
 /* Key `lattice`: arrangement of the asperities of a lattice wall. */
 typedef enum { SWR_LATTICE_SQUARE = 0, SWR_LATTICE_HEX } swr_lattice;
 
@@ -79,7 +81,11 @@ typedef struct {
     double wall_seed;    /* `wall_seed` seed of the random offsets (integer) 1    */
     double rough_hold;   /* `rough_hold` contact times t_c (flat wall, impact speed) a
                             sphere may spend in contact before, still held, it counts
-                            as stuck (swr_rough.c)                     30       */
+                            as stuck (swr_rough.c)                     10       */
+    swr_rough_step rough_step; /* `rough_step` adaptive | fixed: the step follows the
+                            contacts held (adaptive) or is the reference contact's
+                            step over sqrt(contacts) (fixed, the integrator before
+                            issue 24; kept to measure against)        adaptive */
     /* numerics */
     double accuracy;   /* `accuracy` steps per Hertz contact time (the one accuracy knob) 60 */
 } swr_params;

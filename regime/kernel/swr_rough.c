@@ -35,6 +35,7 @@
  * status SWR_STEP_BOUND.
  */
 #include <limits.h>
+#include <stddef.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -71,23 +72,39 @@ typedef struct {
     double xr[3];         /* rolling displacement */
     double ft[3];         /* tangential force */
     double mr[3];         /* rolling moment */
+    double kr;            /* rolling stiffness at the last step (0 before it) */
 } rc_contact;
+
+/* an asperity on the neighbour list */
+typedef struct {
+    int i, j;
+    double a[3];          /* centre (scaled) */
+    double due;           /* check it again once s->built reaches this */
+} rc_near;
+/* longest neighbour list kept (a 100 um sphere on 1 um asperities lists about 150) */
+#define RC_NEAR_MAX 1024
 
 typedef struct {
     const swr_model *m;
     const swr_wall *w;
     double R, r, L;         /* particle radius, asperity radius (scaled), length unit [m] */
+    double invL;            /* 1 / L */
     double reach_a;         /* R + r: centre distance at first touch of an asperity */
     swr_normal na, npl;     /* asperity and plane normal laws */
     double kda, kdp;        /* dashpot factors */
     double Is;              /* moment of inertia */
     double Gs, mu, xic;     /* scaled G*, friction, critical rolling displacement */
     double V, mass;         /* speed unit [m/s], particle mass [kg] */
+    double w2_ref;          /* squared frequency of the reference contact (step_size) */
+    int both;               /* dashpot both: the dashpots act while unloading too */
     double margin;          /* extra search distance of new_contacts */
     double guard;           /* no new contact before the sphere has moved this far */
     double moved;           /* distance moved since the last search */
-    rc_contact c[RC_MAX];
-    int nc;
+    double built;           /* distance moved since the neighbour list was made */
+    int nnear;              /* asperities on the neighbour list */
+    int nc;                 /* contacts held: c[0 .. nc-1] */
+    rc_contact c[RC_MAX];   /* not cleared at the start (open_contact sets one) */
+    rc_near near[RC_NEAR_MAX]; /* the neighbour list of new_contacts */
 } rc_state;
 
 static double dot(const double a[3], const double b[3])
@@ -106,9 +123,9 @@ static void cross(const double a[3], const double b[3], double o[3])
 static void asp(const rc_state *s, int i, int j, double a[3])
 {
     swr_wall_asperity(s->w, i, j, a);
-    a[0] /= s->L;
-    a[1] /= s->L;
-    a[2] /= s->L;
+    a[0] *= s->invL;
+    a[1] *= s->invL;
+    a[2] *= s->invL;
 }
 
 /* Overlap and normal of the contact with the asperity centred at a (NULL:
@@ -295,40 +312,86 @@ static double free_flight(const rc_state *s, const double C[3], const double v[3
     return best;
 }
 
+/* One asperity at the sphere centre C: open a contact when it touches
+ * (delta >= 0) and is not one yet. Sets *gap to its gap, or -1 when it is a
+ * contact (held or just opened: check it at every search, it may break; a
+ * breaking contact sets s->guard = 0). -1 past RC_MAX. */
+static int check_asperity(rc_state *s, const rc_near *q, const double C[3], const double v[3],
+                          double *gap)
+{
+    *gap = -1.0;
+    if (find(s, q->i, q->j) >= 0)
+        return 0;
+    double n[3];
+    const double dl = geometry(s, q->a, C, n);
+    if (dl >= 0.0)
+        return open_contact(s, q->i, q->j, q->a, v, dl, n);
+    *gap = -dl;
+    return 0;
+}
+
 /* Collect every asperity that touches now (delta >= 0) and is not a contact
  * yet, and the plane; open them. The search also notes the smallest gap to
  * any other surface within s->margin: until the sphere has moved that far no
  * new contact can form, and the next searches are skipped (the caller
  * compares s->moved with s->guard).
+ * A neighbour list (Verlet's) keeps the search short: a full scan of the
+ * lattice under the sphere lists the asperities within a gap of 2 margin;
+ * until the sphere has moved margin since (s->built), an asperity off the list
+ * is still more than margin away, so only the listed ones are checked. The
+ * caller sets s->built = INFINITY after a free flight (the list is rebuilt);
+ * a list longer than RC_NEAR_MAX is not kept (full scans every time).
  * Returns -1 when RC_MAX is exceeded. */
 static int new_contacts(rc_state *s, const double C[3], const double v[3])
 {
-    const double far = s->reach_a + s->margin;
     double guard = s->margin;
-    const double rh = side_reach(far, C[2]);
-    if (rh > 0.0) {
-        int j0, j1;
-        swr_wall_rows(s->w, (C[1] - rh) * s->L, (C[1] + rh) * s->L, &j0, &j1);
-        for (int j = j0; j <= j1; j++) {
-            int i0, i1;
-            swr_wall_row_range(s->w, j, (C[0] - rh) * s->L, (C[0] + rh) * s->L, &i0, &i1);
-            for (int i = i0; i <= i1; i++) {
-                double a[3], n[3];
-                asp(s, i, j, a);
-                const double d[3] = { C[0] - a[0], C[1] - a[1], C[2] - a[2] };
-                if (dot(d, d) > far * far)
+    if (s->built < s->margin) {
+        /* an asperity last seen at gap g cannot touch before the sphere has
+         * moved g: it is due again at built + g */
+        for (int k = 0; k < s->nnear; k++) {
+            rc_near *q = &s->near[k];
+            if (q->due <= s->built) {
+                double gap;
+                if (check_asperity(s, q, C, v, &gap) != 0)
+                    return -1;
+                q->due = s->built + gap; /* a contact: due at once */
+                if (gap < 0.0)
                     continue;
-                const double dl = geometry(s, a, C, n);
-                if (find(s, i, j) >= 0)
-                    continue;
-                if (dl >= 0.0) {
-                    if (open_contact(s, i, j, a, v, dl, n) != 0)
+            }
+            if (q->due - s->built < guard)
+                guard = q->due - s->built;
+        }
+    } else {
+        const double far = s->reach_a + 2.0 * s->margin;
+        const double rh = side_reach(far, C[2]);
+        int kept = 1;
+        s->nnear = 0;
+        if (rh > 0.0) {
+            int j0, j1;
+            swr_wall_rows(s->w, (C[1] - rh) * s->L, (C[1] + rh) * s->L, &j0, &j1);
+            for (int j = j0; j <= j1; j++) {
+                int i0, i1;
+                swr_wall_row_range(s->w, j, (C[0] - rh) * s->L, (C[0] + rh) * s->L, &i0, &i1);
+                for (int i = i0; i <= i1; i++) {
+                    rc_near q = { i, j, { 0.0, 0.0, 0.0 }, 0.0 };
+                    asp(s, i, j, q.a);
+                    const double d[3] = { C[0] - q.a[0], C[1] - q.a[1], C[2] - q.a[2] };
+                    if (dot(d, d) > far * far)
+                        continue;
+                    double gap;
+                    if (check_asperity(s, &q, C, v, &gap) != 0)
                         return -1;
-                } else if (-dl < guard) {
-                    guard = -dl;
+                    q.due = gap; /* a contact: due at once */
+                    if (gap >= 0.0 && gap < guard)
+                        guard = gap;
+                    if (s->nnear < RC_NEAR_MAX)
+                        s->near[s->nnear++] = q;
+                    else
+                        kept = 0;
                 }
             }
         }
+        s->built = kept ? 0.0 : INFINITY;
     }
     if (find(s, PLANE_ID, 0) < 0) {
         double n[3];
@@ -348,14 +411,15 @@ static int new_contacts(rc_state *s, const double C[3], const double v[3])
 /* Rotate a spring vector into the tangent plane of n, keeping its length. */
 static void to_plane(double xi[3], const double n[3])
 {
-    const double l0 = sqrt(dot(xi, xi));
-    if (!(l0 > 0.0))
+    const double l2 = dot(xi, xi);
+    if (!(l2 > 0.0))
         return;
     const double p = dot(xi, n);
     for (int k = 0; k < 3; k++)
         xi[k] -= p * n[k];
-    const double l1 = sqrt(dot(xi, xi));
-    const double f = l1 > 0.0 ? l0 / l1 : 0.0;
+    /* |xi - p n|^2 = l2 - p^2 (n a unit vector): one root instead of two */
+    const double q = l2 - p * p;
+    const double f = q > 1e-24 * l2 ? sqrt(l2 / q) : 0.0;
     for (int k = 0; k < 3; k++)
         xi[k] *= f;
 }
@@ -394,6 +458,69 @@ static double state_energy(const rc_state *s, const double v[3], const double w[
     return e;
 }
 
+/* Squared angular frequency of the sphere held by the current contacts, each
+ * grown by a travel of the sphere towards it: the sum of their stiffnesses,
+ * each the normal one 2 E* a with a^2 grown by R* travel (Hertz: a^2 = R*
+ * delta), the tangential Mindlin spring 8 G* a acting on the reduced mass of
+ * a rolling sphere (1/m + R^2/I = 3.5) and the rolling spring k_r R / I (at
+ * the last step). */
+static double held_w2(const rc_state *s, double travel)
+{
+    double w2 = 0.0;
+    for (int k = 0; k < s->nc; k++) {
+        const rc_contact *c = &s->c[k];
+        const double a2 = c->x * c->x * c->x * c->x;
+        w2 += (2.0 * c->nm->Es + 28.0 * s->Gs) * sqrt(a2 + c->nm->R * travel) + 2.5 * c->kr / s->R;
+    }
+    return w2;
+}
+
+/* The step (contact-adaptive). he resolves the reference contact (the flat
+ * wall's Hertz contact at the reference speed, at its largest overlap) with
+ * `accuracy` steps per contact time; while a dashpot acts (a contact with
+ * damping that is loading, or any contact with `dashpot both`) the base is
+ * hd = he times the damping's loading-time factor, so the short damped
+ * loading gets as many steps. A step
+ *  - resolves the contacts held as finely as the reference one, with their
+ *    stiffness at the end of the step (grown by the step's travel u h):
+ *    w2(u h) h^2 <= w2_ref base^2, found from above in a few passes;
+ *  - moves the sphere no farther than a step hd at the start speed v0 does:
+ *    h <= hd v0 / u;
+ *  - when it may reach a surface not touched yet (u h beyond the smallest gap
+ *    left, s->guard - s->moved), is no longer than the fixed step for one
+ *    more contact, hd / sqrt(n + 1), unless the gap itself allows more: on a
+ *    dense lattice of small asperities a fast sphere meets hundreds at once;
+ *  - is at most SWR_ROUGH_STRETCH times the base.
+ * An asperity's contact is softer than the reference one (R* ~ r), and after
+ * a plastic loading, in the elastic unloading and in the slow stretching of
+ * an adhesive neck (u << v0) the bounds allow far longer steps than hd. */
+static double step_size(const rc_state *s, double hd, double he, double v0, const double v[3])
+{
+    double base = he;
+    for (int k = 0; k < s->nc && base > hd; k++) {
+        const rc_contact *c = &s->c[k];
+        if (c->alpha > 0.0 && (s->both || dot(v, c->n) < 0.0))
+            base = hd;
+    }
+    const double u = sqrt(dot(v, v));
+    double h = SWR_ROUGH_STRETCH * base;
+    if (u * h > hd * v0)
+        h = hd * v0 / u;
+    for (int it = 0; it < 4; it++) {
+        const double w2 = held_w2(s, u * h);
+        if (!(w2 * h * h > s->w2_ref * base * base))
+            break;
+        h = base * sqrt(s->w2_ref / w2);
+    }
+    const double gap = s->guard - s->moved;
+    if (u * h > gap) {
+        const double hf = hd / sqrt(s->nc + 1.0);
+        if (h > hf)
+            h = gap > u * hf ? gap / u : hf;
+    }
+    return h;
+}
+
 swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_result *r,
                              const swr_trace *trace)
 {
@@ -406,8 +533,10 @@ swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_resul
                  m->wall.r);
         return SWR_EINVAL;
     }
-    static const rc_state zero;
-    rc_state st = zero, *s = &st;
+    rc_state st, *s = &st;
+    /* everything but the contact array (64 kB, set contact by contact) */
+    memset(s, 0, offsetof(rc_state, c));
+    s->built = INFINITY; /* no neighbour list yet */
     s->m = m;
     s->w = &m->wall;
     const double R_si = 0.5 * in->d, r_si = m->wall.r;
@@ -423,6 +552,7 @@ swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_resul
     const double sE = L * T * T / mass;
     s->V = V;
     s->L = L;
+    s->invL = 1.0 / L;
     s->mass = mass;
     s->R = R_si / L;
     s->r = r_si / L;
@@ -436,6 +566,18 @@ swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_resul
     s->mu = p->mu;
     s->xic = p->xi_crit / L;
     s->margin = 0.5 * (s->r < s->R ? s->r : s->R);
+    {
+        /* the reference contact: flat Hertz, mass 1, speed 1, at its largest
+         * overlap (1/2 = (8/15) E* sqrt(R) delta^(5/2)) */
+        const double Es = m->Estar * sE;
+        const double dm = pow(15.0 / (16.0 * Es * sqrt(s->R)), 0.4);
+        const double a = sqrt(s->R * dm);
+        s->w2_ref = (2.0 * Es + 28.0 * s->Gs) * a;
+        if (s->npl.Fc > 0.0) {
+            const double ra = a / s->npl.a0;
+            s->w2_ref += 2.5 * 4.0 * s->npl.Fc * ra * sqrt(ra) / s->R;
+        }
+    }
 
     r->e_target = contact_target(s, Ra_si, in->vn);
     if (m->adhesive) {
@@ -455,6 +597,8 @@ swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_resul
                         : p->cor == SWR_COR_CONSTANT ? m->alpha_const
                                                      : swr_damping_alpha(r->e_target);
     const double h0 = swr_damping_time_factor(alpha0) / p->accuracy;
+    const double he = 1.0 / p->accuracy; /* the step without damping */
+    s->both = p->dashpot == SWR_DASHPOT_BOTH;
     double h_min = h0;
     /* steps: the time bound at the step of 16 contacts at once (h0/4); more
      * contacts than that reach this bound first */
@@ -466,6 +610,7 @@ swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_resul
     double v[3] = { in->vt / V, 0.0, -in->vn / V };
     /* spin about the axis that makes the contact point slide along +x */
     double w[3] = { 0.0, -in->omega * T, 0.0 };
+    const double v0 = sqrt(dot(v, v));
     double esc;
     const double E0 = state_energy(s, v, w, &esc);
     double eref = E0;
@@ -491,6 +636,7 @@ swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_resul
             for (int q = 0; q < 3; q++)
                 C[q] += v[q] * tf;
             t += tf;
+            s->built = INFINITY; /* the neighbour list is stale after a flight */
             if (hi == INT_MAX) {
                 outcome = BOUNCE;
                 break;
@@ -523,7 +669,8 @@ swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_resul
         }
         if (t_in >= p->rough_hold || n >= r->max_steps)
             break;
-        const double h = h0 / sqrt((double)s->nc);
+        const double h = p->rough_step == SWR_ROUGH_STEP_FIXED ? h0 / sqrt((double)s->nc)
+                                                               : step_size(s, h0, he, v0, v);
         const double h2 = 0.5 * h;
         if (h < h_min)
             h_min = h;
@@ -551,9 +698,14 @@ swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_resul
         t += h;
         t_in += h;
         n++;
-        /* --- contacts at the new position: breaking, then the laws --- */
+        /* --- contacts at the new position: breaking, then the laws; the
+         * closing kick's forces are summed as each contact's are known --- */
         int kk = 0;
         double u_start[RC_MAX];
+        for (int q = 0; q < 3; q++) {
+            F[q] = 0.0;
+            M[q] = 0.0;
+        }
         for (int k = 0; k < s->nc; k++) {
             rc_contact *c = &s->c[k];
             double nn[3];
@@ -608,6 +760,7 @@ swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_resul
                     c->xr[q] += h * s->R * (vr[q] - vrn * nn[q]);
                 const double ra = a / c->nm->a0;
                 const double kr = 4.0 * c->nm->Fc * ra * sqrt(ra);
+                c->kr = kr;
                 const double r2 = dot(c->xr, c->xr);
                 if (r2 > s->xic * s->xic) {
                     const double f = s->xic / sqrt(r2);
@@ -622,16 +775,6 @@ swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_resul
             }
             if (dl > dmax)
                 dmax = dl;
-        }
-        s->nc = kk;
-        /* --- closing half kick with the new elastic and tangential forces --- */
-        for (int q = 0; q < 3; q++) {
-            F[q] = 0.0;
-            M[q] = 0.0;
-        }
-        for (int k = 0; k < s->nc; k++) {
-            const rc_contact *c = &s->c[k];
-            const double arm[3] = { -s->R * c->n[0], -s->R * c->n[1], -s->R * c->n[2] };
             double tq[3];
             cross(arm, c->ft, tq);
             for (int q = 0; q < 3; q++) {
@@ -639,6 +782,8 @@ swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_resul
                 M[q] += tq[q] + c->mr[q];
             }
         }
+        s->nc = kk;
+        /* --- closing half kick with the new elastic and tangential forces --- */
         for (int q = 0; q < 3; q++) {
             v[q] = vh[q] + h2 * F[q];
             w[q] = wh[q] + h2 * M[q] / s->Is;
@@ -678,7 +823,9 @@ swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_resul
         /* --- contacts that form now (searched once the sphere may have
          * closed the smallest gap seen at the last search) --- */
         const int before = s->nc;
-        s->moved += h * sqrt(dot(vh, vh));
+        const double step_len = h * sqrt(dot(vh, vh));
+        s->moved += step_len;
+        s->built += step_len;
         if (s->moved >= s->guard && new_contacts(s, C, v) != 0) {
             overflow = 1;
             break;

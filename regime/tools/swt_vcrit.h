@@ -70,7 +70,11 @@ void swt_vcrit_opts_default(swt_vcrit_opts *o);
 /* The outcome of one kernel result under the options: 1 sticks, 0 not. */
 int swt_outcome(const swt_vcrit_opts *o, const swr_result *res);
 /* Does diameter d stick at normal speed vn? Returns 1/0, or -1 on a kernel
- * error (message copied to msg). Accumulates counters into r when not NULL. */
+ * error (message copied to msg). Accumulates counters into r when not NULL.
+ * On a rough wall: does the stick count over o->points impact points reach
+ * o->level; the points run in their fixed order and the run stops as soon as
+ * the points left cannot change the answer (the same answer as the whole
+ * count, from fewer impacts). */
 int swt_sticks(const swr_model *m, double d, double vn, const swt_vcrit_opts *o,
                swt_vcrit_result *r, char *msg, size_t msglen);
 /* Rough wall: does a stick count of `sticks` of `points` reach the level?
