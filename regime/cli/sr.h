@@ -9,6 +9,7 @@
 #include "swt_fit.h"
 #include "swt_io.h"
 #include "swt_map.h"
+#include "swt_progress.h"
 #include "swt_vcrit.h"
 
 #define SR_EXIT_FAIL 1   /* computation or output failure */
@@ -55,9 +56,23 @@ int sr_out_error(const char *cmd, const char *dir, const char *msg);
 /* Prints the help text of a subcommand (to stdout). */
 void sr_help(const char *cmd);
 
-/* Automatic normal-speed range of a map: [v_crit(dmax) / 1.5, 1.5 v_crit(dmin)]. */
+/* Automatic normal-speed range of a map: [v_crit(dmax) / 1.5, 1.5 v_crit(dmin)].
+ * The impacts of its searches are counted into pg (NULL: none). */
 int sr_auto_vrange(const swr_model *m, swt_grid *g, int set_min, int set_max,
-                   const swt_vcrit_opts *o, char *err, size_t errlen);
+                   const swt_vcrit_opts *o, swt_progress *pg, char *err, size_t errlen);
+/* Impacts of the automatic range's searches, for an estimate (each: a scan
+ * and a bisection, o->points impacts an evaluation on a rough wall). */
+double sr_auto_vrange_work(const swr_model *m, int set_min, int set_max, const swt_vcrit_opts *o);
+/* The estimate of a run of `work` impacts (a pilot on grid g with o): printed
+ * to stderr when at least a few seconds, and refused (-1, message in err)
+ * when more than SR_LONG_RUN_S unless force. Returns 0 and *pg, the progress
+ * report of the run (swt_progress_free it; NULL is fine). */
+#define SR_LONG_RUN_S 3600.0
+/* Impacts of v_crit searches for nd diameters (snowregime vcrit). */
+double sr_vcrit_work(const swr_model *m, int nd, const swt_vcrit_opts *o);
+int sr_estimate(const char *cmd, const swr_model *m, const swt_grid *g, const swt_vcrit_opts *o,
+                double work, int threads, int force, swt_progress_mode mode, swt_progress **pg,
+                char *err, size_t errlen);
 
 /* "normal contact kept" / "full stick" / "full stick, at rest within S m" */
 const char *sr_outcome_text(const swt_vcrit_opts *o, char *buf, size_t n);

@@ -15,6 +15,9 @@ typedef struct {
     int degree, refine, plot;
     swt_vcrit_opts o;       /* outcome, tangential motion, tolerance */
     const char *out;
+    int force;              /* --force: run even when estimated above SR_LONG_RUN_S */
+    swt_progress_mode progress; /* --progress: the progress line also off a terminal */
+    swt_progress *pg;       /* the run's progress report (set by the command) */
 } sr_mapopt;
 
 static void mapopt_default(sr_mapopt *m)
@@ -33,6 +36,8 @@ static int mapopt_parse(sr_args *a, sr_mapopt *m)
     const char *v;
     long n;
     if (sr_flag(a, "--no-plot")) { m->plot = 0; return 1; }
+    if (sr_flag(a, "--force")) { m->force = 1; return 1; }
+    if (sr_flag(a, "--progress")) { m->progress = SWT_PROGRESS_ON; return 1; }
     if (sr_opt(a, "--out", &v)) {
         if (!v || !*v) { snprintf(a->err, sizeof a->err, "--out: missing folder name"); return -1; }
         m->out = v;
@@ -60,6 +65,30 @@ static int mapopt_parse(sr_args *a, sr_mapopt *m)
 #undef INT_OPT
 #undef DBL_OPT
     return 0;
+}
+
+/* Impacts of one map of mo on model m with options o (an estimate): the grid
+ * (points per cell on a rough wall) and the interface bisections (the p =
+ * 0.1 and 0.9 contours beside it on a rough wall), each evaluation about 60 %
+ * of the points (swt_sticks stops once decided). */
+static double map_work(const swr_model *m, const sr_mapopt *mo, const swt_vcrit_opts *o)
+{
+    const int rough = swr_model_rough(m);
+    const double P = rough ? o->points : 1.0, E = rough ? 0.6 * P : 1.0;
+    const double cell = log(mo->g.dmax / mo->g.dmin) / (mo->g.nd - 1);
+    const double bis = fmax(1.0, ceil(log2(cell / o->rtol)));
+    const double levels = (mo->refine ? 1.0 : 0.0) + (rough ? 2.0 : 0.0);
+    return (double)mo->g.nd * mo->g.nv * P + levels * mo->g.nv * bis * E;
+}
+
+/* The grid of the pilot before the speed range is known: the given speeds,
+ * else 0.01-10 m/s (where sticking thresholds lie) */
+static swt_grid pilot_grid(const sr_mapopt *mo)
+{
+    swt_grid g = mo->g;
+    if (!mo->set_vmin) g.vmin = mo->set_vmax ? fmin(1e-2, 0.1 * g.vmax) : 1e-2;
+    if (!mo->set_vmax) g.vmax = fmax(10.0, 10.0 * g.vmin);
+    return g;
 }
 
 /* Grid size guard: a million cells is already about 45 MB of map.csv and
@@ -125,6 +154,7 @@ static int compute_map(const swr_model *m, const sr_mapopt *mo, const swt_vcrit_
     double t0 = swt_now();
     r->mp = swt_map_alloc(&mo->g, err, errlen);
     if (!r->mp) return -1;
+    r->mp->progress = mo->pg;
     if (swt_map_run(r->mp, m, o, threads, err, errlen) != 0) return -1;
     if (swt_interface_extract(r->mp, m, o, mo->refine, threads, &r->it, err, errlen) != 0) return -1;
     r->fit_ok = swt_fit_interface(&r->it, mo->degree, &r->fit, r->fit_err, sizeof r->fit_err) == 0;
@@ -449,8 +479,22 @@ int sr_cmd_map(int argc, char **argv)
         if (axis_angle) o0.tan_angle = tan(axis[0] * M_PI / 180.0);
         else o0.vt = axis[0];
     }
+    /* the estimate, before any work (issue 24: a typo in --points started a
+     * run of hours without a word) */
+    {
+        const swt_grid gp = pilot_grid(&mo);
+        const double work = sr_auto_vrange_work(m, mo.set_vmin, mo.set_vmax, &o0)
+                          + nmaps * map_work(m, &mo, &o0);
+        if (swt_grid_check(&gp, err, sizeof err) == 0
+            && sr_estimate(cmd, m, &gp, &o0, work, s.threads, mo.force, mo.progress, &mo.pg, err,
+                           sizeof err) != 0) {
+            swr_model_free(m);
+            rc = sr_usage_error(cmd, err);
+            goto out;
+        }
+    }
     if ((!mo.set_vmin || !mo.set_vmax) &&
-        sr_auto_vrange(m, &mo.g, mo.set_vmin, mo.set_vmax, &o0, err, sizeof err) != 0) {
+        sr_auto_vrange(m, &mo.g, mo.set_vmin, mo.set_vmax, &o0, mo.pg, err, sizeof err) != 0) {
         swr_model_free(m);
         rc = sr_fail(cmd, err);
         goto out;
@@ -615,6 +659,7 @@ int sr_cmd_map(int argc, char **argv)
     swt_outset_free(os);
     swr_model_free(m);
 out:
+    swt_progress_free(mo.pg);
     free(axis);
     return rc;
 }
@@ -661,14 +706,30 @@ int sr_cmd_sensitivity(int argc, char **argv)
         swr_model_free(m0);
         return sr_usage_error(cmd, err);
     }
+    const int nvar = 1 + 2 * (int)(sizeof sens_ranges / sizeof sens_ranges[0]);
+    {
+        const swt_grid gp = pilot_grid(&mo);
+        const double work = sr_auto_vrange_work(m0, mo.set_vmin, mo.set_vmax, &mo.o)
+                          + nvar * map_work(m0, &mo, &mo.o);
+        if (swt_grid_check(&gp, err, sizeof err) == 0
+            && sr_estimate(cmd, m0, &gp, &mo.o, work, s.threads, mo.force, mo.progress, &mo.pg,
+                           err, sizeof err) != 0) {
+            swr_model_free(m0);
+            return sr_usage_error(cmd, err);
+        }
+    }
     if ((!mo.set_vmin || !mo.set_vmax) &&
-        sr_auto_vrange(m0, &mo.g, mo.set_vmin, mo.set_vmax, &mo.o, err, sizeof err) != 0) {
+        sr_auto_vrange(m0, &mo.g, mo.set_vmin, mo.set_vmax, &mo.o, mo.pg, err, sizeof err) != 0) {
+        swt_progress_free(mo.pg);
         swr_model_free(m0);
         return sr_fail(cmd, err);
     }
-    if (swt_grid_check(&mo.g, err, sizeof err) != 0) { swr_model_free(m0); return sr_usage_error(cmd, err); }
+    if (swt_grid_check(&mo.g, err, sizeof err) != 0) {
+        swt_progress_free(mo.pg);
+        swr_model_free(m0);
+        return sr_usage_error(cmd, err);
+    }
 
-    const int nvar = 1 + 2 * (int)(sizeof sens_ranges / sizeof sens_ranges[0]);
     sr_mapres res[9];
     char keys[9][16];
     double vals[9];
@@ -781,5 +842,6 @@ int sr_cmd_sensitivity(int argc, char **argv)
     swt_outset_free(os);
     for (int k = 0; k < nvar; k++) mapres_free(&res[k]);
     swr_model_free(m0);
+    swt_progress_free(mo.pg);
     return rc;
 }

@@ -178,10 +178,11 @@ int sr_fail(const char *cmd, const char *msg)
 
 /* v_crit of diameter d for the automatic speed range, or -1 with a message. */
 static int auto_vcrit(const swr_model *m, double d, const swt_vcrit_opts *vo, double *vcrit,
-                      char *err, size_t errlen)
+                      swt_progress *pg, char *err, size_t errlen)
 {
     swt_vcrit_result r;
     swt_vcrit(m, d, vo, &r);
+    swt_progress_add(pg, r.collisions);
     if (r.status != SWT_VCRIT_FOUND) {
         snprintf(err, errlen, "automatic speed range: no v_crit for d = %g m in [%g, %g] m/s "
                  "(%s); give --vmin and --vmax", d, vo->vmin, vo->vmax,
@@ -193,21 +194,74 @@ static int auto_vcrit(const swr_model *m, double d, const swt_vcrit_opts *vo, do
     return 0;
 }
 
-int sr_auto_vrange(const swr_model *m, swt_grid *g, int set_min, int set_max,
-                   const swt_vcrit_opts *o, char *err, size_t errlen)
+/* the options of the automatic range's searches */
+static swt_vcrit_opts auto_opts(const swt_vcrit_opts *o)
 {
     swt_vcrit_opts vo = *o;
     vo.vmin = 1e-4;
     vo.vmax = SWR_V_MAX;
     vo.rtol = 1e-2;
+    return vo;
+}
+
+/* Evaluations of one v_crit search: the scan by the ratio over [vmin, vmax]
+ * and the bisection to rtol (an estimate's upper side). */
+static double search_evals(const swt_vcrit_opts *o)
+{
+    const double ratio = o->scan_ratio > 1.0 ? o->scan_ratio : 2.0;
+    return ceil(log(o->vmax / o->vmin) / log(ratio)) + ceil(log2(log(ratio) / o->rtol)) + 2.0;
+}
+
+/* Impacts of one evaluation: the points on a rough wall, of which the early
+ * decision (swt_sticks) runs about 60 % on the average */
+static double eval_impacts(const swr_model *m, const swt_vcrit_opts *o)
+{
+    return swr_model_rough(m) ? 0.6 * o->points : 1.0;
+}
+
+double sr_auto_vrange_work(const swr_model *m, int set_min, int set_max, const swt_vcrit_opts *o)
+{
+    const swt_vcrit_opts vo = auto_opts(o);
+    return (double)(!set_min + !set_max) * search_evals(&vo) * eval_impacts(m, &vo);
+}
+
+double sr_vcrit_work(const swr_model *m, int nd, const swt_vcrit_opts *o)
+{
+    return nd * search_evals(o) * eval_impacts(m, o);
+}
+
+int sr_estimate(const char *cmd, const swr_model *m, const swt_grid *g, const swt_vcrit_opts *o,
+                double work, int threads, int force, swt_progress_mode mode, swt_progress **pg,
+                char *err, size_t errlen)
+{
+    *pg = NULL;
+    const double cost = swt_pilot_cost(m, g, o);
+    const double est = cost * work / (threads > 1 ? threads : 1);
+    char what[64], b[48];
+    snprintf(what, sizeof what, "snowregime %s", cmd);
+    if (est > SR_LONG_RUN_S && !force) {
+        snprintf(err, errlen, "about %s for %.3g impacts on %d threads (estimated from a pilot "
+                 "of a few impacts): more than %.0f min; give --force to run it, or fewer "
+                 "--points, a smaller grid or more --threads", swt_duration_text(est, b, sizeof b),
+                 work, threads, SR_LONG_RUN_S / 60.0);
+        return -1;
+    }
+    *pg = swt_progress_alloc(what, "impacts", work, est, threads, mode);
+    return 0;
+}
+
+int sr_auto_vrange(const swr_model *m, swt_grid *g, int set_min, int set_max,
+                   const swt_vcrit_opts *o, swt_progress *pg, char *err, size_t errlen)
+{
+    const swt_vcrit_opts vo = auto_opts(o);
     double v;
     if (!set_min) {
-        if (auto_vcrit(m, g->dmax, &vo, &v, err, errlen) != 0)
+        if (auto_vcrit(m, g->dmax, &vo, &v, pg, err, errlen) != 0)
             return -1;
         g->vmin = v / 1.5;
     }
     if (!set_max) {
-        if (auto_vcrit(m, g->dmin, &vo, &v, err, errlen) != 0)
+        if (auto_vcrit(m, g->dmin, &vo, &v, pg, err, errlen) != 0)
             return -1;
         /* within the speeds the kernel accepts */
         g->vmax = 1.5 * v < SWR_V_MAX ? 1.5 * v : SWR_V_MAX;

@@ -11,12 +11,14 @@ typedef struct {
     const swt_vcrit_opts *o;
     const double *d;
     swt_vcrit_result *r;
+    swt_progress *pg;
 } vc_ctx;
 
 static void vc_one(void *p, int k)
 {
     vc_ctx *c = p;
     swt_vcrit(c->m, c->d[k], c->o, &c->r[k]);
+    swt_progress_add(c->pg, c->r[k].collisions);
 }
 
 int sr_cmd_vcrit(int argc, char **argv)
@@ -28,7 +30,9 @@ int sr_cmd_vcrit(int argc, char **argv)
     swt_vcrit_opts o;
     swt_vcrit_opts_default(&o);
     double *d = NULL;
-    int nd = 0, have_angle = 0, have_vt = 0;
+    int nd = 0, have_angle = 0, have_vt = 0, force = 0;
+    swt_progress_mode mode = SWT_PROGRESS_AUTO;
+    swt_progress *pg = NULL;
     const char *v;
     double angle = 0.0;
     int rc = 0;
@@ -39,6 +43,8 @@ int sr_cmd_vcrit(int argc, char **argv)
         if (r > 0) continue;
         if (sr_flag(&a, "--help") || sr_flag(&a, "-h")) { sr_help(cmd); goto out; }
         if (sr_flag(&a, "--full-stick")) { o.full_stick = 1; continue; }
+        if (sr_flag(&a, "--force")) { force = 1; continue; }
+        if (sr_flag(&a, "--progress")) { mode = SWT_PROGRESS_ON; continue; }
         double *x = NULL;
         const char *name = NULL;
         double lo = 0, hi = 0;
@@ -83,9 +89,24 @@ int sr_cmd_vcrit(int argc, char **argv)
         rc = sr_usage_error(cmd, err);
         goto out;
     }
+    {
+        /* the estimate, before any work: a pilot over the diameters and the
+         * search's speed range */
+        swt_grid gp = { 2, 2, d[0], d[0], o.vmin, o.vmax, 1 };
+        for (int k = 1; k < nd; k++) {
+            gp.dmin = fmin(gp.dmin, d[k]);
+            gp.dmax = fmax(gp.dmax, d[k]);
+        }
+        if (sr_estimate(cmd, m, &gp, &o, sr_vcrit_work(m, nd, &o), nd < s.threads ? nd : s.threads,
+                        force, mode, &pg, err, sizeof err) != 0) {
+            swr_model_free(m);
+            rc = sr_usage_error(cmd, err);
+            goto out;
+        }
+    }
     swt_vcrit_result *res = calloc((size_t)nd, sizeof *res);
     if (!res) { swr_model_free(m); rc = sr_fail(cmd, "out of memory"); goto out; }
-    vc_ctx c = { m, &o, d, res };
+    vc_ctx c = { m, &o, d, res, pg };
     double t0 = swt_now();
     swt_parallel_for(nd, s.threads, vc_one, &c);
     double sec = swt_now() - t0;
@@ -150,6 +171,7 @@ int sr_cmd_vcrit(int argc, char **argv)
     free(res);
     swr_model_free(m);
 out:
+    swt_progress_free(pg);
     free(d);
     return rc;
 }

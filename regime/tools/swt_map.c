@@ -1,5 +1,6 @@
 /* swt_map.c - regime map (threaded), interface extraction. */
 #include "swt_map.h"
+#include "swt_progress.h"
 
 #include <math.h>
 #include <pthread.h>
@@ -121,6 +122,7 @@ static void map_row(void *p, int i)
             c->collisions[i] += f.points;
             c->steps[i] += f.steps;
             c->step_bound[i] += f.bound;
+            swt_progress_add(mp->progress, f.points);
         }
         return;
     }
@@ -235,7 +237,9 @@ static void itf_col(void *p, int j)
         memset(&acc, 0, sizeof acc);
         for (int it = 0; it < 100 && hi / lo > 1.0 + c->o->rtol; it++) {
             double d = sqrt(lo * hi);
+            const long before = acc.collisions;
             int s = swt_sticks(c->m, d, mp->v[j], c->o, &acc, NULL, 0);
+            swt_progress_add(mp->progress, acc.collisions - before);
             if (s < 0) break;
             if (s) lo = d; else hi = d;
         }

@@ -38,6 +38,9 @@ typedef struct {
     long nstick;           /* points that stick */
     double seconds;        /* wall time of swt_map_run */
     char msg[200];         /* first kernel warning */
+    struct swt_progress *progress; /* counts the impacts done by swt_map_run and
+                              swt_interface_extract (swt_progress.h); NULL: none.
+                              Set by the caller; not owned */
 } swt_map;
 
 typedef struct {

@@ -50,7 +50,20 @@ expect2 "thornton-ning" map $L --set cor=thornton-ning --out "$WORK/x5"
 expect2 "--points" vcrit --d 1e-5 $L --points 0
 expect2 "asperity radii" collide --d 0.01 --vn 1 $L
 expect2 "wall" collide --d 1e-5 --vn 1 --set wall=rough
-for k in 1 2 3 4 5; do [ ! -e "$WORK/x$k" ] || fail "error left $WORK/x$k"; done
+# long runs say so (issue 24): a map of hours is refused before any work, naming
+# its estimate and --force; a vcrit of hours too; with --progress a map prints its
+# estimate and the final line; a map of milliseconds without it prints neither
+expect2 "--force" map $L --points 100000 --nd 60 --nv 60 --out "$WORK/x6"
+grep -q "about [0-9.]* h for [0-9.e+]* impacts" "$WORK/e.err" || { cat "$WORK/e.err"; fail "map: the refusal gives no estimate"; }
+expect2 "--force" vcrit --d 1e-5,2e-5,3e-5,4e-5,5e-5,6e-5,7e-5,8e-5,9e-5,1e-4 $L --points 100000 --vmin 1e-4 --vmax 1000 --tol 1e-12
+"$SR" map $L --points 16 --nd 6 --nv 6 --vmin 0.1 --vmax 10 --no-plot --progress --out "$WORK/x7" \
+    >/dev/null 2>"$WORK/p.err" || { cat "$WORK/p.err"; fail "map --progress: exit $?"; }
+grep -q "^snowregime map: about .* for [0-9.e+]* impacts on 2 threads" "$WORK/p.err" \
+    || { cat "$WORK/p.err"; fail "map: no estimate"; }
+grep -q "^snowregime map: done, .* impacts in" "$WORK/p.err" || { cat "$WORK/p.err"; fail "map --progress: no final line"; }
+"$SR" map $L --points 4 --nd 4 --nv 4 --vmin 0.1 --vmax 10 --no-plot --out "$WORK/x8" >/dev/null 2>"$WORK/q.err"
+! grep -q "about\|impacts" "$WORK/q.err" || { cat "$WORK/q.err"; fail "a map of milliseconds printed an estimate"; }
+for k in 1 2 3 4 5 6; do [ ! -e "$WORK/x$k" ] || fail "error left $WORK/x$k"; done
 # validation/rough-wall.sh (the README's rough-wall table), quick
 RW=$SW_TOP/validation/rough-wall.sh
 SNOWREGIME=$SR "$RW" --out "$WORK/rw" --quick >"$WORK/rw.log" 2>&1 || { cat "$WORK/rw.log"; fail "rough-wall.sh --quick exit $?"; }
