@@ -112,8 +112,11 @@ class Model:
 
     def lammps_pulloff(self, Rs, gam):
         """LAMMPS (pair granular jkr, 29 Sep 2021) keeps a contact while the
-        overlap exceeds this; its formula with its E = (4/3) E* and coh = gam/2."""
-        coh, E = 0.5 * gam, 4.0 / 3.0 * self.Es
+        overlap exceeds a^2/R* - 2 sqrt(pi coh a/E), a^3 = 9 pi coh R*^2/(4E), with
+        coh = gam/2; measured: E = E* (the contact breaks at the step that passes this
+        overlap; with E = 4E*/3, the value in its documentation's force law, it would
+        break at -1.35 nm instead of the measured -1.63 nm for the default asperity)."""
+        coh, E = 0.5 * gam, self.Es
         a = (9 * math.pi * coh * Rs * Rs / (4 * E)) ** (1 / 3)
         return a * a / Rs - 2 * math.sqrt(math.pi * coh * a / E)
 
@@ -132,24 +135,28 @@ class Model:
 # ---------------------------------------------------------------- LAMMPS
 
 class Lammps:
-    def __init__(self, lmp, m, work, steps):
-        self.lmp, self.m, self.work, self.steps = lmp, m, work, steps
+    def __init__(self, lmp, m, work, steps, hold=100.0):
+        self.lmp, self.m, self.work, self.steps, self.hold = lmp, m, work, steps, hold
         self.n = 0
         self.seconds = 0.0
         self.runs = 0
 
-    def impact(self, x, y, vn, vt, case, dcoef, flat=0, hold=None, dt_factor=1.0):
+    def impact(self, x, y, vn, vt, case, dcoef, flat=0, hold=None, dt_factor=1.0, pjkr=0):
         """One impact. case: 'hertz' or 'jkr'. Returns a dict."""
-        return self.impacts([(x, y, vn, vt, case, dcoef, flat, hold, dt_factor)])[0]
+        return self.impacts([(x, y, vn, vt, case, dcoef, flat, hold, dt_factor, pjkr)])[0]
 
-    def spec(self, x, y, vn, vt, case, dcoef, flat=0, hold=None, dt_factor=1.0):
+    def spec(self, x, y, vn, vt, case, dcoef, flat=0, hold=None, dt_factor=1.0, pjkr=0):
         m = self.m
         jkr = case.startswith("jkr")
         gam = m.gamma if jkr else 0.0
         vref = max(vn, math.sqrt(2 * m.jkr_loss(m.R, gam, m.jkr_af(m.R, gam)) / m.mass) if jkr else 0.0)
         tc = m.tc(vref)                                    # stiffest contact: the plane, R* = R
         dt = tc / self.steps * dt_factor
-        hold = m.hold if hold is None else hold
+        # LAMMPS has no energy criterion: a sphere that has not left after `hold` flat-wall
+        # contact times counts as stuck; 100 (the kernel's rough_hold is 30, but it decides
+        # most sticks earlier by energy): at 30, slow leavers were cut off (measured: one
+        # impact left at 3.12 us against a bound of 3.07 us)
+        hold = self.hold if hold is None else hold
         gap = 0.05 * m.r if not flat else 0.05 * m.R       # start this far above the first touch
         top = 0.0 if flat else m.r
         tfly = gap / vn
@@ -175,7 +182,7 @@ class Lammps:
         var = dict(flat=flat, R=m.R, r=m.r, s=m.sp, rho=m.rho, EL=2 * m.Es, kt=8 * m.Gs, mu=m.mu,
                    damp="tsuji" if dcoef < 1 else "velocity", dcoef=dcoef if dcoef < 1 else 0,
                    coh=0.5 * gam, kroll=kroll, muroll=muroll, krollp=krollp, murollp=murollp,
-                   pjkr=0, x0=x0, y0=y0, z0=z0, vx0=vt, vz0=-vn, dt=dt, nchunk=50, tmax=tmax,
+                   pjkr=pjkr, x0=x0, y0=y0, z0=z0, vx0=vt, vz0=-vn, dt=dt, nchunk=50, tmax=tmax,
                    ztop=ztop, traj=traj, out=out)
         return var, dict(jkr=jkr, flat=flat, gam=gam, dt=dt, traj=traj, out=out)
 
@@ -225,8 +232,9 @@ class Lammps:
         n_asp = n_pl = 0
         zmin = math.inf
         reach = m.R + m.r
-        last_f = 0.0
-        sep = []
+        dmin_f = math.inf   # the most negative plane overlap at which a force acts
+        sep = []            # asperity overlap at the last step with a force, and at the first without
+        fprev = dprev = None
         with open(traj) as f:
             for line in f:
                 if line.startswith("#"):
@@ -236,6 +244,14 @@ class Lammps:
                 zmin = min(zmin, z - m.R)
                 now = set()
                 dpl = m.R - z
+                fz = float(p[5])
+                if not flat:
+                    d00 = reach - math.sqrt(x * x + y * y + z * z)    # the asperity at (0, 0)
+                    if fprev is not None and fprev != 0.0 and fz == 0.0 and d00 < 0.0:
+                        sep.append((dprev, d00))
+                    fprev, dprev = fz, d00
+                if fz != 0.0 and dpl < 0.0:
+                    dmin_f = min(dmin_f, dpl)
                 if dpl >= 0 or (("P" in alive) and dpl > off_p):
                     now.add("P")
                 if not flat:
@@ -253,11 +269,8 @@ class Lammps:
                             n_pl += 1
                         else:
                             n_asp += 1
-                for k in alive:
-                    if k not in now and k != "P":
-                        sep.append(reach - math.sqrt((x - k[0] * m.sp) ** 2 + (y - k[1] * m.sp) ** 2 + z * z))
                 alive = {k: 1 for k in now}
-        return dict(contacts=n_asp + n_pl, plane_contacts=n_pl, gap_min=zmin, sep=sep)
+        return dict(contacts=n_asp + n_pl, plane_contacts=n_pl, gap_min=zmin, sep=sep, dmin_f=dmin_f)
 
 
 # ---------------------------------------------------------------- snowregime
@@ -339,7 +352,9 @@ def calibrate(L, O, m, e, speeds, log):
     if abs(f1) > 1e-4:
         raise Fail("LAMMPS's COR could not be calibrated to %g (input %g gives %g)" % (e, x1, f1 + e))
     eL = x1
-    log.append("| LAMMPS tsuji input e for COR %.3g (flat base plane, %.3g m/s) | %.6f |" % (e, v, eL))
+    log.append("| LAMMPS tsuji input e = %.3g (its polynomial alpha(e)) gives, flat base plane, %.3g m/s | COR %.5f |"
+               % (e, v, cor(e)))
+    log.append("| LAMMPS tsuji input e for COR %.3g (flat base plane, %.3g m/s; secant) | %.6f |" % (e, v, eL))
     for vv in speeds:
         log.append("| COR on the flat base plane at %.3g m/s: LAMMPS (fix wall/gran) | %.5f |" % (vv, cor(eL, 1, vv)))
         log.append("| COR on the flat base plane at %.3g m/s: snowregime (flat wall) | %.5f |"
@@ -366,10 +381,24 @@ def jkr_single(L, O, m, eL, log):
     vs_L = math.sqrt(2 * UL / m.mass)
     log.append("| asperity contact R* [m] | %.4g |" % Rs)
     log.append("| separation overlap: the kernel's delta_c = -3 a_f^2/R* [m] | %.4g |" % dc)
-    log.append("| separation overlap: LAMMPS's criterion (formula of pair granular jkr) [m] | %.4g |" % dL)
-    r = L.impact(0, 0, 0.3, 0, "jkr", 1.0)
-    if r["sep"]:
-        log.append("| separation overlap: LAMMPS measured (elastic, 0.3 m/s, last step in contact) [m] | %.4g |" % r["sep"][0])
+    log.append("| separation overlap: LAMMPS's criterion (pair granular jkr, with E = E*) [m] | %.4g |" % dL)
+    for st in (1.0, 0.25):
+        r = L.impact(0, 0, 0.3, 0, "jkr", 1.0, dt_factor=st)
+        if r["sep"]:
+            log.append("| separation overlap: LAMMPS measured (elastic, 0.3 m/s, dt x %g): last step with a force / first without [m] | %.4g / %.4g |"
+                       % (st, r["sep"][0][0], r["sep"][0][1]))
+    # the base plane with JKR (fix wall/gran jkr), elastic, head-on: does it separate?
+    dcp = m.jkr(m.jkr_af(m.R, g), m.R, g)[0]
+    for v in (0.35, 0.5):
+        try:
+            r = L.impact(0, 0, v, 0, "jkr", 1.0, flat=1, pjkr=1)
+            what = ("left, v_z %.4g m/s" % r["v"][2]) if r["bounce"] else (
+                "still attached after %.3g s, down to overlap %.4g m (the kernel's delta_c: %.4g m)"
+                % (r["t"], r["dmin_f"], dcp))
+        except Fail:
+            what = "NaN (LAMMPS's result)"
+        log.append("| flat base plane with fix wall/gran jkr, elastic, head-on %.3g m/s (flat V_s %.4g m/s) | %s |"
+                   % (v, math.sqrt(2 * m.jkr_loss(m.R, g, m.jkr_af(m.R, g)) / m.mass), what))
     log.append("| energy lost at separation (closed form): kernel U_c / LAMMPS [J] | %.4g / %.4g (ratio %.3f) |" % (Uc, UL, UL / Uc))
     out = {}
     for name, cor, eLx in (("elastic", 1.0, 1.0), ("COR %.3g" % O.cor, None, eL)):
@@ -466,6 +495,7 @@ def main():
     ap.add_argument("--tol-v", type=float, default=0.03)
     ap.add_argument("--tol-w", type=float, default=0.05)
     ap.add_argument("--tol-e", type=float, default=0.05)
+    ap.add_argument("--tol-vz-jkr", type=float, default=0.1)
     a = ap.parse_args()
     work = os.path.join(a.out, ".work")
     os.makedirs(work, exist_ok=True)
@@ -523,15 +553,17 @@ def main():
         return 0.5 * (d["v"][0] ** 2 + d["v"][2] ** 2) + 0.5 * I * wy(d) ** 2
 
     bad = []
-    summ = ["| case | V [m/s] | angle | impacts | same outcome | same contacts | max dv_x/V | max dv_z/V | max R dw_y/V | "
+    summ = ["| case | V [m/s] | angle | impacts | bounces (s / L) | same outcome | same contacts (all / bounces) | max dv_x/V | max dv_z/V | max R dw_y/V | "
             "halving: snowregime | halving: LAMMPS | energy: (E_L - E_s - n dU)/E_in | within tolerance |",
-            "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+            "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
     groups = {}
     for r in rows:
         groups.setdefault((r["case"], r["V"], r["th"]), []).append(r)
     for (c, V, th), g in groups.items():
         same_o = sum(1 for r in g if r["o"]["bounce"] == r["l"]["bounce"])
         same_c = sum(1 for r in g if r["o"]["contacts"] == r["l"]["contacts"])
+        nb = sum(1 for r in g if r["o"]["bounce"] and r["l"]["bounce"])
+        same_cb = sum(1 for r in g if r["o"]["bounce"] and r["l"]["bounce"] and r["o"]["contacts"] == r["l"]["contacts"])
         ds = [q for q in (dev(r) for r in g) if q]
         mx = [max((q[i] for q in ds), default=0.0) for i in range(3)]
         hal = []
@@ -543,13 +575,17 @@ def main():
         # the separation criterion accounted for: a LAMMPS contact breaks with dU less lost
         ens = []
         for r in g:
-            if c.startswith("jkr") and r["o"]["bounce"] and r["l"]["bounce"]:
+            if c == "jkr-elastic" and r["o"]["bounce"] and r["l"]["bounce"]:
                 ens.append(abs(ekin(r["l"]) - ekin(r["o"]) - r["l"]["contacts"] * dUa / m.mass) / (0.5 * V * V))
         ok = 0
         for r in g:
             q = dev(r)
+            both = r["o"]["bounce"] and r["l"]["bounce"]
+            # contacts: on bounces (a stick is decided by energy in the kernel, which stops
+            # counting there, while LAMMPS's sphere rolls on to the time bound)
+            same_c_b = r["o"]["contacts"] == r["l"]["contacts"] or not both
             if c == "hertz":
-                good = (r["o"]["bounce"] == r["l"]["bounce"] and r["o"]["contacts"] == r["l"]["contacts"]
+                good = (r["o"]["bounce"] == r["l"]["bounce"] and same_c_b
                         and (q is None or (q[0] <= a.tol_v and q[1] <= a.tol_v and q[2] <= a.tol_w)))
             elif c == "jkr-elastic":
                 # the separation criterion accounted for: LAMMPS's rebound energy less n dU is the
@@ -557,23 +593,33 @@ def main():
                 # the kernel: it is within the difference of the criteria)
                 e = ekin(r["l"]) * r["l"]["bounce"] - ekin(r["o"]) - r["l"]["contacts"] * dUa / m.mass
                 e /= 0.5 * V * V
-                good = r["o"]["contacts"] == r["l"]["contacts"]
-                if r["o"]["bounce"] and r["l"]["bounce"]:
+                good = same_c_b
+                if both:
                     good = good and abs(e) <= a.tol_e and q[0] <= a.tol_v and q[2] <= a.tol_w
                 elif r["o"]["bounce"] != r["l"]["bounce"]:
-                    good = good and r["l"]["bounce"] == 1 and e <= a.tol_e
+                    # a kernel stick against a LAMMPS bounce: allowed when LAMMPS's normal
+                    # rebound energy does not exceed what its n contacts did not lose at
+                    # separation (capture is decided by the normal motion; the tangential
+                    # motion of a captured sphere goes on along the wall)
+                    en = 0.5 * r["l"]["v"][2] ** 2 - r["l"]["contacts"] * dUa / m.mass
+                    good = r["l"]["bounce"] == 1 and en <= a.tol_e * 0.5 * V * V
             else:
                 # JKR with the COR dashpot: LAMMPS's tsuji dashpot acts on the JKR contact radius
-                # and in tension too (the kernel's only at delta > 0, on sqrt(R delta)), so v_z
-                # is reported, not gated; outcome, contacts, v_x and w_y are
-                good = r["o"]["bounce"] == r["l"]["bounce"] and r["o"]["contacts"] == r["l"]["contacts"]
-                if good and r["o"]["bounce"]:
-                    good = q[0] <= a.tol_v and q[2] <= a.tol_w
+                # and in tension too (the kernel's only at delta > 0, on sqrt(R delta)): v_z within
+                # tol_vz_jkr V (the single-contact difference), and the outcome may differ when the
+                # bouncing one leaves slower than that
+                good = same_c_b
+                if both:
+                    good = good and q[0] <= a.tol_v and q[1] <= a.tol_vz_jkr and q[2] <= a.tol_w
+                elif r["o"]["bounce"] != r["l"]["bounce"]:
+                    vz = r["o"]["v"][2] if r["o"]["bounce"] else r["l"]["v"][2]
+                    good = vz <= a.tol_vz_jkr * V
             ok += good
             if not good:
                 bad.append(r)
-        summ.append("| %s | %g | %g | %d | %d | %d | %.2g | %.2g | %.2g | %s | %s | %s | %s |" % (
-            c, V, th, len(g), same_o, same_c, mx[0], mx[1], mx[2], hal[0], hal[1],
+        summ.append("| %s | %g | %g | %d | %d / %d | %d | %d / %d of %d | %.2g | %.2g | %.2g | %s | %s | %s | %s |" % (
+            c, V, th, len(g), sum(r["o"]["bounce"] for r in g), sum(r["l"]["bounce"] for r in g),
+            same_o, same_c, same_cb, nb, mx[0], mx[1], mx[2], hal[0], hal[1],
             ("%.2g" % max(ens)) if ens else "-", "%d of %d" % (ok, len(g))))
 
     secs = time.time() - t_start
@@ -582,10 +628,13 @@ def main():
                 "square lattice (asperity r = %g m, spacing %g m), %d impact points (a %d x %d grid over\n"
                 "the unit cell) x angles %s deg x speeds |v| (hertz %s, jkr %s m/s); constant COR %g\n"
                 "(dashpot on both branches, LAMMPS tsuji calibrated to it).\n"
-                "Tolerances: |dv_x|, |dv_z| <= %g |v|, R |dw_y| <= %g |v| on bounces; the same outcome;\n"
-                "Hertz also the same number of contacts.\n\n"
+                "Tolerances (bounces in both codes): |dv_x|, |dv_z| <= %g V, R |dw_y| <= %g V and the same\n"
+                "number of contacts; hertz: the same outcome; jkr-elastic: |E_L - E_s - n dU| <= %g E_in\n"
+                "instead of dv_z (dU: the separation energy a LAMMPS contact does not lose), a kernel stick\n"
+                "against a LAMMPS bounce allowed when its v_z^2/2 - n dU <= %g E_in; jkr: |dv_z| <= %g V, the\n"
+                "outcome may differ when the bouncing code leaves with v_z <= %g V.\n\n"
                 % (a.d, m.r, m.sp, len(pts), a.grid, a.grid, a.angles, a.speeds_hertz, a.speeds_jkr, a.cor,
-                   a.tol_v, a.tol_w))
+                   a.tol_v, a.tol_w, a.tol_e, a.tol_e, a.tol_vz_jkr, a.tol_vz_jkr))
         f.write("\n".join(cal) + "\n\n")
         f.write("\n".join(summ) + "\n\n")
         f.write("Runs: snowregime %d impacts in %.1f s, LAMMPS %d runs in %.1f s; total %.0f s.\n"
