@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # etc/setup.sh - make a Debian 12 machine ready to build and run SnowWall.
 #
-# Usage: etc/setup.sh [--help] [--no-openfoam] [--stock-solvers NAME[,NAME...]]
+# Usage: etc/setup.sh [--help] [--no-openfoam] [--stock-solvers NAME[,NAME...]] [--lammps]
 #
 # Installs (as root, with apt-get) the Debian packages SnowWall needs (among
 # them Code_Saturne 6.0 and gfortran, for the Code_Saturne binding's test), then
@@ -26,6 +26,11 @@
 #                 GCC 12 relies on: wrong on non-Cartesian cells; doc/wallmodel.md,
 #                 "Stock solvers rebuilt"). Skipped when already built with the same fix;
 #                 the first build takes about 1-2 min a solver on 2 cores.
+# --lammps        opt-in, not part of the default set-up: also install Debian's
+#                 LAMMPS (package lammps, the `lmp` binary, 29 Sep 2021 on Debian 12)
+#                 for the rough-wall cross-check validation/lammps-rough.sh and its
+#                 test lammps_rough (skipped without it). Skipped when installed;
+#                 goes with --no-openfoam too.
 #
 # Exit status: 0 ready, 1 a step failed or a bad option (the message names it).
 set -euo pipefail
@@ -33,6 +38,7 @@ set -euo pipefail
 top=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 want_of=1
 stock=()              # --stock-solvers: the stock solvers to rebuild with the fix
+want_lammps=0         # --lammps: Debian's LAMMPS for validation/lammps-rough.sh
 stock_known=(MPPICFoam reactingParcelFoam)
 stock_list() {        # stock_list LIST: check each name of the comma list, add it once
     local n k ok names
@@ -51,6 +57,7 @@ while [ $# -gt 0 ]; do
         --no-openfoam) want_of=0 ;;
         --stock-solvers) [ $# -ge 2 ] || stock_list ""; stock_list "$2"; shift ;;
         --stock-solvers=*) stock_list "${1#--stock-solvers=}" ;;
+        --lammps) want_lammps=1 ;;
         *) echo "setup.sh: unknown option '$1' (see --help)" >&2; exit 1 ;;
     esac
     shift
@@ -68,8 +75,11 @@ of_pkgs=(openfoam openfoam-examples openmpi-bin libopenmpi-dev dpkg-dev)
 # Code_Saturne 6.0 (tests/codesaturne): the solver, its headers, its Python
 # scripts and user templates; gfortran builds a case's Fortran user file
 cs_pkgs=(code-saturne-bin code-saturne-include code-saturne-data gfortran)
+# LAMMPS (opt-in --lammps): the rough-wall cross-check (validation/lammps-rough.sh)
+lammps_pkgs=(lammps)
 pkgs=("${c_pkgs[@]}")
 [ "$want_of" = 1 ] && pkgs+=("${of_pkgs[@]}" "${cs_pkgs[@]}")
+[ "$want_lammps" = 1 ] && pkgs+=("${lammps_pkgs[@]}")
 
 missing=()
 for p in "${pkgs[@]}"; do

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# test_lammps_rough.sh (ctest lammps_rough): the rough-wall cross-check against
+# LAMMPS (validation/lammps-rough.sh, issue 24) on its --quick subset: 4 impact
+# points x 3 angles, Hertz (2 speeds) with a constant COR and elastic JKR, every impact
+# within the tolerances of doc/kernel.md (--check); its outputs and error paths.
+# Skipped (77) when LAMMPS is not installed (etc/setup.sh --lammps).
+. "$(dirname "$0")/common.sh"
+LR=$SW_TOP/validation/lammps-rough.sh
+export SNOWREGIME=$SR
+command -v "${LMP:-lmp}" >/dev/null 2>&1 || { echo "SKIP: LAMMPS (lmp) not installed: etc/setup.sh --lammps"; exit 77; }
+"$LR" --help | grep -q "jkr-elastic" || fail "--help does not describe the cases"
+"$LR" --out "$WORK/q" --quick --check >"$WORK/q.log" 2>&1 || { cat "$WORK/q.log"; fail "lammps-rough.sh --quick --check exit $?"; }
+for f in summary.md impacts.csv report.txt times.txt; do
+    [ -s "$WORK/q/$f" ] || fail "missing $f"
+done
+[ "$(ls -A "$WORK" | grep -c '^\.lammps-rough')" -eq 0 ] || fail "temporary folder left behind"
+[ ! -e "$WORK/q/.work" ] || fail "work folder left in the output"
+# 4 points x 3 angles x (2 hertz speeds + 1 jkr-elastic speed) = 36 impacts, all within the tolerances
+[ "$(grep -vc '^case,' "$WORK/q/impacts.csv")" -eq 36 ] || fail "impacts.csv rows"
+grep -q "impacts outside the tolerances: 0 of 36" "$WORK/q/summary.md" || fail "impacts outside the tolerances"
+# the calibrated COR on the flat plane is the target in both codes (0.7 within 1e-3)
+awk -F'|' '/COR on the flat base plane/ { v = $3 + 0; if (v < 0.699 || v > 0.701) bad = 1; n++ }
+           END { exit !(n == 4 && !bad) }' "$WORK/q/summary.md" || fail "flat-plane COR not 0.7 in both codes"
+# errors: exit 2 with the bad input named, nothing left behind
+"$LR" >/dev/null 2>&1; [ $? -eq 2 ] || fail "no --out: exit not 2"
+"$LR" --out "$WORK/x" --bogus 2>"$WORK/e1"; [ $? -eq 2 ] && grep -q -- "--bogus" "$WORK/e1" || fail "unknown option"
+"$LR" --out "$WORK/x" --speeds-hertz 1,-2 2>"$WORK/e2"; [ $? -eq 2 ] && grep -q -- "-2" "$WORK/e2" || fail "bad speed"
+"$LR" --out "$WORK/x" --cases hertz,soft 2>"$WORK/e3"; [ $? -eq 2 ] && grep -q "soft" "$WORK/e3" || fail "bad case"
+"$LR" --out "$WORK/x" --grid 2 --grid 2x 2>"$WORK/e4"; [ $? -eq 2 ] && grep -q "2x" "$WORK/e4" || fail "bad grid"
+[ ! -e "$WORK/x" ] || fail "output folder made on bad input"
+LMP=/nonexistent/lmp "$LR" --out "$WORK/x" --quick >/dev/null 2>&1; [ $? -eq 77 ] || fail "absent lmp: exit not 77"
+finish
