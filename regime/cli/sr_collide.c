@@ -197,8 +197,11 @@ int sr_cmd_collide(int argc, char **argv)
     else printf("e_t: none (no tangential rebound: vt = 0 or contact kept)\n");
     printf("t_contact: %.9g\ndelta_max: %.9g\ne_target: %.9g\n", r.t_contact, r.delta_max, r.e_target);
     printf("t_rest: %.9g\ns_rest: %.9g\n", r.t_rest, r.s_rest);
-    if (p.wall == SWR_WALL_KIND_LATTICE)
+    if (p.wall == SWR_WALL_KIND_LATTICE) {
         printf("x: %.9g\ny: %.9g\ncontacts: %ld\n", in.x, in.y, r.contacts);
+        printf("v_out: %.9g %.9g %.9g\nw_out: %.9g %.9g %.9g\n", r.v_out[0], r.v_out[1], r.v_out[2],
+               r.w_out[0], r.w_out[1], r.w_out[2]);
+    }
     printf("dt: %.9g\nsteps: %ld\nmax_steps: %ld\n", r.dt, r.steps, r.max_steps);
     printf("status: %s\n", st == SWR_OK ? "ok (decided by a physical criterion)"
                                         : "step-bound (outcome is the best estimate)");

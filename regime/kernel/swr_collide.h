@@ -78,6 +78,11 @@ typedef struct {
      * = the sphere can never leave), t_rest and s_rest are not predicted (0).
      * 1 on a flat wall. */
     long contacts;
+    /* Rough wall, a bounce: the velocity [m/s] and spin [rad/s] with which the
+     * sphere leaves, in the impact's frame (x along the incoming tangential
+     * motion, z the wall normal out of the wall; the incoming spin is about
+     * -y); 0 when it sticks and on a flat wall. */
+    double v_out[3], w_out[3];
 } swr_result;
 
 /* Optional trajectory sink: called every `stride` steps with time, overlap,

@@ -877,6 +877,11 @@ swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_resul
     r->e_n = outcome == BOUNCE ? fmax(v[2], 0.0) * V / in->vn : 0.0;
     if (in->vt > 0.0 && outcome == BOUNCE)
         r->e_t = v[0] * V / in->vt;
+    if (outcome == BOUNCE)
+        for (int q = 0; q < 3; q++) {
+            r->v_out[q] = v[q] * V;
+            r->w_out[q] = w[q] / T;
+        }
     r->t_contact = t_first >= 0.0 ? (t - t_first) * T : 0.0;
     r->delta_max = dmax * L;
     r->energy_err = err;
