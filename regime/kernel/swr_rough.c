@@ -739,13 +739,22 @@ swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_resul
             const double vcn = dot(vc, nn);
             const double a = c->x * c->x;
             const double kt = 8.0 * s->Gs * a;
-            for (int q = 0; q < 3; q++)
-                c->xi[q] += h * (vc[q] - vcn * nn[q]);
+            double dxi[3]; /* this step's slip increment */
+            for (int q = 0; q < 3; q++) {
+                dxi[q] = h * (vc[q] - vcn * nn[q]);
+                c->xi[q] += dxi[q];
+            }
             const double flim = s->mu * fabs(c->fne + c->fd + 2.0 * c->nm->Fc);
             const double x2 = dot(c->xi, c->xi);
             if (kt * kt * x2 > flim * flim) {
+                /* Coulomb: the trial spring xi is cut to the limit f xi. The
+                 * sliding work, as the step's forces do it (their mean over the
+                 * increment, as the kicks apply them), is the trial spring's
+                 * energy above the cut one less (1/2) kt (1 - f) dxi . xi: the
+                 * trial force at the step's end never acted (issue 24: booked,
+                 * it made energy_err first order in the step) */
                 const double f = flim / (kt * sqrt(x2));
-                w_diss += 0.5 * kt * x2 * (1.0 - f * f);
+                w_diss += 0.5 * kt * (x2 * (1.0 - f * f) - (1.0 - f) * dot(dxi, c->xi));
                 for (int q = 0; q < 3; q++)
                     c->xi[q] *= f;
             }
@@ -753,18 +762,21 @@ swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_resul
                 c->ft[q] = -kt * c->xi[q];
             /* rolling resistance (adhesive contacts): v_r = R (w x n) */
             if (c->nm->Fc > 0.0) {
-                double vr[3];
+                double vr[3], dxr[3];
                 cross(wh, nn, vr);
                 const double vrn = dot(vr, nn);
-                for (int q = 0; q < 3; q++)
-                    c->xr[q] += h * s->R * (vr[q] - vrn * nn[q]);
+                for (int q = 0; q < 3; q++) {
+                    dxr[q] = h * s->R * (vr[q] - vrn * nn[q]);
+                    c->xr[q] += dxr[q];
+                }
                 const double ra = a / c->nm->a0;
                 const double kr = 4.0 * c->nm->Fc * ra * sqrt(ra);
                 c->kr = kr;
                 const double r2 = dot(c->xr, c->xr);
                 if (r2 > s->xic * s->xic) {
+                    /* the rolling limit: booked as the sliding one above */
                     const double f = s->xic / sqrt(r2);
-                    w_diss += 0.5 * kr * r2 * (1.0 - f * f) / s->R;
+                    w_diss += 0.5 * kr * (r2 * (1.0 - f * f) - (1.0 - f) * dot(dxr, c->xr)) / s->R;
                     for (int q = 0; q < 3; q++)
                         c->xr[q] *= f;
                 }
