@@ -300,12 +300,16 @@ static void write_contours_csv(FILE *f, const sr_mapres *r, const sr_contours *c
             fprintf(f, "%g,%.9g,%.9g\n", lv[k], its[k]->vn[q], its[k]->dcrit[q]);
 }
 
-static int write_rough_plot(swt_outset *os, const sr_mapres *r, const char *title, char *err,
-                            size_t errlen)
+static int write_rough_plot(swt_outset *os, const char *sfx, const sr_mapres *r, const char *title,
+                            char *err, size_t errlen)
 {
-    const char *png = swt_outset_add(os, "map.png", err, errlen);
-    const char *tcsv = swt_outset_add(os, "map.csv", err, errlen);
-    const char *tcon = swt_outset_add(os, "contours.csv", err, errlen);
+    char npng[64], ncsv[64], ncon[64];
+    snprintf(npng, sizeof npng, "map%s.png", sfx);
+    snprintf(ncsv, sizeof ncsv, "map%s.csv", sfx);
+    snprintf(ncon, sizeof ncon, "contours%s.csv", sfx);
+    const char *png = swt_outset_add(os, npng, err, errlen);
+    const char *tcsv = swt_outset_add(os, ncsv, err, errlen);
+    const char *tcon = swt_outset_add(os, ncon, err, errlen);
     if (!png || !tcsv || !tcon) return -1;
     swt_gnuplot g;
     if (swt_gnuplot_open(&g, png, 820, 700, err, errlen) != 0) return -1;
@@ -351,7 +355,8 @@ static int write_map_files(swt_outset *os, const char *sfx, const sr_mapres *r, 
         swt_rebound_free(&rb);
     }
     if (r->contours) {
-        if (!(f = swt_outset_open(os, "contours.csv", err, errlen))) return -1;
+        snprintf(name, sizeof name, "contours%s.csv", sfx);
+        if (!(f = swt_outset_open(os, name, err, errlen))) return -1;
         write_contours_csv(f, r, r->contours);
     }
     if (plot && r->mp->points > 0) {
@@ -359,7 +364,7 @@ static int write_map_files(swt_outset *os, const char *sfx, const sr_mapres *r, 
         char title[300];
         snprintf(title, sizeof title, "snowregime map: stick probability, %d impact points per cell, "
                  "gamma %g J/m2\\n%s", r->mp->points, p->gamma, what);
-        if (write_rough_plot(os, r, title, err, errlen) != 0) return -1;
+        if (write_rough_plot(os, sfx, r, title, err, errlen) != 0) return -1;
     } else if (plot) {
         /* data must be on disk before gnuplot reads the temporaries */
         fflush(NULL);
@@ -450,18 +455,26 @@ int sr_cmd_map(int argc, char **argv)
         goto out;
     }
     if (swr_model_rough(m) && axis) {
-        if (axis_angle || naxis > 1) {
+        if (axis_angle) {
             swr_model_free(m);
-            rc = sr_usage_error(cmd, axis_angle ? "--angle: not with a rough wall (wall lattice): "
-                                                  "give the map's tangential speed with --vt V"
-                                                : "--vt: one value with a rough wall (wall lattice): "
-                                                  "maps over a v_t list need the flat wall");
+            rc = sr_usage_error(cmd, "--angle: not with a rough wall (wall lattice): its table's "
+                                     "third axis is the tangential speed: give --vt V or --vt 0,V1,...");
             goto out;
         }
-        mo.o.vt = axis[0];   /* one value: a single map at that v_t */
-        free(axis);
-        axis = NULL;
-        naxis = 0;
+        if (naxis == 1) {
+            mo.o.vt = axis[0];   /* one value: a single map at that v_t */
+            free(axis);
+            axis = NULL;
+            naxis = 0;
+        } else if (axis[0] == 0.0 && (long)mo.g.nd * mo.g.nv * naxis > SWW_TABLE_MAX) {
+            /* the combined table of a rough wall over v_t: refused before any map */
+            swr_model_free(m);
+            snprintf(err, sizeof err, "--nd x --nv x --vt: %d x %d x %d cells exceed the %d values "
+                     "of the stick-probability table in regime.coeffs (rough wall over v_t): give "
+                     "a smaller grid or fewer --vt values", mo.g.nd, mo.g.nv, naxis, SWW_TABLE_MAX);
+            rc = sr_usage_error(cmd, err);
+            goto out;
+        }
     }
     if (swr_model_rough(m) && (long)mo.g.nd * mo.g.nv > SWW_TABLE_MAX) {
         swr_model_free(m);
@@ -508,7 +521,15 @@ int sr_cmd_map(int argc, char **argv)
     if (!os) { swr_model_free(m); rc = sr_out_error(cmd, mo.out, err); goto out; }
     /* --vt LIST starting at 0: the v_t = 0 map's fit and speed nodes, for the
      * combined regime.coeffs with the d_crit(v_n, v_t) table */
-    const int oblique = axis && !axis_angle && naxis >= 2 && axis[0] == 0.0;
+    /* a list from 0: one combined regime.coeffs; on a flat wall with the
+     * d_crit(v_n, v_t) table, on a rough wall with the stick probability
+     * over (d, v_t, v_n) */
+    const int combined = axis && !axis_angle && naxis >= 2 && axis[0] == 0.0;
+    const int oblique = combined && !swr_model_rough(m);
+    const int rough_vt = combined && swr_model_rough(m);
+    float *pvt = NULL;        /* rough_vt: p of every map, [k][i][j] */
+    double *pd0 = NULL, *pv0 = NULL;
+    int points0 = 0;
     swt_fit fit0;
     swt_rebound rb0;                 /* the kernel's rebound over (v_t, d, v_n) */
     memset(&rb0, 0, sizeof rb0);
@@ -558,7 +579,7 @@ int sr_cmd_map(int argc, char **argv)
         sr_mapres r;
         if (compute_map(m, &mo, &o, s.threads, &r, err, sizeof err) != 0) {
             rc = sr_usage_error(cmd, err);
-        } else if (oblique && ((k == 0 && swt_rebound_init(&rb0, r.mp, axis, naxis, err, sizeof err) != 0)
+        } else if (combined && ((k == 0 && swt_rebound_init(&rb0, r.mp, axis, naxis, err, sizeof err) != 0)
                                || swt_rebound_layer(&rb0, k, r.mp, err, sizeof err) != 0)) {
             rc = sr_fail(cmd, err);
         } else if (!r.fit_ok && !axis) {
@@ -596,11 +617,25 @@ int sr_cmd_map(int argc, char **argv)
             printf("  wall time: grid %.4f s (%ld collisions, %d threads), total %.4f s\n",
                    r.mp->seconds, r.mp->collisions, s.threads, r.seconds_total);
             if (r.mp->msg[0]) printf("  kernel warning: %s\n", r.mp->msg);
-            if (oblique && k == 0 && r.fit_ok) {
+            if (rough_vt) {
+                const size_t nc = (size_t)r.mp->g.nd * r.mp->g.nv;
+                if (k == 0) {
+                    pvt = malloc((size_t)naxis * nc * sizeof *pvt);
+                    pd0 = malloc((size_t)r.mp->g.nd * sizeof *pd0);
+                    pv0 = malloc((size_t)r.mp->g.nv * sizeof *pv0);
+                    if (pd0) memcpy(pd0, r.mp->d, (size_t)r.mp->g.nd * sizeof *pd0);
+                    if (pv0) memcpy(pv0, r.mp->v, (size_t)r.mp->g.nv * sizeof *pv0);
+                    points0 = r.mp->points;
+                }
+                if (pvt) memcpy(pvt + (size_t)k * nc, r.mp->p, nc * sizeof *pvt);
+            }
+            if (combined && k == 0 && r.fit_ok) {
                 fit0 = r.fit;
                 have_fit0 = 1;
                 d0min = r.mp->g.dmin;
                 d0max = r.mp->g.dmax;
+            }
+            if (oblique && k == 0 && r.fit_ok) {
                 /* table speeds: the map's log spacing, extended a decade below
                  * and half a decade above its range (the wall model clamps v_n
                  * to the table for the tangential limit) */
@@ -615,6 +650,31 @@ int sr_cmd_map(int argc, char **argv)
         }
         mapres_free(&r);
     }
+    if (rc == 0 && rough_vt) {
+        if (!have_fit0) {
+            rc = sr_fail(cmd, "--vt LIST: the v_t = 0 map has no fit: no combined regime.coeffs "
+                              "(widen --vmin/--vmax)");
+        } else if (!pvt || !pd0 || !pv0) {
+            rc = sr_fail(cmd, "out of memory");
+        } else {
+            char ocb[160], label[300];
+            snprintf(label, sizeof label, "%s, rough wall, vt 0..%g m/s, gamma %g",
+                     sr_outcome_text(&mo.o, ocb, sizeof ocb), axis[naxis - 1], p.gamma);
+            const swt_prob pr = { pd0, pv0, axis, mo.g.nd, mo.g.nv, naxis, pvt, points0 };
+            FILE *f = swt_outset_open(os, "regime.coeffs", err, sizeof err);
+            if (!f) {
+                rc = sr_fail(cmd, err);
+            } else {
+                swt_coeffs_write_prob(f, &fit0, &p, d0min, d0max, label, &pr, &rb0);
+                printf("regime.coeffs: stick probability %d x %d x %d (d x v_t 0..%g m/s x v_n), "
+                       "%d impact points per cell, with the v_t = 0 interface\n", mo.g.nd, naxis,
+                       mo.g.nv, axis[naxis - 1], points0);
+            }
+        }
+    }
+    free(pvt);
+    free(pd0);
+    free(pv0);
     if (rc == 0 && oblique) {
         if (!have_fit0 || !vn0) {
             rc = sr_fail(cmd, "--vt LIST: the v_t = 0 map has no fit: no combined regime.coeffs "

@@ -151,13 +151,30 @@ void swt_coeffs_write(FILE *fp, const swt_fit *f, const swr_params *p, double dm
 
 static void coeffs_write(FILE *fp, const swt_fit *f, const swr_params *p, double dmin,
                          double dmax, const char *label, const swt_oblique *ob,
-                         const swt_map *mp, const swt_rebound *rb);
+                         const swt_prob *pr, const swt_rebound *rb);
+
+/* the probability table of one rough map (NULL for none) */
+static const swt_prob *prob_of(const swt_map *mp, swt_prob *pr)
+{
+    if (!mp || mp->points <= 0)
+        return NULL;
+    *pr = (swt_prob){ mp->d, mp->v, NULL, mp->g.nd, mp->g.nv, 0, mp->p, mp->points };
+    return pr;
+}
 
 void swt_coeffs_write_all(FILE *fp, const swt_fit *f, const swr_params *p, double dmin,
                           double dmax, const char *label, const swt_oblique *ob,
                           const swt_map *rough, const swt_rebound *rb)
 {
-    coeffs_write(fp, f, p, dmin, dmax, label, ob, rough, rb);
+    swt_prob pr;
+    coeffs_write(fp, f, p, dmin, dmax, label, ob, prob_of(rough, &pr), rb);
+}
+
+void swt_coeffs_write_prob(FILE *fp, const swt_fit *f, const swr_params *p, double dmin,
+                           double dmax, const char *label, const swt_prob *pr,
+                           const swt_rebound *rb)
+{
+    coeffs_write(fp, f, p, dmin, dmax, label, NULL, pr, rb);
 }
 
 void swt_coeffs_write_ex(FILE *fp, const swt_fit *f, const swr_params *p, double dmin,
@@ -169,7 +186,8 @@ void swt_coeffs_write_ex(FILE *fp, const swt_fit *f, const swr_params *p, double
 void swt_coeffs_write_rough(FILE *fp, const swt_fit *f, const swr_params *p, const swt_map *mp,
                             const char *label)
 {
-    coeffs_write(fp, f, p, mp->g.dmin, mp->g.dmax, label, NULL, mp, NULL);
+    swt_prob pr;
+    coeffs_write(fp, f, p, mp->g.dmin, mp->g.dmax, label, NULL, prob_of(mp, &pr), NULL);
 }
 
 static void write_list(FILE *fp, const char *key, const double *x, size_t n)
@@ -182,12 +200,13 @@ static void write_list(FILE *fp, const char *key, const double *x, size_t n)
 
 static void coeffs_write(FILE *fp, const swt_fit *f, const swr_params *p, double dmin,
                          double dmax, const char *label, const swt_oblique *ob,
-                         const swt_map *mp, const swt_rebound *rb)
+                         const swt_prob *pr, const swt_rebound *rb)
 {
     const double Es = swp_effective_modulus(p->E, p->nu, p->E_wall, p->nu_wall);
     fprintf(fp, "// regime.coeffs - stick/bounce interface of snowregime map (snowwall 0.1)\n");
-    if (mp && mp->points > 0)
-        fprintf(fp, "// rough wall: the interface is the p = 0.5 contour of the stick probability\n");
+    if (pr)
+        fprintf(fp, "// rough wall: the interface is the p = 0.5 contour of the stick probability%s\n",
+                pr->nvt ? " at v_t = 0" : "");
     fprintf(fp, "// format: doc/regime-coeffs.md\n");
     swr_params_print(p, "// material: ", fp);
     fprintf(fp, "regime\n{\n");
@@ -235,17 +254,37 @@ static void coeffs_write(FILE *fp, const swt_fit *f, const swr_params *p, double
     fprintf(fp, "    mu              %.10g;\n", p->mu);
     if (ob)
         swt_oblique_write(fp, ob);
-    if (mp && mp->points > 0) {
+    if (pr && pr->nvt) {
+        /* layers by v_t: the caller's p is [k][i][j] (one map per v_t); the
+         * file's order is d, then v_t, then v_n */
+        fprintf(fp, "\n    // Stick probability on this rough wall: the fraction of %d impact points\n"
+                    "    // that stick, per diameter (rows), tangential speed (then) and normal\n"
+                    "    // speed (columns); read at the impact's v_t with the regime tangential\n"
+                    "    // gate, at v_t = 0 without; the interface above is the p = 0.5 contour\n"
+                    "    // at v_t = 0.\n", pr->points);
+        write_list(fp, "probabilityD", pr->d, (size_t)pr->nd);
+        write_list(fp, "probabilityVn", pr->v, (size_t)pr->nv);
+        write_list(fp, "probabilityVt", pr->vt, (size_t)pr->nvt);
+        fprintf(fp, "    %-17s (", "probabilityStick");
+        size_t n = 0;
+        for (size_t i = 0; i < (size_t)pr->nd; i++)
+            for (size_t k = 0; k < (size_t)pr->nvt; k++)
+                for (size_t j = 0; j < (size_t)pr->nv; j++)
+                    fprintf(fp, "%s%.6g", n++ ? " " : "",
+                            (double)pr->p[(k * (size_t)pr->nd + i) * (size_t)pr->nv + j]);
+        fprintf(fp, ");\n");
+        fprintf(fp, "    %-17s %d;\n", "probabilityPoints", pr->points);
+    } else if (pr) {
         fprintf(fp, "\n    // Stick probability on this rough wall: the fraction of %d impact points\n"
                     "    // that stick, per diameter (rows) and normal speed (columns); the\n"
-                    "    // interface above is its p = 0.5 contour.\n", mp->points);
-        write_list(fp, "probabilityD", mp->d, (size_t)mp->g.nd);
-        write_list(fp, "probabilityVn", mp->v, (size_t)mp->g.nv);
+                    "    // interface above is its p = 0.5 contour.\n", pr->points);
+        write_list(fp, "probabilityD", pr->d, (size_t)pr->nd);
+        write_list(fp, "probabilityVn", pr->v, (size_t)pr->nv);
         fprintf(fp, "    %-17s (", "probabilityStick");
-        for (size_t k = 0; k < (size_t)mp->g.nd * mp->g.nv; k++)
-            fprintf(fp, "%s%.6g", k ? " " : "", (double)mp->p[k]);
+        for (size_t k = 0; k < (size_t)pr->nd * pr->nv; k++)
+            fprintf(fp, "%s%.6g", k ? " " : "", (double)pr->p[k]);
         fprintf(fp, ");\n");
-        fprintf(fp, "    %-17s %d;\n", "probabilityPoints", mp->points);
+        fprintf(fp, "    %-17s %d;\n", "probabilityPoints", pr->points);
     }
     if (rb && swt_rebound_complete(rb))
         swt_rebound_write(fp, rb);

@@ -49,6 +49,18 @@ void swt_coeffs_write_ex(FILE *fp, const swt_fit *f, const swr_params *p, double
  * table of the map (probabilityD/Vn/Stick/Points, doc/regime-coeffs.md). */
 void swt_coeffs_write_rough(FILE *fp, const swt_fit *f, const swr_params *p, const swt_map *mp,
                             const char *label);
+/* A rough wall's stick-probability table: p over (d, v_n), or with nvt > 0
+ * over (v_t, d, v_n): p[(k nd + i) nv + j] (one map per v_t, k the layer). */
+typedef struct {
+    const double *d, *v, *vt;   /* [nd], [nv], [nvt] (vt NULL when nvt = 0) */
+    int nd, nv, nvt;
+    const float *p;
+    int points;                 /* impact points per cell */
+} swt_prob;
+/* The fit with a probability table (over v_t too) and the rebound tables. */
+void swt_coeffs_write_prob(FILE *fp, const swt_fit *f, const swr_params *p, double dmin,
+                           double dmax, const char *label, const swt_prob *pr,
+                           const swt_rebound *rb);
 /* Everything: the oblique table (ob), a rough wall's probability table (rough)
  * and the kernel's rebound tables (rb, issue 23), each NULL when absent. */
 void swt_coeffs_write_all(FILE *fp, const swt_fit *f, const swr_params *p, double dmin,

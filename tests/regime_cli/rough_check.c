@@ -2,7 +2,10 @@
  * wall=lattice) with the wall model's reader and compare its stick
  * probability with the map it came from.
  *
- * Usage: rough_check REGIME.COEFFS MAP.CSV
+ * Usage: rough_check REGIME.COEFFS MAP.CSV [VT]
+ * With VT (a rough map over v_t, snowregime map --set wall=lattice --vt 0,...):
+ * the table has a v_t axis, the regime tangential gate is on and every
+ * impact has that v_t: MAP.CSV is the map at VT (map-vt<VT>.csv).
  * Checks: the file loads with a probability table of the map's size; at every
  * grid node sww_decide's p_stick equals the map's p_stick column (to its
  * 6-digit rounding); over 4000 uniform u the stick fraction at a node with
@@ -18,7 +21,8 @@
 
 int main(int argc, char **argv)
 {
-    if (argc != 3) { fprintf(stderr, "usage: rough_check REGIME.COEFFS MAP.CSV\n"); return 2; }
+    if (argc != 3 && argc != 4) { fprintf(stderr, "usage: rough_check REGIME.COEFFS MAP.CSV [VT]\n"); return 2; }
+    const double vt = argc == 4 ? atof(argv[3]) : 0.0;
     sww_model *m = sww_alloc();
     if (!m || sww_regime_load(m, argv[1]) != 0) {
         printf("FAIL: %s does not load: %s\n", argv[1], m ? sww_errmsg(m) : "out of memory");
@@ -28,6 +32,17 @@ int main(int argc, char **argv)
     if (!sww_probability_table(m, &nd, &nv)) {
         printf("FAIL: %s has no probability table\n", argv[1]);
         return 1;
+    }
+    if (argc == 4) {
+        double vmax = 0.0;
+        if (sww_probability_vt(m, &vmax) < 2 || !(vt <= vmax)) {
+            printf("FAIL: %s has no v_t axis reaching %g m/s\n", argv[1], vt);
+            return 1;
+        }
+        if (sww_set_tangential_regime(m) != SWW_OK) {
+            printf("FAIL: the regime gate: %s\n", sww_errmsg(m));
+            return 1;
+        }
     }
     FILE *f = fopen(argv[2], "r");
     if (!f) { printf("FAIL: cannot read %s\n", argv[2]); return 1; }
@@ -51,7 +66,7 @@ int main(int argc, char **argv)
         }
         const double in_d = d == d0 ? d * (1 + 1e-8) : d == d1 ? d * (1 - 1e-8) : d;
         const double in_v = v == v0 ? v * (1 + 1e-8) : v == v1 ? v * (1 - 1e-8) : v;
-        sww_impact in = { in_d, in_v, 0.0, 0.0, 0.0 };
+        sww_impact in = { in_d, in_v, vt, 0.0, 0.0 };
         sww_outcome o;
         if (sww_decide(m, &in, &o) != SWW_OK) { printf("FAIL: decide at d %g v %g\n", d, v); bad++; continue; }
         const double dev = fabs(o.p_stick - p);
@@ -66,7 +81,7 @@ int main(int argc, char **argv)
     if (pmid > 0.0) {
         long n = 4000, s = 0;
         for (long k = 0; k < n; k++) {
-            sww_impact in = { dmid, vmid, 0.0, 0.0, (k + 0.5) / n };
+            sww_impact in = { dmid, vmid, vt, 0.0, (k + 0.5) / n };
             sww_outcome o;
             sww_decide(m, &in, &o);
             s += o.fate == SWW_STICK;

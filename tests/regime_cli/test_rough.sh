@@ -42,8 +42,18 @@ grep -q "probability" "$WORK/f/regime.coeffs" && fail "flat regime.coeffs has a 
 # errors: named, exit 2, nothing written
 expect2() { local out=$1; shift; "$SR" "$@" >"$WORK/e.out" 2>"$WORK/e.err"; local rc=$?
     [ $rc -eq 2 ] || fail "$* : exit $rc (want 2)"; grep -q -- "$out" "$WORK/e.err" || { cat "$WORK/e.err"; fail "$* : message lacks '$out'"; }; }
-expect2 "--vt" map $L --vt 0,1 --out "$WORK/x1"
-expect2 "--angle" map $L --angle 0,30 --out "$WORK/x2"
+# a rough map over v_t (issue 24): the combined regime.coeffs holds p over
+# (d, v_t, v_n); read back by the wall model with the regime gate at every
+# node of each layer; a table beyond 4096 values is refused before any map
+"$SR" map $L --points 8 --nd 6 --nv 8 --vmin 0.05 --vmax 5 --vt 0,1 --no-plot --out "$WORK/mvt" \
+    >"$WORK/mvt.log" 2>&1 || { cat "$WORK/mvt.log"; fail "map --vt 0,1 on a lattice: exit $?"; }
+grep -q "^    probabilityVt     (0 1);" "$WORK/mvt/regime.coeffs" || fail "map --vt 0,1: no probabilityVt"
+for v in 0 1; do
+    "$RC" "$WORK/mvt/regime.coeffs" "$WORK/mvt/map-vt$v.csv" "$v" >"$WORK/rcv.txt" \
+        || { cat "$WORK/rcv.txt"; fail "rough_check of the v_t = $v layer"; }
+done
+expect2 "--nd x --nv x --vt: 46 x 50 x 2" map $L --vt 0,1 --out "$WORK/x1"
+expect2 "--angle: not with a rough wall" map $L --angle 0,30 --out "$WORK/x2"
 expect2 "4096" map $L --nd 100 --nv 100 --out "$WORK/x3"
 expect2 "--level" map $L --level 0.3 --out "$WORK/x4"
 expect2 "thornton-ning" map $L --set cor=thornton-ning --out "$WORK/x5"

@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # test_wedge_case.sh - tutorials/wedge end to end on its coarsest variant, in a
 # temporary copy. WEDGE_MODE selects the run:
-#   transient (default)  Allrun -test -compare -feedback -rough -rebound: the DDES
-#                        route, the four gate settings, the build-up feedback, the
-#                        rough wall and the classic rebound as seven clouds in one
-#                        run (about 70 s)
+#   transient (default)  Allrun -test -gate regime -compare -feedback -rough -rebound:
+#                        the DDES route, the four gate settings, the build-up
+#                        feedback, the rough wall (with the regime gate: its stick
+#                        probability over v_t) and the classic rebound as seven
+#                        clouds in one run (about 70 s)
 #   parallel             Allrun -test (serial) and Allrun -test -parallel 2, gates
 #                        off: both checked, and their impact counts on the nose
 #                        agree within 4 Poisson standard deviations (about 60 s)
@@ -28,7 +29,7 @@
 set -u
 mode=${WEDGE_MODE:-transient}
 case "$mode" in
-    transient) runs=("-test -compare -feedback -rough -rebound"); gates="off tangential shear regime feedback rough rebound" ;;
+    transient) runs=("-test -gate regime -compare -feedback -rough -rebound"); gates="off tangential shear regime feedback rough rebound" ;;
     parallel)  runs=("-test" "-test -parallel 2"); gates=off ;;
     steady)    runs=("-steady -test"); gates=off ;;
     *) echo "unknown WEDGE_MODE '$mode'"; exit 2 ;;
@@ -123,6 +124,10 @@ run_case() {  # run_case N ARGS: Allrun ARGS in a fresh copy $tmp/wedgeN, then t
             check "the feedback cloud has the snow-covered regime" "grep -q 'build-up on: snow-covered regime' '$w/$log'"
             check "feedback.md: the 6 patches with covered-face counts" "[ \$(grep -c -E '^\| (rear|nose|top|bottom|sideYneg|sideYpos) \|.* of [0-9]+ \|\$' '$r/feedback.md') = 6 ]"
             check "the rough cloud has the rough regime with its probability table on the 6 faces" "grep -q 'wallRegimes roughABS: patches .*nose.*stick probability table' '$w/$log'"
+            case "$args" in *"-gate regime"*)
+                check "the rough cloud reads its stick probability over v_t (-rough -gate regime)" \
+                    "grep -q 'wallRegimes roughABS: patches .*stick probability table [0-9]* x 11 x [0-9]*' '$w/$log' && grep -q \"tangential gate on: the rough wall's stick probability over v_t 0..25.6\" '$w/$log'" ;;
+            esac
             check "rough.md: the 6 patches, flat against rough" "[ \$(grep -c -E '^\| (rear|nose|top|bottom|sideYneg|sideYpos) \|' '$r/rough.md') = 6 ]"
             check "rebound.md: the 6 patches, kernel against classic, with the counts by reason" "[ \$(grep -c -E '^\| (rear|nose|top|bottom|sideYneg|sideYpos) \|.*[0-9]+ / [0-9]+ / [0-9]+ / [0-9]+ / [0-9]+ \|.*[0-9]+ / [0-9]+ / [0-9]+ / [0-9]+ / [0-9]+ \|' '$r/rebound.md') = 6 ]"
             check "gates_per_patch.md: the counts by reason of the 4 gate settings on the 6 patches" "grep -q 'Which rule decided' '$r/gates_per_patch.md' && [ \$(grep -c -E '^\| (rear|nose|top|bottom|sideYneg|sideYpos) \|( [0-9]+ / [0-9]+ / [0-9]+ / [0-9]+ / [0-9]+ \|){4}\$' '$r/gates_per_patch.md') = 6 ]"

@@ -654,6 +654,94 @@ static void probability_table(void **s)
     sww_free(sharp);
 }
 
+/* A rough wall's table over v_t too (issue 24: snowregime map --set
+ * wall=lattice --vt 0,...): layers v_t = 0 (the table above), 1 m/s (half
+ * of it) and 3 m/s (none sticks). Read at the impact's v_t with the regime
+ * gate on (exact at the nodes, linear between layers, the last layer beyond
+ * them), at v_t = 0 with the gate off; a bounce that v_t = 0 would have stuck
+ * is a tangential one. */
+static void probability_table_vt(void **s)
+{
+    (void)s;
+    static const double VT[] = { 0.0, 1.0, 3.0 };
+    double P3[3 * 3 * 3];
+    for (size_t i = 0; i < 3; i++)
+        for (size_t k = 0; k < 3; k++)
+            for (size_t j = 0; j < 3; j++)
+                P3[(i * 3 + k) * 3 + j] = k == 0 ? PP[i * 3 + j] : k == 1 ? 0.5 * PP[i * 3 + j] : 0.0;
+    sww_model *m = load_fixture(), *flat2 = load_rough();
+    assert_int_equal(sww_regime_list(m, "probabilityD", PD, 3), SWW_OK);
+    assert_int_equal(sww_regime_list(m, "probabilityVn", PV, 3), SWW_OK);
+    assert_int_equal(sww_regime_list(m, "probabilityVt", VT, 3), SWW_OK);
+    assert_int_equal(sww_regime_list(m, "probabilityStick", P3, 27), SWW_OK);
+    assert_int_equal(sww_regime_commit(m, "code"), SWW_OK);
+    double vmax = 0.0;
+    assert_int_equal(sww_probability_vt(m, &vmax), 3);
+    assert_true(vmax == 3.0);
+    assert_int_equal(sww_probability_vt(flat2, NULL), 0);
+    /* gate off: the v_t = 0 layer whatever v_t, as the table without v_t */
+    srand48(5);
+    for (int k = 0; k < 500; k++) {
+        const double d = PD[0] * pow(PD[2] / PD[0], drand48()), v = PV[0] * pow(PV[2] / PV[0], drand48());
+        const double vt = 5.0 * drand48(), u = drand48();
+        const sww_outcome a = decide(m, d, v, vt, 0, u), b = decide(flat2, d, v, vt, 0, u);
+        assert_true(same_outcome(&a, &b));
+    }
+    /* regime gate on: the layers at their nodes, linear between, the last beyond */
+    assert_int_equal(sww_set_tangential_regime(m), SWW_OK);
+    for (size_t i = 0; i < 3; i++)
+        for (size_t j = 0; j < 3; j++)
+            for (size_t k = 0; k < 3; k++)
+                assert_true(decide(m, PD[i], PV[j], VT[k], 0, 0.5).p_stick == P3[(i * 3 + k) * 3 + j]);
+    for (int k = 0; k < 500; k++) {
+        const double d = PD[0] * pow(PD[2] / PD[0], drand48()), v = PV[0] * pow(PV[2] / PV[0], drand48());
+        const double vt = 4.0 * drand48(), p0 = p_expected(d, v);
+        const double want = vt <= 1.0 ? p0 * (1.0 - 0.5 * vt) : vt <= 3.0 ? 0.5 * p0 * (1.0 - (vt - 1.0) / 2.0) : 0.0;
+        assert_true(fabs(decide(m, d, v, vt, 0, 0.5).p_stick - want) <= 1e-12);
+    }
+    /* u between p(v_t) and p(0): a tangential bounce; above p(0): the criterion's */
+    const double d = 1.3e-5, v = 2.2, p0 = p_expected(d, v);
+    sww_outcome o = decide(m, d, v, 1.0, 0, 0.75 * p0);
+    assert_int_equal(o.fate, SWW_BOUNCE);
+    assert_int_equal(o.reason, SWW_BY_TANGENTIAL);
+    assert_int_equal(o.by_draw, 0);
+    o = decide(m, d, v, 1.0, 0, 0.25 * p0);
+    assert_int_equal(o.fate, SWW_STICK);
+    o = decide(m, d, v, 1.0, 0, nextafter(p0, 1.0));
+    assert_int_equal(o.reason, SWW_BY_CRITERION);
+    assert_int_equal(o.by_draw, 1);
+    char buf[800];
+    sww_describe(m, buf, sizeof buf);
+    assert_non_null(strstr(buf, "stick probability table 3 x 3 x 3 (d 5e-06..8e-05 m, v_t 0..3 m/s"));
+    assert_non_null(strstr(buf, "tangential gate on: the rough wall's stick probability over v_t 0..3"));
+    /* a sharp regime without any v_t table refuses the regime gate */
+    sww_model *sharp = load_fixture();
+    assert_int_equal(sww_set_tangential_regime(sharp), SWW_EMISSING);
+    assert_non_null(strstr(sww_errmsg(sharp), "probabilityVt"));
+    /* bad tables: named */
+    sww_model *b = load_fixture();
+    static const double VT1[] = { 0.5, 1.0 }, VT2[] = { 0.0, 2.0, 1.0 };
+    assert_int_equal(sww_regime_list(b, "probabilityVt", VT1, 2), SWW_EINVAL);
+    assert_non_null(strstr(sww_errmsg(b), "starts at v_t = 0"));
+    assert_int_equal(sww_regime_list(b, "probabilityVt", VT2, 3), SWW_EINVAL);
+    assert_non_null(strstr(sww_errmsg(b), "strictly increasing"));
+    assert_int_equal(sww_regime_list(b, "probabilityVt", VT, 3), SWW_OK);
+    assert_int_equal(sww_regime_commit(b, "code"), SWW_EMISSING);
+    assert_non_null(strstr(sww_errmsg(b), "'probabilityVt' without"));
+    sww_regime_clear(b);
+    assert_int_equal(sww_regime_load(b, FIXTURE), SWW_OK);
+    assert_int_equal(sww_regime_list(b, "probabilityD", PD, 3), SWW_OK);
+    assert_int_equal(sww_regime_list(b, "probabilityVn", PV, 3), SWW_OK);
+    assert_int_equal(sww_regime_list(b, "probabilityVt", VT, 3), SWW_OK);
+    assert_int_equal(sww_regime_list(b, "probabilityStick", PP, 9), SWW_OK);
+    assert_int_equal(sww_regime_commit(b, "code"), SWW_EINVAL);
+    assert_non_null(strstr(sww_errmsg(b), "3 x 3 x 3 = 27"));
+    sww_free(b);
+    sww_free(sharp);
+    sww_free(m);
+    sww_free(flat2);
+}
+
 /* Bilinear in (ln d, ln v_n) over any axes, by a linear scan (independent
  * of the core's direct indexing on uniform axes and its bisection). */
 static double p_ref(const double *D, size_t nd, const double *V, size_t nv, const double *P,
@@ -1497,6 +1585,7 @@ int main(void)
         cmocka_unit_test(oblique_gate),
         cmocka_unit_test(buildup_blend),
         cmocka_unit_test(probability_table),
+        cmocka_unit_test(probability_table_vt),
         cmocka_unit_test(probability_axes),
         cmocka_unit_test(blend_probabilities),
         cmocka_unit_test(detach_physics),

@@ -30,7 +30,7 @@ static int is_list_key(const char *key)
     return !strcmp(key, "coeffs") || !strcmp(key, "vn") || !strcmp(key, "dCrit")
         || !strcmp(key, "obliqueVt") || !strcmp(key, "obliqueVn") || !strcmp(key, "obliqueDCrit")
         || !strcmp(key, "probabilityD") || !strcmp(key, "probabilityVn")
-        || !strcmp(key, "probabilityStick") || !strcmp(key, "reboundD")
+        || !strcmp(key, "probabilityVt") || !strcmp(key, "probabilityStick") || !strcmp(key, "reboundD")
         || !strcmp(key, "reboundVn") || !strcmp(key, "reboundVt") || !strcmp(key, "reboundEn")
         || !strcmp(key, "reboundEt");
 }
@@ -74,8 +74,9 @@ static void probability_clear(sww_model *m)
     free(m->pr_lnd);
     free(m->pr_lnv);
     free(m->pr_p);
-    m->pr_lnd = m->pr_lnv = m->pr_p = NULL;
-    m->pr_nd = m->pr_nvn = m->pr_np = 0;
+    free(m->pr_vt);
+    m->pr_lnd = m->pr_lnv = m->pr_p = m->pr_vt = NULL;
+    m->pr_nd = m->pr_nvn = m->pr_np = m->pr_nvt = 0;
     m->pr_ready = 0;
 }
 
@@ -215,9 +216,32 @@ static int set_oblique_part(sww_model *m, const char *key, const double *v, size
 
 /* The stick-probability table's lists (checked together at commit):
  * probabilityD and probabilityVn strictly increasing and > 0, kept as their
- * logarithms; probabilityStick in [0, 1] as given. */
+ * logarithms; probabilityVt from 0 strictly increasing, kept; probabilityStick
+ * in [0, 1] as given. */
 static int set_probability_part(sww_model *m, const char *key, const double *v, size_t n)
 {
+    if (!strcmp(key, "probabilityVt")) {
+        if (n < 2 || n > SWW_MAX_TABLE)
+            return sww_fail(m, SWW_EINVAL, "key '%s': %zu values, expected 2 to %d", key, n,
+                            SWW_MAX_TABLE);
+        if (v[0] != 0.0)
+            return sww_fail(m, SWW_EINVAL, "key '%s': the first value is %g: the table starts at "
+                            "v_t = 0", key, v[0]);
+        for (size_t i = 1; i < n; i++)
+            if (!(v[i] > v[i - 1]) || isinf(v[i]))
+                return sww_fail(m, SWW_EINVAL, "key '%s': value %g (entry %zu) is not a finite "
+                                "speed larger than %g: the list must be strictly increasing", key,
+                                v[i], i, v[i - 1]);
+        double *p = malloc(n * sizeof *p);
+        if (!p)
+            return sww_fail(m, SWW_ENOMEM, "key '%s': out of memory", key);
+        memcpy(p, v, n * sizeof *p);
+        free(m->pr_vt);
+        m->pr_vt = p;
+        m->pr_nvt = n;
+        m->pr_ready = 0;
+        return SWW_OK;
+    }
     const int which = !strcmp(key, "probabilityD") ? 0 : !strcmp(key, "probabilityVn") ? 1 : 2;
     const size_t nmin = which == 2 ? 4u : 2u;
     if (n < nmin || n > SWW_MAX_TABLE)
@@ -331,7 +355,7 @@ int sww_regime_list(sww_model *m, const char *key, const double *v, size_t n)
     if (!strcmp(key, "obliqueVt") || !strcmp(key, "obliqueVn") || !strcmp(key, "obliqueDCrit"))
         return set_oblique_part(m, key, v, n);
     if (!strcmp(key, "probabilityD") || !strcmp(key, "probabilityVn")
-        || !strcmp(key, "probabilityStick"))
+        || !strcmp(key, "probabilityVt") || !strcmp(key, "probabilityStick"))
         return set_probability_part(m, key, v, n);
     if (!strncmp(key, "rebound", 7) && is_list_key(key))
         return set_rebound_part(m, key, v, n);
@@ -525,6 +549,9 @@ static int probability_commit(sww_model *m, const char *o)
                             "number >= 1 (impact points per cell)", o, np);
     }
     const int n_given = (m->pr_nd > 0) + (m->pr_nvn > 0) + (m->pr_np > 0);
+    if (n_given == 0 && m->pr_nvt > 0)
+        return sww_fail(m, SWW_EMISSING, "%s: key 'probabilityVt' without the stick-probability "
+                        "table (probabilityD, probabilityVn, probabilityStick)", o);
     if (n_given == 0)
         return SWW_OK;
     if (n_given < 3)
@@ -532,10 +559,14 @@ static int probability_commit(sww_model *m, const char *o)
                         "probabilityVn and probabilityStick together (missing '%s')", o,
                         !m->pr_nd ? "probabilityD" : !m->pr_nvn ? "probabilityVn"
                         : "probabilityStick");
-    if (m->pr_np != m->pr_nd * m->pr_nvn)
+    if (m->pr_nvt == 0 && m->pr_np != m->pr_nd * m->pr_nvn)
         return sww_fail(m, SWW_EINVAL, "%s: key 'probabilityStick': %zu values, but probabilityD "
                         "x probabilityVn = %zu x %zu = %zu", o, m->pr_np, m->pr_nd, m->pr_nvn,
                         m->pr_nd * m->pr_nvn);
+    if (m->pr_nvt > 0 && m->pr_np != m->pr_nd * m->pr_nvt * m->pr_nvn)
+        return sww_fail(m, SWW_EINVAL, "%s: key 'probabilityStick': %zu values, but probabilityD "
+                        "x probabilityVt x probabilityVn = %zu x %zu x %zu = %zu", o, m->pr_np,
+                        m->pr_nd, m->pr_nvt, m->pr_nvn, m->pr_nd * m->pr_nvt * m->pr_nvn);
     /* uniform axes (to 1e-9 of a cell): the cell directly, no search */
     for (int a = 0; a < 2; a++) {
         const double *X = a == 0 ? m->pr_lnd : m->pr_lnv;
@@ -699,10 +730,12 @@ int sww_regime_commit(sww_model *m, const char *origin)
         return sww_fail(m, SWW_EMISSING, "%s: rebound 'table' needs the kernel's rebound table "
                         "(reboundD, reboundVn, reboundEn: make regime.coeffs with snowregime map)",
                         o);
-    if (m->vt_on == 2 && !m->ob_ready) {
+    if (m->vt_on == 2 && !m->ob_ready && !(m->pr_ready && m->pr_nvt > 0)) {
         m->vt_on = 0;
         return sww_fail(m, SWW_EMISSING, "%s: the regime tangential gate needs the oblique table "
-                        "(obliqueVt, obliqueVn, obliqueDCrit: snowregime map --vt 0,...)", o);
+                        "(obliqueVt, obliqueVn, obliqueDCrit: snowregime map --vt 0,...) or a "
+                        "rough wall's stick probability over v_t (probabilityVt: snowregime map "
+                        "--set wall=lattice --vt 0,...)", o);
     }
     m->ready = 1;
     m->err[0] = '\0';
@@ -737,10 +770,12 @@ int sww_set_tangential_gate(sww_model *m, double vt_max, double d_ref, double ex
 int sww_set_tangential_regime(sww_model *m)
 {
     m->err[0] = '\0'; /* the message is of the last call only */
-    if (!m->ready || !m->ob_ready)
+    if (!m->ready || !(m->ob_ready || (m->pr_ready && m->pr_nvt > 0)))
         return sww_fail(m, SWW_EMISSING, "tangential gate 'regime': the regime map has no "
                         "oblique table (obliqueVt, obliqueVn, obliqueDCrit: make it with "
-                        "snowregime map --vt 0,... --max-slide S)");
+                        "snowregime map --vt 0,... --max-slide S) and no rough wall's stick "
+                        "probability over v_t (probabilityVt: snowregime map --set wall=lattice "
+                        "--vt 0,...)");
     m->vt_on = 2;
     return SWW_OK;
 }
@@ -855,6 +890,14 @@ int sww_probability_table(const sww_model *m, size_t *nd, size_t *nvn)
     if (nvn)
         *nvn = m->pr_ready ? m->pr_nvn : 0;
     return m->pr_ready;
+}
+
+size_t sww_probability_vt(const sww_model *m, double *vt_max)
+{
+    const size_t k = m->pr_ready ? m->pr_nvt : 0;
+    if (vt_max)
+        *vt_max = k ? m->pr_vt[k - 1] : 0.0;
+    return k;
 }
 
 void sww_set_tangential_off(sww_model *m)
@@ -1120,9 +1163,12 @@ void sww_describe(const sww_model *m, char *buf, size_t n)
         snprintf(reb, sizeof reb, "e_n 1 (no yieldVelocity/reboundNormal)");
     if (m->vt_on == 1)
         snprintf(vt, sizeof vt, "on: vtMax %g m/s (d/%g m)^%g", m->vt_max, m->vt_dref, m->vt_exp);
-    else if (m->vt_on == 2)
+    else if (m->vt_on == 2 && m->ob_ready)
         snprintf(vt, sizeof vt, "on: regime table %zu x %zu (v_t 0..%g m/s, slide %g m)",
                  m->ob_nvt, m->ob_nvn, m->ob_vt[m->ob_nvt - 1], m->num[K_OBSLIDE]);
+    else if (m->vt_on == 2)
+        snprintf(vt, sizeof vt, "on: the rough wall's stick probability over v_t 0..%g m/s "
+                 "(%zu nodes; beyond: the last)", m->pr_vt[m->pr_nvt - 1], m->pr_nvt);
     else
         snprintf(vt, sizeof vt, "off");
     if (m->shear_on == 1)
@@ -1136,7 +1182,12 @@ void sww_describe(const sww_model *m, char *buf, size_t n)
     if (!(sww_rebound_uses_table(m) && m->rb_net))
         snprintf(et, sizeof et, ", e_t %g", m->e_t);
     char pr[192] = "";
-    if (m->pr_ready)
+    if (m->pr_ready && m->pr_nvt)
+        snprintf(pr, sizeof pr, "; stick probability table %zu x %zu x %zu (d %g..%g m, v_t 0..%g "
+                 "m/s, v_n %g..%g m/s; outside: the interface)", m->pr_nd, m->pr_nvt, m->pr_nvn,
+                 exp(m->pr_lnd[0]), exp(m->pr_lnd[m->pr_nd - 1]), m->pr_vt[m->pr_nvt - 1],
+                 exp(m->pr_lnv[0]), exp(m->pr_lnv[m->pr_nvn - 1]));
+    else if (m->pr_ready)
         snprintf(pr, sizeof pr, "; stick probability table %zu x %zu (d %g..%g m, v_n %g..%g m/s; "
                  "outside: the interface)", m->pr_nd, m->pr_nvn, exp(m->pr_lnd[0]),
                  exp(m->pr_lnd[m->pr_nd - 1]), exp(m->pr_lnv[0]), exp(m->pr_lnv[m->pr_nvn - 1]));
@@ -1168,19 +1219,40 @@ static size_t prob_cell(const sww_model *m, int a, const double *X, size_t n, do
 /* The stick probability: with a rough wall's table (probabilityStick), inside
  * its span [d_1, d_M] x [v_1, v_N] bilinear in (ln d, ln v_n), exact at the
  * nodes; elsewhere, and without a table, the interface's sharp decision
- * (1 for d <= d_crit(v_n), else 0). Reads the model only, allocates nothing. */
-static double stick_probability(const sww_model *m, double d, double vn, double d_crit)
+ * (1 for d <= d_crit(v_n), else 0). A table over v_t too (probabilityVt) is
+ * read at v_t: linear between its layers, the last layer beyond them; vt < 0
+ * reads the v_t = 0 layer. Reads the model only, allocates nothing. */
+static double stick_probability(const sww_model *m, double d, double vn, double vt, double d_crit)
 {
     if (m->pr_ready && d >= m->pr_lo[0] && d <= m->pr_hi[0] && vn >= m->pr_lo[1]
         && vn <= m->pr_hi[1]) {
-        const size_t M = m->pr_nd, N = m->pr_nvn;
+        const size_t M = m->pr_nd, N = m->pr_nvn, K = m->pr_nvt ? m->pr_nvt : 1;
         const double *X = m->pr_lnd, *Y = m->pr_lnv;
         const double x = log(d), y = log(vn);
         const size_t i = prob_cell(m, 0, X, M, x, d), j = prob_cell(m, 1, Y, N, y, vn);
         const double tx = (x - X[i]) / (X[i + 1] - X[i]), ty = (y - Y[j]) / (Y[j + 1] - Y[j]);
-        const double *P0 = m->pr_p + i * N + j, *P1 = P0 + N;
-        const double p = (1.0 - tx) * ((1.0 - ty) * P0[0] + ty * P0[1])
-                       + tx * ((1.0 - ty) * P1[0] + ty * P1[1]);
+        /* the v_t layers k, k + 1 and the weight of k + 1 */
+        size_t k = 0;
+        double tz = 0.0;
+        if (K > 1 && vt > 0.0) {
+            if (vt >= m->pr_vt[K - 1]) {
+                k = K - 2;
+                tz = 1.0;
+            } else {
+                while (k < K - 2 && vt >= m->pr_vt[k + 1])
+                    k++;
+                tz = (vt - m->pr_vt[k]) / (m->pr_vt[k + 1] - m->pr_vt[k]);
+            }
+        }
+        double p = 0.0;
+        for (int l = 0; l < 2; l++) {
+            const double w = l ? tz : 1.0 - tz;
+            if (w == 0.0)
+                continue;
+            const double *P0 = m->pr_p + (i * K + k + (size_t)l) * N + j, *P1 = P0 + K * N;
+            p += w * ((1.0 - tx) * ((1.0 - ty) * P0[0] + ty * P0[1])
+                      + tx * ((1.0 - ty) * P1[0] + ty * P1[1]));
+        }
         return p < 0.0 ? 0.0 : (p > 1.0 ? 1.0 : p);
     }
     return d <= d_crit ? 1.0 : 0.0;
@@ -1203,14 +1275,22 @@ int sww_decide(const sww_model *m, const sww_impact *in, sww_outcome *out)
     const double dc = sww_dcrit(m, in->vn);
     out->d_crit = dc;
     out->range = in->vn < m->num[K_VNMIN] ? -1 : (in->vn > m->num[K_VNMAX] ? 1 : 0);
-    out->p_stick = stick_probability(m, in->d, in->vn, dc);
+    /* a rough wall's table over v_t is read at v_t with the regime gate on,
+     * else at v_t = 0: a gate that is off leaves v_t out */
+    const int pr_vt = m->vt_on == 2 && m->pr_ready && m->pr_nvt > 0;
+    out->p_stick = stick_probability(m, in->d, in->vn, pr_vt ? in->vt : -1.0, dc);
     out->reason = SWW_BY_CRITERION;
     int stick = in->u < out->p_stick;
     out->by_draw = !stick && out->p_stick > 0.0;
+    if (!stick && pr_vt && in->vt > 0.0 && in->u < stick_probability(m, in->d, in->vn, -1.0, dc)) {
+        /* it would stick at v_t = 0: the tangential motion made it bounce */
+        out->by_draw = 0;
+        out->reason = SWW_BY_TANGENTIAL;
+    }
     if (stick && m->vt_on == 1 && in->vt > sww_vt_max(m, in->d)) {
         stick = 0;
         out->reason = SWW_BY_TANGENTIAL;
-    } else if (stick && m->vt_on == 2 && in->vt > 0.0 && in->vn > 0.0
+    } else if (stick && m->vt_on == 2 && m->ob_ready && in->vt > 0.0 && in->vn > 0.0
                && (isinf(in->vt) || log(in->d) > oblique_lndt(m, in->vn, in->vt))) {
         /* a stick candidate (d <= d_crit(v_n), or by the rough wall's
          * probability): the tangential limit decides */

@@ -105,7 +105,7 @@ int sww_regime_load(sww_model *m, const char *path);
  *   maxResidual yieldVelocity reboundNormal gamma Estar rhoParticle mu obliqueSlide
  *   probabilityPoints
  * list keys: coeffs vn dCrit obliqueVt obliqueVn obliqueDCrit probabilityD
- *   probabilityVn probabilityStick reboundD reboundVn reboundVt reboundEn reboundEt;
+ *   probabilityVn probabilityVt probabilityStick reboundD reboundVn reboundVt reboundEn reboundEt;
  * word keys: representation basis label
  * An unknown key, or a key given as the wrong kind (a number for a list key, ...),
  * is SWW_EINVAL with a message naming it (a misspelt key is an error, not a silent
@@ -225,6 +225,10 @@ int sww_oblique_table(const sww_model *m, size_t *nvt, size_t *nvn);
  * probabilityStick: a rough wall); its sizes M (diameters) and N (speeds)
  * into *nd, *nvn (may be NULL; 0 without a table). */
 int sww_probability_table(const sww_model *m, size_t *nd, size_t *nvn);
+/* The v_t nodes of that table (probabilityVt: a rough map over v_t, read at
+ * the impact's v_t when the regime tangential gate is on, else at v_t = 0);
+ * 0 without; *vt_max (may be NULL) the last node [m/s]. */
+size_t sww_probability_vt(const sww_model *m, double *vt_max);
 /* Normal rebound factor e_n(v_n) of the classic rebound (Thornton with
  * yieldVelocity, or the constant reboundNormal; 1 without either). */
 double sww_rebound_normal(const sww_model *m, double vn);

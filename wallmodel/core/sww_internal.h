@@ -37,9 +37,11 @@ struct sww_model {
     size_t ob_nvt, ob_nvn, ob_nd;
     int ob_ready;                  /* the table passed the commit checks */
     /* stick-probability table of a rough wall: probabilityD, probabilityVn,
-     * probabilityStick (M x N, rows by d) */
+     * optional probabilityVt, probabilityStick (M x K x N: rows by d, then by
+     * v_t, then v_n; K = 1 without probabilityVt) */
     double *pr_lnd, *pr_lnv, *pr_p;   /* ln d, ln v_n, p_stick in [0, 1] */
-    size_t pr_nd, pr_nvn, pr_np;
+    double *pr_vt;                    /* v_t nodes [m/s] (from 0), NULL without */
+    size_t pr_nd, pr_nvn, pr_np, pr_nvt;
     /* per axis (0 d, 1 v_n), set at commit: nodes uniform in ln (1) or in the
      * value itself (2: snowregime's linear diameters), else 0 (bisection);
      * the first node and 1 / spacing in that coordinate */

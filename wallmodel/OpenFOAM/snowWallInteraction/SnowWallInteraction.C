@@ -796,8 +796,11 @@ void Foam::SnowWallInteraction<CloudType>::applyGates
             else if (model == "regime")
             {
                 // d_crit(v_n, v_t) from the regime's oblique table
-                // (snowregime map --vt 0,... --max-slide S)
+                // (snowregime map --vt 0,... --max-slide S), or a rough
+                // wall's stick probability over v_t (snowregime map --set
+                // wall=lattice --vt 0,...: issue 24)
                 check(m, sww_set_tangential_regime(m), g);
+                const bool roughVt = !sww_oblique_table(m, nullptr, nullptr);
                 // the criterion's slide length, when the case states it,
                 // must be the one the table was made with (the C core checks
                 // it: a table without obliqueSlide is an error, not a NaN)
@@ -809,19 +812,31 @@ void Foam::SnowWallInteraction<CloudType>::applyGates
                 {
                     const scalarList vt(g.get<scalarList>("vtTable"));
                     size_t nvt = 0;
-                    sww_oblique_table(m, &nvt, nullptr);
+                    if (roughVt) nvt = sww_probability_vt(m, nullptr);
+                    else sww_oblique_table(m, &nvt, nullptr);
                     if (size_t(vt.size()) != nvt)
                     {
                         snowWallDetail::fatalAt(g, te)
                             << "snowWallInteraction: tangentialGate vtTable has "
-                            << vt.size() << " speeds, the regime's oblique table "
-                            << nvt << " (obliqueVt): the coefficients were made "
+                            << vt.size() << " speeds, the regime's "
+                            << (roughVt ? "stick-probability table " : "oblique table ")
+                            << nvt << (roughVt ? " (probabilityVt)" : " (obliqueVt)")
+                            << ": the coefficients were made "
                             << "with another list (rerun snowregime map --vt)"
                             << exit(FatalIOError);
                     }
                 }
                 const entry* se = g.findEntry("slideLength", keyType::LITERAL);
-                if (se)
+                if (se && roughVt)
+                {
+                    // a rough wall's stick is decided by energy (the sphere
+                    // can never leave), with no slide criterion: the length
+                    // is the flat regimes' (the same gate dictionary)
+                    Info<< "snowWallInteraction: tangentialGate slideLength is "
+                        << "not used by a rough wall's stick probability over "
+                        << "v_t (its stick: the sphere can never leave)" << endl;
+                }
+                else if (se)
                 {
                     check
                     (
