@@ -93,6 +93,8 @@ int sr_settings_apply(const sr_settings *s, swr_params *p, char *err, size_t err
         double v = 0.0;
         if (p->lattice != d.lattice) key = "lattice";
         else if (p->rough_step != d.rough_step) key = "rough_step";
+        else if (p->asperity_shape != d.asperity_shape) key = "asperity_shape";
+        else if (p->asperity_yield != d.asperity_yield) key = "asperity_yield";
         else if (p->asperity_r != d.asperity_r) { key = "asperity_r"; v = p->asperity_r; }
         else if (p->asperity_spacing != d.asperity_spacing) { key = "asperity_spacing"; v = p->asperity_spacing; }
         else if (p->asperity_jitter != d.asperity_jitter) { key = "asperity_jitter"; v = p->asperity_jitter; }
@@ -103,6 +105,13 @@ int sr_settings_apply(const sr_settings *s, swr_params *p, char *err, size_t err
             if (strcmp(key, "lattice") == 0)
                 snprintf(err, errlen, "settings: lattice: hex is not used on a flat wall (wall flat); "
                          "set wall=lattice for a rough wall");
+            else if (strcmp(key, "asperity_yield") == 0)
+                snprintf(err, errlen, "settings: asperity_yield: %s is not used on a flat wall (wall "
+                         "flat); set wall=lattice for a rough wall",
+                         p->asperity_yield == SWR_YIELD_PARTICLE ? "particle" : "elastic");
+            else if (strcmp(key, "asperity_shape") == 0)
+                snprintf(err, errlen, "settings: asperity_shape: sphere is not used on a flat wall "
+                         "(wall flat); set wall=lattice for a rough wall");
             else if (strcmp(key, "rough_step") == 0)
                 snprintf(err, errlen, "settings: rough_step: fixed is not used on a flat wall (wall "
                          "flat); set wall=lattice for a rough wall");

@@ -104,6 +104,8 @@ void swr_params_default(swr_params *p)
     p->wall_seed = 1.0;
     p->rough_hold = 10.0;
     p->rough_step = SWR_ROUGH_STEP_ADAPTIVE;
+    p->asperity_shape = SWR_ASPERITY_HEMISPHERE;
+    p->asperity_yield = SWR_YIELD_CONTACT;
 }
 
 /* Strict number: the whole text (surrounding blanks allowed), finite. */
@@ -197,6 +199,27 @@ int swr_params_set(swr_params *p, const char *key, const char *value, char *err,
             p->wall = SWR_WALL_KIND_LATTICE;
         else
             return fail(err, errlen, "wall: '%s' is neither flat nor lattice", value);
+        return 0;
+    }
+    if (strcmp(key, "asperity_yield") == 0) {
+        if (strcmp(value, "contact") == 0)
+            p->asperity_yield = SWR_YIELD_CONTACT;
+        else if (strcmp(value, "particle") == 0)
+            p->asperity_yield = SWR_YIELD_PARTICLE;
+        else if (strcmp(value, "elastic") == 0)
+            p->asperity_yield = SWR_YIELD_ELASTIC;
+        else
+            return fail(err, errlen, "asperity_yield: '%s' is neither contact, particle nor elastic",
+                        value);
+        return 0;
+    }
+    if (strcmp(key, "asperity_shape") == 0) {
+        if (strcmp(value, "hemisphere") == 0)
+            p->asperity_shape = SWR_ASPERITY_HEMISPHERE;
+        else if (strcmp(value, "sphere") == 0)
+            p->asperity_shape = SWR_ASPERITY_SPHERE;
+        else
+            return fail(err, errlen, "asperity_shape: '%s' is neither hemisphere nor sphere", value);
         return 0;
     }
     if (strcmp(key, "rough_step") == 0) {
@@ -389,6 +412,11 @@ int swr_params_validate(const swr_params *p, char *err, size_t errlen)
         return fail(err, errlen, "wall: invalid value %d", (int)p->wall);
     if (p->lattice != SWR_LATTICE_SQUARE && p->lattice != SWR_LATTICE_HEX)
         return fail(err, errlen, "lattice: invalid value %d", (int)p->lattice);
+    if (p->asperity_yield != SWR_YIELD_CONTACT && p->asperity_yield != SWR_YIELD_PARTICLE
+        && p->asperity_yield != SWR_YIELD_ELASTIC)
+        return fail(err, errlen, "asperity_yield: invalid value %d", (int)p->asperity_yield);
+    if (p->asperity_shape != SWR_ASPERITY_HEMISPHERE && p->asperity_shape != SWR_ASPERITY_SPHERE)
+        return fail(err, errlen, "asperity_shape: invalid value %d", (int)p->asperity_shape);
     if (p->rough_step != SWR_ROUGH_STEP_ADAPTIVE && p->rough_step != SWR_ROUGH_STEP_FIXED)
         return fail(err, errlen, "rough_step: invalid value %d", (int)p->rough_step);
     if (check_ranges(p, wall_keys, N_WALL, err, errlen) != 0)
@@ -409,12 +437,17 @@ int swr_params_validate(const swr_params *p, char *err, size_t errlen)
                     "(it acts with cor thornton, thornton-asymptote or a constant COR)",
                     p->dashpot == SWR_DASHPOT_BOTH ? "both" : "loading",
                     p->cor == SWR_COR_ELASTIC ? "elastic" : "thornton-ning");
-    /* an asperity sunk by its radius or more is level with the base plane or
-     * below it: the impact would see the flat wall without a word */
-    if (p->wall == SWR_WALL_KIND_LATTICE && p->asperity_dz >= p->asperity_r)
-        return fail(err, errlen, "asperity_dz: %g m is not below asperity_r = %g m: asperities "
-                    "sunk that deep are level with the base plane or below it (accepted: "
-                    "0 <= asperity_dz < asperity_r)", p->asperity_dz, p->asperity_r);
+    /* an asperity sunk by its height or more (a hemisphere's radius, a whole
+     * sphere's diameter) is level with the base plane or below it: the impact
+     * would see the flat wall without a word */
+    const int sph = p->asperity_shape == SWR_ASPERITY_SPHERE;
+    if (p->wall == SWR_WALL_KIND_LATTICE && p->asperity_dz >= (sph ? 2.0 : 1.0) * p->asperity_r)
+        return fail(err, errlen, "asperity_dz: %g m is not below the asperity's height %g m "
+                    "(asperity_shape %s, asperity_r %g m): asperities sunk that deep are level "
+                    "with the base plane or below it (accepted: 0 <= asperity_dz < %s)",
+                    p->asperity_dz, (sph ? 2.0 : 1.0) * p->asperity_r,
+                    sph ? "sphere" : "hemisphere", p->asperity_r,
+                    sph ? "2 asperity_r" : "asperity_r");
     if (p->wall == SWR_WALL_KIND_LATTICE && p->cor == SWR_COR_THORNTON_NING)
         return fail(err, errlen, "cor: thornton-ning is not available on a rough wall (wall lattice): "
                                  "its contact history is kept for one contact only; use thornton");
@@ -441,6 +474,11 @@ void swr_params_print(const swr_params *p, const char *prefix, FILE *stream)
         fprintf(stream, "%swall lattice\n%slattice %s\n", pre, pre,
                 p->lattice == SWR_LATTICE_HEX ? "hex" : "square");
         print_keys(p, wall_keys, N_WALL, pre, stream);
+        fprintf(stream, "%sasperity_yield %s\n", pre,
+                p->asperity_yield == SWR_YIELD_PARTICLE ? "particle"
+                : p->asperity_yield == SWR_YIELD_ELASTIC ? "elastic" : "contact");
+        fprintf(stream, "%sasperity_shape %s\n", pre,
+                p->asperity_shape == SWR_ASPERITY_SPHERE ? "sphere" : "hemisphere");
         fprintf(stream, "%srough_step %s\n", pre,
                 p->rough_step == SWR_ROUGH_STEP_FIXED ? "fixed" : "adaptive");
     }

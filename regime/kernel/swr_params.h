@@ -41,6 +41,15 @@ typedef enum {
 
 /* Key `wall`: wall geometry (swr_wall.h). */
 typedef enum { SWR_WALL_KIND_FLAT = 0, SWR_WALL_KIND_LATTICE } swr_wall_kind;
+/* Key `asperity_shape`: hemispheres centred on the base plane, or whole
+ * spheres resting on it (centres at asperity_r above it). */
+typedef enum { SWR_ASPERITY_HEMISPHERE = 0, SWR_ASPERITY_SPHERE } swr_asperity_shape;
+/* Key `asperity_yield`: the plastic COR of an asperity contact (swr_rough.c,
+ * contact_target): Thornton's e_p with the yield velocity of a sphere of
+ * the contact's R* and the particle's mass (contact), with the flat wall's
+ * (particle), or none: the asperity contacts elastic, only the adhesive
+ * hysteresis dissipates (elastic). The base plane keeps the particle's. */
+typedef enum { SWR_YIELD_CONTACT = 0, SWR_YIELD_PARTICLE, SWR_YIELD_ELASTIC } swr_asperity_yield;
 /* Key `rough_step`: the rough wall's time step (swr_rough.c, step_size). */
 typedef enum { SWR_ROUGH_STEP_ADAPTIVE = 0, SWR_ROUGH_STEP_FIXED } swr_rough_step;
 /* Key `lattice`: arrangement of the asperities of a lattice wall. */
@@ -75,6 +84,8 @@ typedef struct {
     swr_wall_kind wall; /* `wall`     flat | lattice                  flat     */
     swr_lattice lattice; /* `lattice` square | hex                    square   */
     double asperity_r;   /* `asperity_r` asperity radius [m]           1e-6     */
+    swr_asperity_shape asperity_shape; /* `asperity_shape` hemisphere | sphere  hemisphere */
+    swr_asperity_yield asperity_yield; /* `asperity_yield` contact | particle | elastic  contact */
     double asperity_spacing; /* `asperity_spacing` nearest-neighbour distance [m] 2e-6 */
     double asperity_jitter;  /* `asperity_jitter` random lateral offset / spacing [-] 0 */
     double asperity_dz;  /* `asperity_dz` random sinking depth [m]     0        */

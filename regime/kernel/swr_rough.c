@@ -89,6 +89,7 @@ typedef struct {
     const swr_wall *w;
     double R, r, L;         /* particle radius, asperity radius (scaled), length unit [m] */
     double invL;            /* 1 / L */
+    double zc;              /* asperity centre height (scaled; swr_wall.h) */
     double reach_a;         /* R + r: centre distance at first touch of an asperity */
     swr_normal na, npl;     /* asperity and plane normal laws */
     double kda, kdp;        /* dashpot factors */
@@ -151,8 +152,9 @@ static double geometry(const rc_state *s, const double *a, const double C[3], do
     return s->reach_a - D;
 }
 
-/* Horizontal distance from a sphere centre at height z within which an
- * asperity centre (at z <= 0) lies within `reach` of it; < 0: none. */
+/* Horizontal distance from a sphere centre at height z (above the plane of
+ * the asperity centres, s->zc) within which an asperity centre (at or below
+ * that plane) lies within `reach` of it; < 0: none. */
 static double side_reach(double reach, double z)
 {
     const double r2 = reach * reach - (z > 0.0 ? z * z : 0.0);
@@ -168,12 +170,18 @@ static int find(const rc_state *s, int i, int j)
 }
 
 /* Plastic COR of one contact: Thornton's e_p with the yield velocity of a
- * sphere of this R* and the particle's mass (the flat wall's V_y at R* = R). */
+ * sphere of this R* and the particle's mass (the flat wall's V_y at R* = R),
+ * per asperity_yield: an asperity contact (R* < R) takes the contact's
+ * (contact), the flat wall's (particle) or none (elastic, e = 1). */
 static double contact_target(const rc_state *s, double Rc_si, double vi_si)
 {
     const swr_params *p = &s->m->p;
-    if ((p->cor == SWR_COR_THORNTON || p->cor == SWR_COR_THORNTON_ASYMPTOTE)
-        && p->cor_pair == SWR_PAIR_WALL && Rc_si < s->R * s->L) {
+    const int asperity = Rc_si < s->R * s->L;
+    if (asperity && p->asperity_yield == SWR_YIELD_ELASTIC)
+        return 1.0;
+    if (p->asperity_yield == SWR_YIELD_CONTACT
+        && (p->cor == SWR_COR_THORNTON || p->cor == SWR_COR_THORNTON_ASYMPTOTE)
+        && p->cor_pair == SWR_PAIR_WALL && asperity) {
         const double vy = swp_yield_velocity_pp(swp_limiting_pressure(p->sigma_y), s->m->Estar,
                                                 Rc_si, s->mass);
         return p->cor == SWR_COR_THORNTON ? swp_cor_thornton(vy / vi_si)
@@ -205,7 +213,8 @@ static int open_contact(rc_state *s, int i, int j, const double *a, const double
     const swr_params *p = &s->m->p;
     if (un > 0.0 && p->cor != SWR_COR_ELASTIC) {
         const double e = contact_target(s, c->nm->R * s->L, un);
-        c->alpha = p->dashpot == SWR_DASHPOT_BOTH ? swr_damping_alpha_both(e)
+        c->alpha = e >= 1.0 ? 0.0 /* elastic (asperity_yield elastic) */
+                 : p->dashpot == SWR_DASHPOT_BOTH ? swr_damping_alpha_both(e)
                  : p->cor == SWR_COR_CONSTANT ? s->m->alpha_const : swr_damping_alpha(e);
     }
     c->phi = delta > 0.0 ? 0.8 * c->alpha * c->kd * delta * sqrt(sqrt(delta)) : 0.0;
@@ -259,7 +268,7 @@ static double free_flight(const rc_state *s, const double C[3], const double v[3
         if (!isfinite(t1))
             t1 = t0 + (isfinite(tchunk) ? tchunk : 0.0);
         /* lowest centre height over the chunk sets how far sideways it reaches */
-        const double rh = side_reach(s->reach_a, fmin(zc + v[2] * t0, zc + v[2] * t1));
+        const double rh = side_reach(s->reach_a, fmin(zc + v[2] * t0, zc + v[2] * t1) - s->zc);
         if (rh > 0.0) {
             const double xa = C[0] + v[0] * t0, xb = C[0] + v[0] * t1;
             const double ya = C[1] + v[1] * t0, yb = C[1] + v[1] * t1;
@@ -363,7 +372,7 @@ static int new_contacts(rc_state *s, const double C[3], const double v[3])
         }
     } else {
         const double far = s->reach_a + 2.0 * s->margin;
-        const double rh = side_reach(far, C[2]);
+        const double rh = side_reach(far, C[2] - s->zc);
         int kept = 1;
         s->nnear = 0;
         if (rh > 0.0) {
@@ -553,6 +562,7 @@ swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_resul
     s->V = V;
     s->L = L;
     s->invL = 1.0 / L;
+    s->zc = m->wall.zc / L;
     s->mass = mass;
     s->R = R_si / L;
     s->r = r_si / L;

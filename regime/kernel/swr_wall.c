@@ -14,6 +14,7 @@ void swr_wall_init(swr_wall *w, const swr_params *p)
     w->row = w->hex ? 0.5 * sqrt(3.0) * w->s : w->s;
     w->jitter = p->asperity_jitter;
     w->dz = p->asperity_dz;
+    w->zc = p->asperity_shape == SWR_ASPERITY_SPHERE ? p->asperity_r : 0.0;
     w->seed = (unsigned long long)p->wall_seed;
 }
 
@@ -52,7 +53,7 @@ void swr_wall_asperity(const swr_wall *w, int i, int j, double c[3])
 {
     c[0] = (i + (w->hex && (j & 1) ? 0.5 : 0.0)) * w->s;
     c[1] = j * w->row;
-    c[2] = 0.0;
+    c[2] = w->zc;
     if (w->jitter > 0.0 || w->dz > 0.0) {
         const unsigned long long h =
             mix(w->seed ^ mix((unsigned long long)(unsigned)i << 32 | (unsigned)j));
@@ -89,7 +90,7 @@ void swr_wall_row_range(const swr_wall *w, int j, double xlo, double xhi, int *i
 
 double swr_wall_top(const swr_wall *w)
 {
-    return w->type == SWR_WALL_LATTICE ? w->r : 0.0;
+    return w->type == SWR_WALL_LATTICE ? w->zc + w->r : 0.0;
 }
 
 void swr_wall_sample_area(const swr_wall *w, double *lx, double *ly)

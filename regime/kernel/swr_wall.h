@@ -7,7 +7,9 @@
  *    in one dimension; R* = R.
  *
  *  - lattice: a rough wall of hemispherical asperities of the wall material,
- *    radius r (`asperity_r`), centred on the base plane z = 0 at the nodes of
+ *    radius r (`asperity_r`), centred on the base plane z = 0 (or, with
+ *    `asperity_shape sphere`, whole spheres resting on it, centred at z = r)
+ *    at the nodes of
  *    a square or hexagonal lattice of spacing s (`lattice`, `asperity_spacing`,
  *    the nearest-neighbour distance). The random variant moves each asperity
  *    by a uniform offset of up to `asperity_jitter` s in x and in y and sinks
@@ -42,6 +44,8 @@ typedef struct {
     double row;           /* row spacing: s (square), s sqrt(3)/2 (hexagonal) */
     double jitter;        /* largest lateral offset / s */
     double dz;            /* largest sinking depth [m] */
+    double zc;            /* height of the asperity centres above the base plane
+                             before sinking: 0 (hemispheres), r (whole spheres) [m] */
     unsigned long long seed;
 } swr_wall;
 
@@ -70,7 +74,8 @@ void swr_wall_asperity(const swr_wall *w, int i, int j, double c[3]);
 void swr_wall_rows(const swr_wall *w, double ylo, double yhi, int *j0, int *j1);
 void swr_wall_row_range(const swr_wall *w, int j, double xlo, double xhi, int *i0, int *i1);
 
-/* Height of the highest asperity top possible (r; 0 for a flat wall). */
+/* Height of the highest asperity top possible (r, 2r for whole spheres; 0 for a
+ * flat wall). */
 double swr_wall_top(const swr_wall *w);
 
 /* The rectangle [0, lx) x [0, ly) to sample impact points over: one unit cell

@@ -36,9 +36,13 @@ static void one_asperity_vs(void **state)
         char kr[64], ks[64];
         snprintf(kr, sizeof kr, "asperity_r=%g", radii[a]);
         snprintf(ks, sizeof ks, "asperity_spacing=%g", 3.0 * radii[a]);
+        /* cor elastic everywhere; and asperity_yield elastic (issue 24): the
+         * default plastic law on the particle, elastic asperity contacts, and
+         * on whole spheres (asperity_shape sphere: the same top) */
         const char *kv[] = { "wall=lattice", kr, ks, "cor=elastic", NULL };
+        const char *kvy[] = { "wall=lattice", kr, ks, "asperity_yield=elastic", "asperity_shape=sphere", NULL };
         swr_params p = test_params(kv);
-        swr_model *m = test_model(kv);
+        swr_model *m = test_model(kv), *my = test_model(kvy);
         const double Es = swp_effective_modulus(p.E, p.nu, p.E_wall, p.nu_wall);
         for (size_t k = 0; k < 2; k++) {
             const double R = 0.5 * ds[k], Rs = R * radii[a] / (R + radii[a]);
@@ -47,11 +51,15 @@ static void one_asperity_vs(void **state)
             double vc;
             assert_int_equal(swr_vcrit_normal(m, ds[k], 1e-4, 1e2, 1e-5, &vc), 0);
             const double e = REL(vc, vs);
-            printf("  r %g um, d %g um: v_crit %.6g, V_s(R*) %.6g, rel %.2e\n", radii[a] * 1e6,
-                   ds[k] * 1e6, vc, vs, e);
+            double vy;
+            assert_int_equal(swr_vcrit_normal(my, ds[k], 1e-4, 1e2, 1e-5, &vy), 0);
+            printf("  r %g um, d %g um: v_crit %.6g, V_s(R*) %.6g, rel %.2e; elastic asperity "
+                   "sphere %.6g, rel %.2e\n", radii[a] * 1e6, ds[k] * 1e6, vc, vs, e, vy, REL(vy, vs));
             assert_true(e < 5e-3);
+            assert_true(REL(vy, vs) < 5e-3);
         }
         swr_model_free(m);
+        swr_model_free(my);
     }
 }
 
@@ -322,6 +330,28 @@ static void rough_params(void **state)
     assert_non_null(strstr(buf, "asperity_spacing"));
     assert_non_null(strstr(buf, "rough_hold"));
     assert_non_null(strstr(buf, "rough_step adaptive"));
+    assert_non_null(strstr(buf, "asperity_shape hemisphere"));
+    assert_non_null(strstr(buf, "asperity_yield contact"));
+    /* asperity_shape, asperity_yield: the names or a named error; a whole
+     * sphere may sink by up to its diameter, a hemisphere by its radius */
+    assert_int_equal(swr_params_set_kv(&p, "asperity_shape=cube", err, sizeof err), -1);
+    assert_non_null(strstr(err, "asperity_shape: 'cube'"));
+    assert_int_equal(swr_params_set_kv(&p, "asperity_yield=soft", err, sizeof err), -1);
+    assert_non_null(strstr(err, "asperity_yield: 'soft'"));
+    assert_int_equal(swr_params_set_kv(&p, "asperity_dz=1.5e-6", err, sizeof err), 0);
+    assert_int_equal(swr_params_validate(&p, err, sizeof err), -1);
+    assert_non_null(strstr(err, "asperity_dz"));
+    assert_int_equal(swr_params_set_kv(&p, "asperity_shape=sphere", err, sizeof err), 0);
+    assert_int_equal(swr_params_validate(&p, err, sizeof err), 0);
+    assert_int_equal(swr_params_set_kv(&p, "asperity_dz=0", err, sizeof err), 0);
+    {
+        swr_wall w;
+        swr_wall_init(&w, &p);
+        double c[3];
+        swr_wall_asperity(&w, 0, 0, c);
+        assert_true(swr_wall_top(&w) == 2.0 * p.asperity_r);
+        assert_true(c[2] == p.asperity_r);
+    }
     /* rough_step: adaptive | fixed, anything else named */
     assert_int_equal(swr_params_set_kv(&p, "rough_step=fixed", err, sizeof err), 0);
     assert_int_equal(p.rough_step, SWR_ROUGH_STEP_FIXED);

@@ -52,7 +52,7 @@ check "dashpot: both is not used by cor elastic, which has no dashpot" \
     "$SR" map --set cor=elastic --set dashpot=both
 check "dashpot: loading is not used by cor thornton-ning" \
     "$SR" sensitivity --set dashpot=loading --set cor=thornton-ning
-check "asperity_dz: 1e-06 m is not below asperity_r = 1e-06 m: asperities sunk that deep are level with the base plane or below it" \
+check "asperity_dz: 1e-06 m is not below the asperity's height 1e-06 m (asperity_shape hemisphere, asperity_r 1e-06 m): asperities sunk that deep are level with the base plane or below it" \
     "$SR" map --set wall=lattice --set asperity_dz=1e-6
 # rough-wall settings on a flat wall (hostile sweep, issue 22: the flat answer without a word)
 check "settings: asperity_r: 2e-06 is not used on a flat wall (wall flat); set wall=lattice" \
