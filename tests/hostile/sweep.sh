@@ -381,9 +381,19 @@ S=snowregime-settings
 for kv in rho=0 rho=-920 rho=nan E=0 E=-1 nu=0.6 nu=-1.1 sigma_y=0 E_wall=inf nu_wall=0.51 rho_wall=0 \
           gamma=-0.2 gamma=inf adhesion=dmt z0=0 z0=-1e-10 cor=0 cor=1.5 cor=thornton-nin cor_pair=plate \
           mu=-0.1 mu=nan xi_crit=0 accuracy=5 accuracy=1e9 wall=rough lattice=triangle \
-          asperity_r=0 asperity_jitter=0.6 wall_seed=1.5 wall_seed=-1 rough_hold=0 dashpot=never; do
+          asperity_r=0 asperity_jitter=0.6 wall_seed=1.5 wall_seed=-1 rough_hold=0 dashpot=never \
+          rough_step=fast asperity_shape=cube asperity_yield=soft; do
     hc $S err "${kv%%=*}" "--set $kv out of range / unknown value" "\$SR vcrit --d 1e-5 --set $kv"
 done
+# issue 24: rough-wall keys on a flat wall, a whole sphere sunk by its diameter, a
+# rough map of hours (refused unless --force), a rough table over v_t beyond 4096
+for kv in rough_step=fixed asperity_shape=sphere asperity_yield=elastic; do
+    hc $S err "${kv%%=*}" "--set $kv on a flat wall" "\$SR vcrit --d 1e-5 --set $kv"
+done
+hc $S err 'asperity_dz' 'whole spheres sunk by their diameter' '$SR vcrit --d 1e-5 --set wall=lattice --set asperity_shape=sphere --set asperity_dz=2e-6'
+hc $S err 'force' 'a rough map of hours without --force' '$SR map --out long --set wall=lattice --points 100000 --nd 60 --nv 60 --threads 1'
+hc $S err 'vt' 'a rough map over v_t beyond the 4096-value table' '$SR map --out big --set wall=lattice --vt 0,1,2'
+hc $S err 'angle' 'a rough map over impact angles' '$SR map --out ang --set wall=lattice --angle 0,30'
 hc $S err 'rhoo' '--set rhoo=920 unknown key' '$SR vcrit --d 1e-5 --set rhoo=920'
 hc $S err 'rho' '--set rho (no =)' '$SR vcrit --d 1e-5 --set rho'
 hc $S err 'set|=' '--set =5 (no key)' '$SR vcrit --d 1e-5 --set =5'
@@ -572,7 +582,7 @@ hc $S ok '' 'a valid option set reaches the pre-run checks (control)' 'eval "$AR
 for a in "-parallel 999" "-parallel 0" "-parallel abc" "-parallel 1.5" "-parallel" "-gate on" "-gate" "-sizes 0" \
          "-sizes 2000" "-sizes 5,,10" "-sizes 5.5" "-sizes" "-dispersion foo" "-dispersion nearwall,nearwall" \
          "-dispersion" "-oversubscribe" "-parallell 2" "--steady" "-steady -sizes 5" "-steady -feedback" \
-         "-steady -rough" "-steady -rebound" "-rebound 2" "-rough -gate regime" "-steady -dispersion nearwall,crw" "-parallel 2 -test -parallel 99"; do
+         "-steady -rough" "-steady -rebound" "-rebound 2" "-steady -dispersion nearwall,crw" "-parallel 2 -test -parallel 99"; do
     hc $S err "${a%% *}|Allrun" "Allrun $a refused before anything is written" "eval \"\$AR $a\""
 done
 hc $S err 'sizes' 'Allrun -sizes 5,5 (a diameter twice)' 'eval "$AR -sizes 5,5"'
