@@ -93,7 +93,8 @@ typedef struct {
     double reach_a;         /* R + r: centre distance at first touch of an asperity */
     swr_normal na, npl;     /* asperity and plane normal laws */
     double kda, kdp;        /* dashpot factors */
-    double Is;              /* moment of inertia */
+    double Is, invIs;       /* moment of inertia, its inverse */
+    double invR;            /* 1 / R */
     double Gs, mu, xic;     /* scaled G*, friction, critical rolling displacement */
     double V, mass;         /* speed unit [m/s], particle mass [kg] */
     double w2_ref;          /* squared frequency of the reference contact (step_size) */
@@ -446,10 +447,10 @@ static double spring_energy(const rc_state *s, const rc_contact *c)
 {
     const double a = c->x * c->x;
     double e = 0.5 * 8.0 * s->Gs * a * dot(c->xi, c->xi);
-    if (c->nm->Fc > 0.0) {
-        const double ra = a / c->nm->a0;
-        e += 0.5 * 4.0 * c->nm->Fc * ra * sqrt(ra) * dot(c->xr, c->xr) / s->R;
-    }
+    /* the rolling spring's k_r at this x (set by the step that set x; a
+     * contact opened since has no rolling displacement yet) */
+    if (c->nm->Fc > 0.0)
+        e += 0.5 * c->kr * dot(c->xr, c->xr) * s->invR;
     return e;
 }
 
@@ -479,7 +480,7 @@ static double held_w2(const rc_state *s, double travel)
     for (int k = 0; k < s->nc; k++) {
         const rc_contact *c = &s->c[k];
         const double a2 = c->x * c->x * c->x * c->x;
-        w2 += (2.0 * c->nm->Es + 28.0 * s->Gs) * sqrt(a2 + c->nm->R * travel) + 2.5 * c->kr / s->R;
+        w2 += (2.0 * c->nm->Es + 28.0 * s->Gs) * sqrt(a2 + c->nm->R * travel) + 2.5 * c->kr * s->invR;
     }
     return w2;
 }
@@ -492,7 +493,8 @@ static double held_w2(const rc_state *s, double travel)
  * loading gets as many steps. A step
  *  - resolves the contacts held as finely as the reference one, with their
  *    stiffness at the end of the step (grown by the step's travel u h):
- *    w2(u h) h^2 <= w2_ref base^2, found from above in a few passes;
+ *    w2(u h) h^2 <= w2_ref base^2, w2 taken at the longest step allowed
+ *    (it grows with h, so the step found keeps the bound);
  *  - moves the sphere no farther than a step hd at the start speed v0 does:
  *    h <= hd v0 / u;
  *  - when it may reach a surface not touched yet (u h beyond the smallest gap
@@ -515,11 +517,12 @@ static double step_size(const rc_state *s, double hd, double he, double v0, cons
     double h = SWR_ROUGH_STRETCH * base;
     if (u * h > hd * v0)
         h = hd * v0 / u;
-    for (int it = 0; it < 4; it++) {
+    {
+        /* the stiffness grown over the longest step bounds it from above: the
+         * step it allows grows the contacts less, so it keeps the bound */
         const double w2 = held_w2(s, u * h);
-        if (!(w2 * h * h > s->w2_ref * base * base))
-            break;
-        h = base * sqrt(s->w2_ref / w2);
+        if (w2 * h * h > s->w2_ref * base * base)
+            h = base * sqrt(s->w2_ref / w2);
     }
     const double gap = s->guard - s->moved;
     if (u * h > gap) {
@@ -572,6 +575,8 @@ swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_resul
     s->kda = sqrt(2.0 * m->Estar * sE * sqrt(s->na.R));
     s->kdp = sqrt(2.0 * m->Estar * sE * sqrt(s->npl.R));
     s->Is = 0.4 * s->R * s->R;
+    s->invIs = 1.0 / s->Is;
+    s->invR = 1.0 / s->R;
     s->Gs = m->Gstar * sE;
     s->mu = p->mu;
     s->xic = p->xi_crit / L;
@@ -700,7 +705,7 @@ swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_resul
         double vh[3], wh[3];
         for (int q = 0; q < 3; q++) {
             vh[q] = v[q] + h2 * F[q];
-            wh[q] = w[q] + h2 * M[q] / s->Is;
+            wh[q] = w[q] + h2 * M[q] * s->invIs;
         }
         /* --- drift --- */
         for (int q = 0; q < 3; q++)
@@ -786,7 +791,7 @@ swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_resul
                 if (r2 > s->xic * s->xic) {
                     /* the rolling limit: booked as the sliding one above */
                     const double f = s->xic / sqrt(r2);
-                    w_diss += 0.5 * kr * (r2 * (1.0 - f * f) - (1.0 - f) * dot(dxr, c->xr)) / s->R;
+                    w_diss += 0.5 * kr * (r2 * (1.0 - f * f) - (1.0 - f) * dot(dxr, c->xr)) * s->invR;
                     for (int q = 0; q < 3; q++)
                         c->xr[q] *= f;
                 }
@@ -808,7 +813,7 @@ swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_resul
         /* --- closing half kick with the new elastic and tangential forces --- */
         for (int q = 0; q < 3; q++) {
             v[q] = vh[q] + h2 * F[q];
-            w[q] = wh[q] + h2 * M[q] / s->Is;
+            w[q] = wh[q] + h2 * M[q] * s->invIs;
         }
         /* --- dashpots: each contact's impulse over the step is exact,
          * int c(delta) u dt = Phi(delta1) - Phi(delta0), Phi = (4/5) alpha kd
