@@ -15,9 +15,12 @@
 #     integrator (regime/kernel/swr_rough.c) and in LAMMPS (Debian's `lmp`,
 #     pair_style granular, one process), and compares the rebound velocity
 #     (v_x, v_z), the spin w_y, the number of contacts made and stick/bounce.
+#     The work is done by bin/snowlammps (validation/lammps/swl_*.c, C11, the
+#     kernel linked in; `snowlammps --help`); this script checks the options and
+#     makes the output folder appear whole or not at all.
 #     In LAMMPS the asperities are frozen spheres of radius r centred on z = 0,
 #     the base plane is fix wall/gran, the sphere is integrated by nve/sphere.
-#     The material constants are read from snowregime's settings printout.
+#     Both codes use the kernel's default material constants.
 #
 #     Cases (--cases, comma list):
 #       hertz        Hertz without adhesion, constant COR E on both branches
@@ -69,7 +72,7 @@
 #
 # ENVIRONMENT
 #     LMP          the LAMMPS binary (default lmp on PATH)
-#     SNOWREGIME   the snowregime binary (default bin/snowregime)
+#     SNOWLAMMPS   the snowlammps binary (default bin/snowlammps)
 #
 # EXIT STATUS
 #     0 done; 1 a run failed; 2 usage error; 3 (--check) an impact outside the
@@ -80,7 +83,7 @@
 #     validation/lammps-rough.sh --out /tmp/lr --quick --check
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
-sr=${SNOWREGIME:-$top/bin/snowregime}
+sl=${SNOWLAMMPS:-$top/bin/snowlammps}
 lmp=${LMP:-lmp}
 me=lammps-rough.sh
 usage() { echo "$me: $1 (see --help)" >&2; exit 2; }
@@ -135,16 +138,16 @@ for c in "${cl[@]}"; do
     case "$c" in hertz|jkr-elastic|jkr) ;; *) usage "--cases: unknown case '$c' (hertz, jkr-elastic, jkr)" ;; esac
 done
 command -v "$lmp" >/dev/null 2>&1 || { echo "$me: LAMMPS ('$lmp') is not installed: run etc/setup.sh --lammps (skipped)" >&2; exit 77; }
-[ -x "$sr" ] || { echo "$me: $sr missing: run ./Allwmake" >&2; exit 1; }
-command -v python3 >/dev/null 2>&1 || { echo "$me: python3 is needed" >&2; exit 1; }
+[ -x "$sl" ] || { echo "$me: $sl missing: run ./Allwmake" >&2; exit 1; }
 # shellcheck source=outdir.sh
 . "$top/validation/outdir.sh"
 outdir_begin lammps-rough "$out"
 t0=$(date +%s)
 rc=0
-python3 "$top/validation/lammps/rough_compare.py" --out "$tmp" --sr "$sr" --lmp "$(command -v "$lmp")" \
+"$sl" --out "$tmp" --lmp "$(command -v "$lmp")" --deck "$top/validation/lammps/impact.lmp" \
     --grid "$grid" --angles "$angles" --speeds-hertz "$sh" --speeds-jkr "$sj" --cases "$cases" \
     --d "$d" --cor "$cor" --lmp-steps "$steps" "${halve[@]}" "${single[@]}" >"$tmp/report.txt" || rc=$?
+[ "$rc" != 2 ] || exit 2    # snowlammps named the bad value
 [ "$rc" = 0 ] || [ "$rc" = 3 ] || { cat "$tmp/report.txt" >&2; echo "$me: the comparison failed (exit $rc)" >&2; exit 1; }
 t1=$(date +%s)
 echo "$me: $((t1 - t0)) s wall time (grid $grid, angles $angles, cases $cases${halve:+, step halving})" >"$tmp/times.txt"
