@@ -14,7 +14,8 @@
 #     spacing as in `snowregime --help`) in snowregime's 3-D multi-contact
 #     integrator (regime/kernel/swr_rough.c) and in LAMMPS (Debian's `lmp`,
 #     pair_style granular, one process), and compares the rebound velocity
-#     (v_x, v_z), the spin w_y, the number of contacts made and stick/bounce.
+#     (v_x, v_y, v_z), the spin (w_x, w_y, w_z), the number of contacts made and
+#     stick/bounce.
 #     The work is done by bin/snowlammps (validation/lammps/swl_*.c, C11, the
 #     kernel linked in; `snowlammps --help`); this script checks the options and
 #     makes the output folder appear whole or not at all.
@@ -62,11 +63,12 @@
 #     -h, --help           this text
 #
 # TOLERANCES (justified in doc/kernel.md, "Cross-check against LAMMPS")
-#     On bounces in both codes: |dv_x| <= 0.03 V, R |dw_y| <= 0.05 V, the same number
-#     of contacts. hertz: also |dv_z| <= 0.03 V and the same outcome. jkr-elastic:
-#     |E_L - E_s - n dU| <= 0.05 E_in instead of dv_z; a kernel stick against a LAMMPS
-#     bounce is allowed when LAMMPS's v_z^2/2 - n dU <= 0.05 E_in. jkr: |dv_z| <= 0.1 V;
-#     the outcome may differ when the code that bounces leaves with v_z <= 0.1 V.
+#     On bounces in both codes: |dv_x|, |dv_y| <= 0.03 V, R |dw_x|, R |dw_y|,
+#     R |dw_z| <= 0.05 V, the same number of contacts. hertz: also |dv_z| <= 0.03 V
+#     and the same outcome. jkr-elastic: |E_L - E_s - n dU| <= 0.05 E_in instead of
+#     dv_z; a kernel stick against a LAMMPS bounce is allowed when LAMMPS's
+#     v_z^2/2 - n dU <= 0.05 E_in. jkr: |dv_z| <= 0.1 V; the outcome may differ
+#     when the code that bounces leaves with v_z <= 0.1 V.
 #     LAMMPS's sphere counts as stuck when it has not left after 100 flat-wall
 #     contact times.
 #

@@ -292,26 +292,38 @@ static int compare(swl_lammps *L, swl_ours *O, int cas, double eL, const double 
     return rc;
 }
 
-/* deviations in units of the impact speed V: v_x, v_z, R w_y (bounces only);
- * `which` 0: snowregime against LAMMPS, 1: snowregime's halving, 2: LAMMPS's */
-static int dev(const row *r, int which, double R, double q[3])
+/* deviations in units of the impact speed V (bounces only): q[0] v_x, q[1] v_z,
+ * q[2] R w_y, and the components out of the plane of incidence: q[3] v_y, q[4]
+ * R w_x, q[5] R w_z; `which` 0: snowregime against LAMMPS, 1: snowregime's
+ * halving, 2: LAMMPS's */
+typedef struct {
+    int bounce;
+    double v[3], w[3];
+} state;
+
+static state st_o(const swl_ores *o)
 {
-    int b1, b2;
-    double vx1, vx2, vz1, vz2, w1, w2;
-    if (which == 0) {
-        b1 = r->o.bounce; b2 = r->l.bounce;
-        vx1 = r->o.v[0]; vx2 = r->l.v[0]; vz1 = r->o.v[2]; vz2 = r->l.v[2]; w1 = r->o.wy; w2 = r->l.w[1];
-    } else if (which == 1) {
-        b1 = r->o.bounce; b2 = r->o2.bounce;
-        vx1 = r->o.v[0]; vx2 = r->o2.v[0]; vz1 = r->o.v[2]; vz2 = r->o2.v[2]; w1 = r->o.wy; w2 = r->o2.wy;
-    } else {
-        b1 = r->l.bounce; b2 = r->l2.bounce;
-        vx1 = r->l.v[0]; vx2 = r->l2.v[0]; vz1 = r->l.v[2]; vz2 = r->l2.v[2]; w1 = r->l.w[1]; w2 = r->l2.w[1];
-    }
-    if (!(b1 && b2)) return 0;
-    q[0] = fabs(vx1 - vx2) / r->V;
-    q[1] = fabs(vz1 - vz2) / r->V;
-    q[2] = fabs(w1 - w2) * R / r->V;
+    state s = { o->bounce, { o->v[0], o->v[1], o->v[2] }, { o->w[0], o->wy, o->w[2] } };
+    return s;
+}
+
+static state st_l(const swl_lres *l)
+{
+    state s = { l->bounce, { l->v[0], l->v[1], l->v[2] }, { l->w[0], l->w[1], l->w[2] } };
+    return s;
+}
+
+static int dev(const row *r, int which, double R, double q[6])
+{
+    const state a = which == 2 ? st_l(&r->l) : st_o(&r->o);
+    const state b = which == 0 ? st_l(&r->l) : which == 1 ? st_o(&r->o2) : st_l(&r->l2);
+    if (!(a.bounce && b.bounce)) return 0;
+    q[0] = fabs(a.v[0] - b.v[0]) / r->V;
+    q[1] = fabs(a.v[2] - b.v[2]) / r->V;
+    q[2] = fabs(a.w[1] - b.w[1]) * R / r->V;
+    q[3] = fabs(a.v[1] - b.v[1]) / r->V;
+    q[4] = fabs(a.w[0] - b.w[0]) * R / r->V;
+    q[5] = fabs(a.w[2] - b.w[2]) * R / r->V;
     return 1;
 }
 
@@ -352,7 +364,8 @@ static void write_csv(FILE *f, const rows *R)
 {
     fprintf(f, "case,V_m_s,angle_deg,x_m,y_m,vn_m_s,vt_m_s,ours_outcome,lmp_outcome,ours_vx,lmp_vx,ours_vz,lmp_vz,"
                "lmp_vy,ours_wy,lmp_wy,lmp_wx,lmp_wz,ours_contacts,lmp_contacts,lmp_plane_contacts,"
-               "ours_status,ours_energy_err,ours2_vx,ours2_vz,ours2_wy,lmp2_vx,lmp2_vz,lmp2_wy\n");
+               "ours_status,ours_energy_err,ours2_vx,ours2_vz,ours2_wy,lmp2_vx,lmp2_vz,lmp2_wy,"
+               "ours_vy,ours_wx,ours_wz,ours2_vy,ours2_wx,ours2_wz,lmp2_vy,lmp2_wx,lmp2_wz\n");
     for (size_t i = 0; i < R->n; i++) {
         const row *r = &R->r[i];
         const swl_ores *o = &r->o;
@@ -369,6 +382,15 @@ static void write_csv(FILE *f, const rows *R)
         if (r->halved)
             fprintf(f, ",%.6g,%.6g,%.6g,%.6g,%.6g,%.6g", r->o2.v[0], r->o2.v[2], r->o2.wy, r->l2.v[0],
                     r->l2.v[2], r->l2.w[1]);
+        else
+            fprintf(f, ",,,,,,");
+        /* out of the plane of incidence (the kernel's v_out, w_out; 0 on a stick) */
+        fprintf(f, ",%.6g,%.6g,%.6g", o->v[1], o->w[0], o->w[2]);
+        if (r->halved)
+            fprintf(f, ",%.6g,%.6g,%.6g,%.6g,%.6g,%.6g", r->o2.v[1], r->o2.w[0], r->o2.w[2], r->l2.v[1],
+                    r->l2.w[0], r->l2.w[2]);
+        else
+            fprintf(f, ",,,,,,");
         fprintf(f, "\n");
     }
 }
@@ -443,14 +465,15 @@ int swl_compare_run(const swl_opts *a, FILE *report, char *err, size_t errlen)
         goto done;
     }
     add(&summ, "| case | V [m/s] | angle | impacts | bounces (s / L) | same outcome | same contacts (all / bounces) | max dv_x/V | max dv_z/V | max R dw_y/V | "
-               "halving: snowregime | halving: LAMMPS | energy: (E_L - E_s - n dU)/E_in | within tolerance |");
-    add(&summ, "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
+               "halving: snowregime | halving: LAMMPS | energy: (E_L - E_s - n dU)/E_in | "
+               "max dv_y/V | max R dw_x/V | max R dw_z/V | halving v_y, R w_x/z: snowregime | halving v_y, R w_x/z: LAMMPS | within tolerance |");
+    add(&summ, "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
     for (size_t g0 = 0; g0 < R.n; g0++) {
         if (done_g[g0]) continue;
         const int c = R.r[g0].cas;
         const double V = R.r[g0].V, th = R.r[g0].th;
         long ng = 0, same_o = 0, same_c = 0, nb = 0, same_cb = 0, nbo = 0, nbl = 0, ok = 0;
-        double mx[3] = { 0, 0, 0 }, hal[2][2] = { { 0, 0 }, { 0, 0 } }, ens = 0.0;
+        double mx[6] = { 0, 0, 0, 0, 0, 0 }, hal[2][4] = { { 0, 0, 0, 0 }, { 0, 0, 0, 0 } }, ens = 0.0;
         int any_hal = 0, nens = 0;
         for (size_t i = g0; i < R.n; i++) {
             const row *r = &R.r[i];
@@ -464,17 +487,19 @@ int swl_compare_run(const swl_opts *a, FILE *report, char *err, size_t errlen)
             same_cb += both && r->o.contacts == r->l.contacts;
             nbo += r->o.bounce;
             nbl += r->l.bounce;
-            double q[3];
+            double q[6];
             const int hq = dev(r, 0, m.R, q);
             if (hq)
-                for (int k = 0; k < 3; k++) mx[k] = fmax(mx[k], q[k]);
+                for (int k = 0; k < 6; k++) mx[k] = fmax(mx[k], q[k]);
             if (r->halved) {
                 any_hal = 1;
                 for (int w = 0; w < 2; w++) {
-                    double h[3];
+                    double h[6];
                     if (dev(r, 1 + w, m.R, h)) {
                         hal[w][0] = fmax(hal[w][0], fmax(h[0], h[1]));
                         hal[w][1] = fmax(hal[w][1], h[2]);
+                        hal[w][2] = fmax(hal[w][2], h[3]);
+                        hal[w][3] = fmax(hal[w][3], fmax(h[4], h[5]));
                     }
                 }
             }
@@ -488,6 +513,9 @@ int swl_compare_run(const swl_opts *a, FILE *report, char *err, size_t errlen)
             /* contacts: on bounces (a stick is decided by energy in the kernel, which
              * stops counting there, while LAMMPS's sphere rolls on to the time bound) */
             const int same_c_b = r->o.contacts == r->l.contacts || !both;
+            /* out of the plane of incidence, in every case: |dv_y| as |dv_x|, R |dw_x|
+             * and R |dw_z| as R |dw_y| (doc/kernel.md: measured like the in-plane ones) */
+            const int out_ok = !hq || (q[3] <= a->tol_v && q[4] <= a->tol_w && q[5] <= a->tol_w);
             int good;
             if (c == SWL_HERTZ) {
                 good = r->o.bounce == r->l.bounce && same_c_b &&
@@ -522,19 +550,22 @@ int swl_compare_run(const swl_opts *a, FILE *report, char *err, size_t errlen)
                     good = vz <= a->tol_vz_jkr * V;
                 }
             }
+            good = good && out_ok;
             ok += good;
             if (!good)
                 bad[nbad++] = i;
         }
-        char h0[64] = "-", h1[64] = "-", en[32] = "-";
+        char h0[64] = "-", h1[64] = "-", h2[64] = "-", h3[64] = "-", en[32] = "-";
         if (any_hal) {
             snprintf(h0, sizeof h0, "%.2g, %.2g", hal[0][0], hal[0][1]);
             snprintf(h1, sizeof h1, "%.2g, %.2g", hal[1][0], hal[1][1]);
+            snprintf(h2, sizeof h2, "%.2g, %.2g", hal[0][2], hal[0][3]);
+            snprintf(h3, sizeof h3, "%.2g, %.2g", hal[1][2], hal[1][3]);
         }
         if (nens) snprintf(en, sizeof en, "%.2g", ens);
-        add(&summ, "| %s | %g | %g | %ld | %ld / %ld | %ld | %ld / %ld of %ld | %.2g | %.2g | %.2g | %s | %s | %s | %ld of %ld |",
+        add(&summ, "| %s | %g | %g | %ld | %ld / %ld | %ld | %ld / %ld of %ld | %.2g | %.2g | %.2g | %s | %s | %s | %.2g | %.2g | %.2g | %s | %s | %ld of %ld |",
             case_name[c], V, th, ng, nbo, nbl, same_o, same_c, same_cb, nb, mx[0], mx[1], mx[2], h0,
-            h1, en, ok, ng);
+            h1, en, mx[3], mx[4], mx[5], h2, h3, ok, ng);
     }
     free(done_g);
 
@@ -549,8 +580,8 @@ int swl_compare_run(const swl_opts *a, FILE *report, char *err, size_t errlen)
                 "square lattice (asperity r = %g m, spacing %g m), %d impact points (a %d x %d grid over\n"
                 "the unit cell) x angles %s deg x speeds |v| (hertz %s, jkr %s m/s); constant COR %g\n"
                 "(dashpot on both branches, LAMMPS tsuji calibrated to it).\n"
-                "Tolerances (bounces in both codes): |dv_x|, |dv_z| <= %g V, R |dw_y| <= %g V and the same\n"
-                "number of contacts; hertz: the same outcome; jkr-elastic: |E_L - E_s - n dU| <= %g E_in\n"
+                "Tolerances (bounces in both codes): |dv_x|, |dv_y|, |dv_z| <= %g V, R |dw_x|, R |dw_y|, R |dw_z|\n"
+                "<= %g V and the same number of contacts; hertz: the same outcome; jkr-elastic: |E_L - E_s - n dU| <= %g E_in\n"
                 "instead of dv_z (dU: the separation energy a LAMMPS contact does not lose), a kernel stick\n"
                 "against a LAMMPS bounce allowed when its v_z^2/2 - n dU <= %g E_in; jkr: |dv_z| <= %g V, the\n"
                 "outcome may differ when the bouncing code leaves with v_z <= %g V.\n\n",
@@ -577,9 +608,11 @@ int swl_compare_run(const swl_opts *a, FILE *report, char *err, size_t errlen)
     fwrite(sbuf, 1, slen, report);
     for (size_t b = 0; b < nbad; b++) {
         const row *r = &R.r[bad[b]];
-        fprintf(report, "outside: %s V %g angle %g x %.3g y %.3g: outcome %d/%d contacts %ld/%ld v_x %.4g/%.4g v_z %.4g/%.4g w_y %.4g/%.4g\n",
+        fprintf(report, "outside: %s V %g angle %g x %.3g y %.3g: outcome %d/%d contacts %ld/%ld v_x %.4g/%.4g v_z %.4g/%.4g w_y %.4g/%.4g"
+                " v_y %.4g/%.4g w_x %.4g/%.4g w_z %.4g/%.4g\n",
                 case_name[r->cas], r->V, r->th, r->x, r->y, r->o.bounce, r->l.bounce, r->o.contacts,
-                r->l.contacts, r->o.v[0], r->l.v[0], r->o.v[2], r->l.v[2], r->o.wy, r->l.w[1]);
+                r->l.contacts, r->o.v[0], r->l.v[0], r->o.v[2], r->l.v[2], r->o.wy, r->l.w[1],
+                r->o.v[1], r->l.v[1], r->o.w[0], r->l.w[0], r->o.w[2], r->l.w[2]);
     }
     free(bad);
     rc = nbad ? 3 : 0;
