@@ -2,7 +2,6 @@
  * of every case in both codes (and at half the step in both), the tolerances
  * and the tables (summary.md, impacts.csv; doc/kernel.md, "Cross-check against
  * LAMMPS"). */
-#define _GNU_SOURCE 1 /* open_memstream is POSIX 2008; nothing else of GNU is used */
 #include "swl_lammps.h"
 
 #include <errno.h>
