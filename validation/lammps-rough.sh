@@ -44,7 +44,7 @@
 #                          impacts.csv (every impact in both codes), times.txt
 #     --quick              the test subset: --grid 2 --angles 0,30,60 --speeds-hertz 0.5,2
 #                          --speeds-jkr 1 --cases hertz,jkr-elastic, no single-contact
-#                          sticking velocities (about 10 s)
+#                          sticking velocities (about 5 s)
 #     --grid K             K x K impact points over the lattice's unit cell,
 #                          x, y = 0, s/K, ..., (K-1)s/K (default 5: 25 points; 1..20)
 #     --angles LIST        impact angles from the normal [deg] (default 0,30,60; each
