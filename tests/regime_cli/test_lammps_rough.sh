@@ -6,7 +6,36 @@
 # Skipped (77) when LAMMPS is not installed (etc/setup.sh --lammps).
 . "$(dirname "$0")/common.sh"
 LR=$SW_TOP/validation/lammps-rough.sh
-export SNOWREGIME=$SR
+export SNOWLAMMPS=$SW_BUILD/validation/snowlammps
+[ -x "$SNOWLAMMPS" ] || { echo "SKIP: $SNOWLAMMPS not built"; exit 77; }
+# snowlammps itself (no LAMMPS needed): the help's sections, strict options (exit 2,
+# the option and the value named), nothing made on bad input
+SL=$SNOWLAMMPS
+h=$("$SL" --help) || fail "snowlammps --help: exit $?"
+for sec in NAME SYNOPSIS DESCRIPTION OPTIONS OUTPUT EXIT.STATUS EXAMPLES; do
+    echo "$h" | grep -q "^$sec" || fail "snowlammps --help: no section $sec"
+done
+slerr() {   # slerr WORD ARGS...: exit 2 and WORD in the message
+    local w=$1; shift
+    "$SL" "$@" >/dev/null 2>"$WORK/sle"; local rc=$?
+    [ $rc -eq 2 ] && grep -q -- "$w" "$WORK/sle" || fail "snowlammps $*: exit $rc, $(cat "$WORK/sle")"
+}
+slerr "--out" --grid 2
+slerr "--frob" --out "$WORK/y" --frob
+slerr "2x" --out "$WORK/y" --grid 2x
+slerr "21" --out "$WORK/y" --grid 21
+slerr "nan" --out "$WORK/y" --d nan
+slerr "1e-3" --out "$WORK/y" --d 1e-3
+slerr "--angles" --out "$WORK/y" --angles 0,,30
+slerr "85" --out "$WORK/y" --angles 0,85
+slerr "0" --out "$WORK/y" --speeds-jkr 0.3,0
+slerr "soft" --out "$WORK/y" --cases hertz,soft
+slerr "--tol-v" --out "$WORK/y" --tol-v -1
+slerr "--cor" --out "$WORK/y" --cor
+[ ! -e "$WORK/y" ] || fail "snowlammps made its output folder on bad input"
+"$SL" --out "$WORK/y" --lmp /nonexistent/lmp --grid 1 --angles 0 --cases hertz >/dev/null 2>"$WORK/sle"
+[ $? -eq 1 ] && grep -q "nonexistent" "$WORK/sle" || fail "snowlammps with a missing lmp: not exit 1 naming it"
+[ ! -e "$WORK/y/.work" ] || fail "snowlammps left its work folder"
 command -v "${LMP:-lmp}" >/dev/null 2>&1 || { echo "SKIP: LAMMPS (lmp) not installed: etc/setup.sh --lammps"; exit 77; }
 "$LR" --help | grep -q "jkr-elastic" || fail "--help does not describe the cases"
 "$LR" --out "$WORK/q" --quick --check >"$WORK/q.log" 2>&1 || { cat "$WORK/q.log"; fail "lammps-rough.sh --quick --check exit $?"; }
