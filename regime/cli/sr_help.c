@@ -47,7 +47,7 @@ static const char *help_main =
 "        lateral offset / spacing, <= 0.5),\n"
 "        asperity_dz 0 (random sinking depth [m], below asperity_r; 2 asperity_r\n"
 "        for spheres), wall_seed 1\n"
-"        (integer), rough_hold 10 (contact times in contact after which a held\n"
+"        (integer), rough_hold 30 (contact times in contact after which a held\n"
 "        sphere counts as stuck), rough_step adaptive|fixed (adaptive: the step\n"
 "        follows the contacts held; fixed: the step before issue 24, to compare).\n"
 "        These keys are refused on a flat wall.\n"

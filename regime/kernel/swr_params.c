@@ -102,7 +102,7 @@ void swr_params_default(swr_params *p)
     p->asperity_dz = 0.0;
     p->dashpot_given = 0;
     p->wall_seed = 1.0;
-    p->rough_hold = 10.0;
+    p->rough_hold = 30.0;
     p->rough_step = SWR_ROUGH_STEP_ADAPTIVE;
     p->asperity_shape = SWR_ASPERITY_HEMISPHERE;
     p->asperity_yield = SWR_YIELD_CONTACT;

@@ -92,7 +92,7 @@ typedef struct {
     double wall_seed;    /* `wall_seed` seed of the random offsets (integer) 1    */
     double rough_hold;   /* `rough_hold` contact times t_c (flat wall, impact speed) a
                             sphere may spend in contact before, still held, it counts
-                            as stuck (swr_rough.c)                     10       */
+                            as stuck (swr_rough.c)                     30       */
     swr_rough_step rough_step; /* `rough_step` adaptive | fixed: the step follows the
                             contacts held (adaptive) or is the reference contact's
                             step over sqrt(contacts) (fixed, the integrator before

@@ -360,53 +360,61 @@ static void rough_params(void **state)
 }
 
 /* The adaptive step (issue 24) against the fixed one it replaced (rough_step
- * fixed, rough_hold 30): over a grid of diameters and speeds around the
- * interface, at the same impact points, the stick counts differ by at most 2
- * of 32 in any cell (the binomial sigma at p = 0.5 is 2.8 points) and in at
- * most 1 % of all impacts; the steps are at least 3 times fewer. rough_hold
- * 10 against 30: the same outcomes (no held impact leaves after 10 contact
- * times). */
+ * fixed): over a grid of diameters and speeds around the interface of the
+ * default lattice, at the same impact points, the stick counts differ by at
+ * most 2 of 32 in any cell (the binomial sigma at p = 0.5 is 2.8 points) and in
+ * at most 1 % of all impacts, and the steps are at least 3 times fewer; on a
+ * sparse lattice (spacing 8 um), where 10 um spheres roll on the base plane
+ * for tens of contact times before they stick or leave, the counts differ by
+ * at most 2 of 32 too (the held phase's longer step, SWR_ROUGH_HELD). */
 static void adaptive_step_vs_fixed(void **state)
 {
     (void)state;
     const char *ka[] = { "wall=lattice", NULL };
-    const char *kf[] = { "wall=lattice", "rough_step=fixed", "rough_hold=30", NULL };
-    const char *kh[] = { "wall=lattice", "rough_hold=30", NULL };
-    swr_model *ma = test_model(ka), *mf = test_model(kf), *mh = test_model(kh);
+    const char *kf[] = { "wall=lattice", "rough_step=fixed", NULL };
+    swr_model *ma = test_model(ka), *mf = test_model(kf);
     swt_vcrit_opts o;
     swt_vcrit_opts_default(&o);
     o.points = 32;
-    long flips = 0, n = 0, steps_a = 0, steps_f = 0, hold_flips = 0;
+    long flips = 0, n = 0, steps_a = 0, steps_f = 0;
     int worst = 0;
     for (int i = 0; i < 5; i++) {
         const double d = 10e-6 + 22.5e-6 * i;
         for (int j = 0; j < 6; j++) {
             const double vn = 0.1 * pow(50.0, j / 5.0);
-            swt_fraction fa, ff, fh;
+            swt_fraction fa, ff;
             char msg[200] = "";
             assert_int_equal(swt_stick_fraction(ma, d, vn, &o, &fa, NULL, msg, sizeof msg), 0);
             assert_int_equal(swt_stick_fraction(mf, d, vn, &o, &ff, NULL, msg, sizeof msg), 0);
-            assert_int_equal(swt_stick_fraction(mh, d, vn, &o, &fh, NULL, msg, sizeof msg), 0);
             const int dc = abs(fa.sticks - ff.sticks);
             if (dc > worst)
                 worst = dc;
             flips += dc;
-            hold_flips += abs(fa.sticks - fh.sticks);
             n += o.points;
             steps_a += fa.steps;
             steps_f += ff.steps;
         }
     }
+    const char *sa[] = { "wall=lattice", "asperity_spacing=8e-6", NULL };
+    const char *sf[] = { "wall=lattice", "asperity_spacing=8e-6", "rough_step=fixed", NULL };
+    swr_model *msa = test_model(sa), *msf = test_model(sf);
+    swt_fraction fa, ff;
+    char msg[200] = "";
+    assert_int_equal(swt_stick_fraction(msa, 10e-6, 9.5, &o, &fa, NULL, msg, sizeof msg), 0);
+    assert_int_equal(swt_stick_fraction(msf, 10e-6, 9.5, &o, &ff, NULL, msg, sizeof msg), 0);
     printf("  %ld impacts: stick count differs by %ld in all (worst cell %d of 32); "
-           "steps %ld adaptive, %ld fixed (x%.1f); rough_hold 10 vs 30: %ld\n",
-           n, flips, worst, steps_a, steps_f, (double)steps_f / steps_a, hold_flips);
+           "steps %ld adaptive, %ld fixed (x%.1f); sparse lattice, 10 um at 9.5 m/s: %d and %d "
+           "of 32 stick, %ld and %ld steps\n", n, flips, worst, steps_a, steps_f,
+           (double)steps_f / steps_a, fa.sticks, ff.sticks, fa.steps, ff.steps);
     assert_true(worst <= 2);
     assert_true(flips * 100 <= n);
     assert_true(steps_f >= 3 * steps_a);
-    assert_int_equal(hold_flips, 0);
+    assert_true(abs(fa.sticks - ff.sticks) <= 2);
+    assert_true(fa.sticks > 0 && fa.sticks < 32);
     swr_model_free(ma);
     swr_model_free(mf);
-    swr_model_free(mh);
+    swr_model_free(msa);
+    swr_model_free(msf);
 }
 
 int main(void)

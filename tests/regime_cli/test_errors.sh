@@ -145,7 +145,7 @@ grep -q "garbage.cfg:1" "$WORK/err" || fail "garbage config: message does not na
 LC_ALL=C grep -q '[^[:print:]]' "$WORK/err" && fail "garbage config: raw bytes on stderr"
 # an interrupted map leaves nothing (issue 13, item 6): killed while its new folder
 # holds temporaries, the folder (and the parent it created) is removed
-( cd "$WORK" && exec "$SR" map --set wall=lattice --points 4096 --nd 40 --nv 40 --vmin 0.1 --vmax 10 --out int/deep >/dev/null 2>&1 ) &
+( cd "$WORK" && exec "$SR" map --set wall=lattice --points 4096 --nd 40 --nv 40 --vmin 0.1 --vmax 10 --force --out int/deep >/dev/null 2>&1 ) &
 pid=$!
 for _ in $(seq 300); do [ -d "$WORK/int/deep" ] && break; sleep 0.1; done
 [ -d "$WORK/int/deep" ] || fail "interrupt test: the map never created its folder"
