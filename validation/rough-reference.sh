@@ -44,9 +44,9 @@ usage_error() { echo "$me: $1 (see --help)" >&2; exit 2; }
 while [ $# -gt 0 ]; do
     case "$1" in
         -h|--help) awk 'NR == 1 { next } /^#/ { sub(/^# ?/, ""); print; next } { exit }' "$0"; exit 0 ;;
-        --out) [ $# -ge 2 ] && [ -n "$2" ] || usage_error "--out needs a folder"; out=$2; shift ;;
-        --points) [ $# -ge 2 ] && [ -n "$2" ] || usage_error "--points needs a number"; points=$2; shift ;;
-        --threads) [ $# -ge 2 ] && [ -n "$2" ] || usage_error "--threads needs a number"; threads=$2; shift ;;
+        --out) [ -n "${2:-}" ] || usage_error "--out needs a folder"; out=$2; shift ;;
+        --points) [ -n "${2:-}" ] || usage_error "--points needs a number"; points=$2; shift ;;
+        --threads) [ -n "${2:-}" ] || usage_error "--threads needs a number"; threads=$2; shift ;;
         --quick) quick=1 ;;
         *) usage_error "unknown option '$1'" ;;
     esac
@@ -187,7 +187,7 @@ nonmono=$(grep -l -i 'non-monotone' "$tmp"/logs/*.txt 2>/dev/null | sed 's|.*/||
         done
     done
     echo
-    echo "Measured: $(cat "$tmp/times.txt" | tr '\n' ' ')"
+    echo "Measured: $(tr '\n' ' ' <"$tmp/times.txt")"
     [ -z "$nonmono" ] || { echo; echo "Non-monotone stick fraction reported by snowregime vcrit in: $nonmono(logs/)."; }
 } >"$tmp/reference.md"
 rm -f "$tmp"/logs/*.err

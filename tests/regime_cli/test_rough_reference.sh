@@ -20,7 +20,7 @@ for k in 1 2 3; do [ ! -e "$WORK/x$k" ] || fail "a usage error left $WORK/x$k"; 
 SNOWREGIME=$SR "$RR" --help | grep -q "^Usage: validation/rough-reference.sh --out DIR" || fail "--help: no usage line"
 SNOWREGIME=$SR "$RR" --out "$WORK/rr" --quick >"$WORK/rr.log" 2>&1 || { cat "$WORK/rr.log"; fail "rough-reference.sh --quick exit $?"; finish; }
 for f in reference.md reference.csv times.txt logs/flat.txt; do [ -s "$WORK/rr/$f" ] || fail "no $f"; done
-ls -a "$WORK" | grep -q '^\.rough-reference\.' && fail "the temporary folder was left behind"
+for t in "$WORK"/.rough-reference.*; do [ ! -e "$t" ] || fail "the temporary folder $t was left behind"; done
 # structure: 1 flat row + 3 walls x 3 yields x 3 levels, 4 diameters each, numbers
 md=$WORK/rr/reference.md
 grep -q '^| wall | asperity_yield | p | 10 um | 20 um | 50 um | 100 um |$' "$md" || fail "reference.md: no v_crit header"
