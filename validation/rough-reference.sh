@@ -25,12 +25,13 @@
 #   times.txt      the run time and the load average before and after
 #   logs/          every snowregime vcrit output (its # comments: brackets,
 #                  non-monotone warnings)
-# --points N: impact points per speed (default 64); --threads N: threads of
+# --points N: impact points per speed (default 256); --threads N: threads of
 # snowregime vcrit, over the diameters (default 2); --quick: 8 points, speeds
 # to 5 %, no sensitivity table (the test, tests/regime_cli/test_rough_reference.sh).
 # Speeds are searched in [1e-4, 100] m/s to 1 % (the stick fraction of N points
-# is a step function of v: finer is noise). Measured: about 1 min on 2 cores
-# (doc/kernel.md). The snowregime used is bin/snowregime, or $SNOWREGIME if set.
+# is a step function of v: finer is noise). Measured: 1.5 min on 2 cores shared
+# with other work (doc/kernel.md); --quick 3 s (20 s in the sanitizer build).
+# The snowregime used is bin/snowregime, or $SNOWREGIME if set.
 # Exit status: 0 done, 1 a run failed, 2 usage error.
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
@@ -38,7 +39,7 @@ sr=${SNOWREGIME:-$top/bin/snowregime}
 me=rough-reference.sh
 out=
 quick=0
-points=64
+points=256
 threads=2
 usage_error() { echo "$me: $1 (see --help)" >&2; exit 2; }
 while [ $# -gt 0 ]; do
