@@ -29,7 +29,7 @@
 # snowregime vcrit, over the diameters (default 2); --quick: 8 points, speeds
 # to 5 %, no sensitivity table (the test, tests/regime_cli/test_rough_reference.sh).
 # Speeds are searched in [1e-4, 100] m/s to 1 % (the stick fraction of N points
-# is a step function of v: finer is noise). Measured: 1.5 min on 2 cores shared
+# is a step function of v: finer is noise). Measured: 1 min on 2 cores shared
 # with other work (doc/kernel.md); --quick 3 s (20 s in the sanitizer build).
 # The snowregime used is bin/snowregime, or $SNOWREGIME if set.
 # Exit status: 0 done, 1 a run failed, 2 usage error.
