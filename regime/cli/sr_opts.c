@@ -249,10 +249,10 @@ int sr_estimate(const char *cmd, const swr_model *m, const swt_grid *g, const sw
     char what[64], b[48];
     snprintf(what, sizeof what, "snowregime %s", cmd);
     if (est > SR_LONG_RUN_S && !force) {
-        snprintf(err, errlen, "about %s for %.3g impacts on %d threads (estimated from a pilot "
+        snprintf(err, errlen, "about %s for %.3g impacts on %d thread%s (estimated from a pilot "
                  "of a few impacts): more than %.0f min; give --force to run it, or fewer "
                  "--points, a smaller grid or more --threads", swt_duration_text(est, b, sizeof b),
-                 work, threads, SR_LONG_RUN_S / 60.0);
+                 work, threads, threads == 1 ? "" : "s", SR_LONG_RUN_S / 60.0);
         return -1;
     }
     *pg = swt_progress_alloc(what, "impacts", work, est, threads, mode);
