@@ -151,6 +151,7 @@ static void map_row(void *p, int i)
         c->steps[i] += r.steps;
         if (st == SWR_STEP_BOUND) c->step_bound[i]++;
     }
+    swt_progress_add(mp->progress, nv);   /* a flat row: one impact a cell */
 }
 
 int swt_map_run(swt_map *mp, const swr_model *m, const swt_vcrit_opts *o, int threads,
