@@ -21,10 +21,10 @@
  * measured on 7 680 impacts and on a sparse lattice, the same outcomes as
  * without (doc/kernel.md). */
 #ifndef SWR_ROUGH_SETTLE
-#define SWR_ROUGH_SETTLE 5.0
+#define SWR_ROUGH_SETTLE 4.0
 #endif
 #ifndef SWR_ROUGH_HELD
-#define SWR_ROUGH_HELD 4.0
+#define SWR_ROUGH_HELD 6.0
 #endif
 
 struct swr_model {

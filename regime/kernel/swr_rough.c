@@ -502,10 +502,12 @@ static double held_w2(const rc_state *s, double travel)
  *    more contact, hd / sqrt(n + 1), unless the gap itself allows more: on a
  *    dense lattice of small asperities a fast sphere meets hundreds at once;
  *  - is at most SWR_ROUGH_STRETCH times the base;
- *  - once the sphere has been in contact SWR_ROUGH_SETTLE contact times (held:
- *    the impact is over, it rattles or rolls among the asperities until it
- *    sticks by energy, leaves, or reaches rough_hold), resolves it
- *    SWR_ROUGH_HELD times more coarsely (omega h <= 0.27 at accuracy 60, well
+ *  - once the sphere has been in contact SWR_ROUGH_SETTLE contact times and no
+ *    contact is stretched into tension (held: the impact is over, it rattles
+ *    or rolls among the asperities until it sticks by energy, leaves, or
+ *    reaches rough_hold; a neck in tension is a separation under way, slow
+ *    near the sticking speed, kept at full resolution), resolves it
+ *    SWR_ROUGH_HELD times more coarsely (omega h <= 0.4 at accuracy 60, well
  *    inside Verlet's stability limit of 2).
  * An asperity's contact is softer than the reference one (R* ~ r), and after
  * a plastic loading, in the elastic unloading and in the slow stretching of
@@ -513,7 +515,10 @@ static double held_w2(const rc_state *s, double travel)
 static double step_size(const rc_state *s, double hd, double he, double v0, const double v[3],
                         double t_in)
 {
-    if (t_in > SWR_ROUGH_SETTLE) {
+    int necked = 0; /* a contact stretched into tension: a separation under way */
+    for (int k = 0; k < s->nc && !necked; k++)
+        necked = s->c[k].delta < 0.0;
+    if (t_in > SWR_ROUGH_SETTLE && !necked) {
         /* held: past the impact, rattling or rolling among the asperities */
         hd *= SWR_ROUGH_HELD;
         he *= SWR_ROUGH_HELD;
