@@ -175,6 +175,55 @@ static void print_keys(const swr_params *p, const num_key *t, size_t n, const ch
         fprintf(stream, "%s%s %.17g\n", pre, t[i].key, value_of(p, &t[i]));
 }
 
+/* The keys that take one of a few names: the names in the order of the
+ * enum's values (the first is the default), and how each sets its field. */
+static const char *const wall_names[] = { "flat", "lattice" };
+static const char *const lattice_names[] = { "square", "hex" };
+static const char *const yield_names[] = { "contact", "particle", "elastic" };
+static const char *const shape_names[] = { "hemisphere", "sphere" };
+static const char *const step_names[] = { "adaptive", "fixed" };
+static const char *const pair_names[] = { "wall", "particle" };
+static const char *const dashpot_names[] = { "loading", "both" };
+static const char *const adhesion_names[] = { "jkr", "none" };
+static void set_wall(swr_params *p, int v) { p->wall = (swr_wall_kind)v; }
+static void set_lattice(swr_params *p, int v) { p->lattice = (swr_lattice)v; }
+static void set_yield(swr_params *p, int v) { p->asperity_yield = (swr_asperity_yield)v; }
+static void set_shape(swr_params *p, int v) { p->asperity_shape = (swr_asperity_shape)v; }
+static void set_step(swr_params *p, int v) { p->rough_step = (swr_rough_step)v; }
+static void set_pair(swr_params *p, int v) { p->cor_pair = (swr_pair)v; }
+static void set_dashpot(swr_params *p, int v)
+{
+    p->dashpot = (swr_dashpot)v;
+    p->dashpot_given = 1;
+}
+static void set_adhesion(swr_params *p, int v) { p->adhesion = (swr_adhesion)v; }
+typedef struct {
+    const char *key;
+    const char *const *names;
+    int n;
+    void (*set)(swr_params *p, int v);
+} enum_key;
+#define EK(K, NAMES, SET) { K, NAMES, (int)(sizeof NAMES / sizeof NAMES[0]), SET }
+static const enum_key enum_keys[] = {
+    EK("wall", wall_names, set_wall),
+    EK("asperity_yield", yield_names, set_yield),
+    EK("asperity_shape", shape_names, set_shape),
+    EK("rough_step", step_names, set_step),
+    EK("lattice", lattice_names, set_lattice),
+    EK("cor_pair", pair_names, set_pair),
+    EK("dashpot", dashpot_names, set_dashpot),
+    EK("adhesion", adhesion_names, set_adhesion),
+};
+#undef EK
+#define N_ENUM (sizeof enum_keys / sizeof enum_keys[0])
+
+/* The name of an enum value (an invalid one prints as the default). */
+static const char *name_of(const char *const *names, int n, int v)
+{
+    return v >= 0 && v < n ? names[v] : names[0];
+}
+#define NAME_OF(NAMES, V) name_of(NAMES, (int)(sizeof NAMES / sizeof NAMES[0]), (int)(V))
+
 int swr_params_set(swr_params *p, const char *key, const char *value, char *err, size_t errlen)
 {
     if (!key || !value)
@@ -192,53 +241,24 @@ int swr_params_set(swr_params *p, const char *key, const char *value, char *err,
         *field(p, k) = v;
         return 0;
     }
-    if (strcmp(key, "wall") == 0) {
-        if (strcmp(value, "flat") == 0)
-            p->wall = SWR_WALL_KIND_FLAT;
-        else if (strcmp(value, "lattice") == 0)
-            p->wall = SWR_WALL_KIND_LATTICE;
-        else
-            return fail(err, errlen, "wall: '%s' is neither flat nor lattice", value);
-        return 0;
-    }
-    if (strcmp(key, "asperity_yield") == 0) {
-        if (strcmp(value, "contact") == 0)
-            p->asperity_yield = SWR_YIELD_CONTACT;
-        else if (strcmp(value, "particle") == 0)
-            p->asperity_yield = SWR_YIELD_PARTICLE;
-        else if (strcmp(value, "elastic") == 0)
-            p->asperity_yield = SWR_YIELD_ELASTIC;
-        else
-            return fail(err, errlen, "asperity_yield: '%s' is neither contact, particle nor elastic",
-                        value);
-        return 0;
-    }
-    if (strcmp(key, "asperity_shape") == 0) {
-        if (strcmp(value, "hemisphere") == 0)
-            p->asperity_shape = SWR_ASPERITY_HEMISPHERE;
-        else if (strcmp(value, "sphere") == 0)
-            p->asperity_shape = SWR_ASPERITY_SPHERE;
-        else
-            return fail(err, errlen, "asperity_shape: '%s' is neither hemisphere nor sphere", value);
-        return 0;
-    }
-    if (strcmp(key, "rough_step") == 0) {
-        if (strcmp(value, "adaptive") == 0)
-            p->rough_step = SWR_ROUGH_STEP_ADAPTIVE;
-        else if (strcmp(value, "fixed") == 0)
-            p->rough_step = SWR_ROUGH_STEP_FIXED;
-        else
-            return fail(err, errlen, "rough_step: '%s' is neither adaptive nor fixed", value);
-        return 0;
-    }
-    if (strcmp(key, "lattice") == 0) {
-        if (strcmp(value, "square") == 0)
-            p->lattice = SWR_LATTICE_SQUARE;
-        else if (strcmp(value, "hex") == 0)
-            p->lattice = SWR_LATTICE_HEX;
-        else
-            return fail(err, errlen, "lattice: '%s' is neither square nor hex", value);
-        return 0;
+    /* the keys that take one of a few names */
+    for (size_t i = 0; i < N_ENUM; i++) {
+        const enum_key *k = &enum_keys[i];
+        if (strcmp(key, k->key) != 0)
+            continue;
+        for (int v = 0; v < k->n; v++)
+            if (strcmp(value, k->names[v]) == 0) {
+                k->set(p, v);
+                return 0;
+            }
+        /* "KEY: 'VALUE' is neither A, B nor C" */
+        char list[160] = "";
+        for (int v = 0; v < k->n; v++) {
+            const size_t len = strlen(list);
+            snprintf(list + len, sizeof list - len, "%s%s", v == 0 ? "" : v == k->n - 1 ? " nor " : ", ",
+                     k->names[v]);
+        }
+        return fail(err, errlen, "%s: '%s' is neither %s", key, value, list);
     }
     if (strcmp(key, "cor") == 0) {
         if (strcmp(value, "elastic") == 0) {
@@ -262,34 +282,6 @@ int swr_params_set(swr_params *p, const char *key, const char *value, char *err,
             p->cor = SWR_COR_CONSTANT;
             p->cor_value = v;
         }
-        return 0;
-    }
-    if (strcmp(key, "cor_pair") == 0) {
-        if (strcmp(value, "wall") == 0)
-            p->cor_pair = SWR_PAIR_WALL;
-        else if (strcmp(value, "particle") == 0)
-            p->cor_pair = SWR_PAIR_PARTICLE;
-        else
-            return fail(err, errlen, "cor_pair: '%s' is neither wall nor particle", value);
-        return 0;
-    }
-    if (strcmp(key, "dashpot") == 0) {
-        if (strcmp(value, "loading") == 0)
-            p->dashpot = SWR_DASHPOT_LOADING;
-        else if (strcmp(value, "both") == 0)
-            p->dashpot = SWR_DASHPOT_BOTH;
-        else
-            return fail(err, errlen, "dashpot: '%s' is neither loading nor both", value);
-        p->dashpot_given = 1;
-        return 0;
-    }
-    if (strcmp(key, "adhesion") == 0) {
-        if (strcmp(value, "jkr") == 0)
-            p->adhesion = SWR_ADHESION_JKR;
-        else if (strcmp(value, "none") == 0)
-            p->adhesion = SWR_ADHESION_NONE;
-        else
-            return fail(err, errlen, "adhesion: '%s' is neither jkr nor none", value);
         return 0;
     }
     return fail(err, errlen, "unknown key '%s' (value '%s')", key, value);
@@ -458,7 +450,7 @@ void swr_params_print(const swr_params *p, const char *prefix, FILE *stream)
 {
     const char *pre = prefix ? prefix : "";
     print_keys(p, num_keys, N_NUM, pre, stream);
-    fprintf(stream, "%sadhesion %s\n", pre, p->adhesion == SWR_ADHESION_NONE ? "none" : "jkr");
+    fprintf(stream, "%sadhesion %s\n", pre, NAME_OF(adhesion_names, p->adhesion));
     switch (p->cor) {
     case SWR_COR_ELASTIC: fprintf(stream, "%scor elastic\n", pre); break;
     case SWR_COR_CONSTANT: fprintf(stream, "%scor %.17g\n", pre, p->cor_value); break;
@@ -466,20 +458,15 @@ void swr_params_print(const swr_params *p, const char *prefix, FILE *stream)
     case SWR_COR_THORNTON_ASYMPTOTE: fprintf(stream, "%scor thornton-asymptote\n", pre); break;
     case SWR_COR_THORNTON_NING: fprintf(stream, "%scor thornton-ning\n", pre); break;
     }
-    fprintf(stream, "%scor_pair %s\n", pre, p->cor_pair == SWR_PAIR_PARTICLE ? "particle" : "wall");
+    fprintf(stream, "%scor_pair %s\n", pre, NAME_OF(pair_names, p->cor_pair));
     /* only where the law has a dashpot: printed settings load back unchanged */
     if (p->cor != SWR_COR_ELASTIC && p->cor != SWR_COR_THORNTON_NING)
-        fprintf(stream, "%sdashpot %s\n", pre, p->dashpot == SWR_DASHPOT_BOTH ? "both" : "loading");
+        fprintf(stream, "%sdashpot %s\n", pre, NAME_OF(dashpot_names, p->dashpot));
     if (p->wall == SWR_WALL_KIND_LATTICE) {
-        fprintf(stream, "%swall lattice\n%slattice %s\n", pre, pre,
-                p->lattice == SWR_LATTICE_HEX ? "hex" : "square");
+        fprintf(stream, "%swall lattice\n%slattice %s\n", pre, pre, NAME_OF(lattice_names, p->lattice));
         print_keys(p, wall_keys, N_WALL, pre, stream);
-        fprintf(stream, "%sasperity_yield %s\n", pre,
-                p->asperity_yield == SWR_YIELD_PARTICLE ? "particle"
-                : p->asperity_yield == SWR_YIELD_ELASTIC ? "elastic" : "contact");
-        fprintf(stream, "%sasperity_shape %s\n", pre,
-                p->asperity_shape == SWR_ASPERITY_SPHERE ? "sphere" : "hemisphere");
-        fprintf(stream, "%srough_step %s\n", pre,
-                p->rough_step == SWR_ROUGH_STEP_FIXED ? "fixed" : "adaptive");
+        fprintf(stream, "%sasperity_yield %s\n", pre, NAME_OF(yield_names, p->asperity_yield));
+        fprintf(stream, "%sasperity_shape %s\n", pre, NAME_OF(shape_names, p->asperity_shape));
+        fprintf(stream, "%srough_step %s\n", pre, NAME_OF(step_names, p->rough_step));
     }
 }
