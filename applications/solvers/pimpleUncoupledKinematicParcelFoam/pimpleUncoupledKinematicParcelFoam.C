@@ -28,13 +28,19 @@ Description
     converged steady flow, say) are held, and the time loop only evolves
     the clouds, as icoUncoupledKinematicParcelFoam does for one cloud.
 
+    With -replay the flow is solved until a library of snapshots is
+    complete (controlDict sub-dictionary replay: start, period, interval,
+    fields), then played back periodically while the clouds go on moving
+    (flowReplay.H): the clouds can be carried for longer than the flow is
+    solved, at the cost of the particles alone.
+
     Required: the pimpleFoam fields (U, p, turbulence fields),
     transportProperties with nu and rhoInf (the carrier density seen by the
     cloud), constant/g and <cloud>Properties.
 
 Usage
     pimpleUncoupledKinematicParcelFoam [-cloud NAME | -clouds '(NAME ...)']
-                                       [-frozen] [-parallel] [-help]
+                                       [-frozen | -replay] [-parallel] [-help]
 
     -cloud NAME         the cloud (default kinematicCloud)
     -clouds '(A B ..)'  several clouds, evolved one after the other in every
@@ -48,6 +54,8 @@ Usage
 #include "pimpleControl.H"
 #include "fvOptions.H"
 #include "basicKinematicCloud.H"
+#include "flowReplay.H"
+#include <chrono>
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -77,6 +85,12 @@ int main(int argc, char *argv[])
         "frozen",
         "hold the flow of the start time: evolve the clouds only"
     );
+    argList::addBoolOption
+    (
+        "replay",
+        "solve the flow until the snapshot library of the controlDict's"
+        " 'replay' dictionary is complete, then play it back periodically"
+    );
 
     #include "postProcess.H"
 
@@ -96,6 +110,24 @@ int main(int argc, char *argv[])
     turbulence->validate();
 
     const bool frozen = args.found("frozen");
+    if (frozen && args.found("replay"))
+    {
+        FatalErrorInFunction
+            << "-frozen and -replay exclude each other" << exit(FatalError);
+    }
+    autoPtr<flowReplay> replay;
+    if (args.found("replay"))
+    {
+        replay.reset
+        (
+            new flowReplay
+            (
+                mesh,
+                runTime.controlDict().subDict("replay"),
+                runTime.startTime().value()
+            )
+        );
+    }
     if (frozen)
     {
         Info<< "Frozen flow: the fields of time " << runTime.timeName()
@@ -103,6 +135,28 @@ int main(int argc, char *argv[])
     }
 
     // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+    // wall-clock time of the flow and of every cloud, summed over the steps
+    // (the largest of the processes is printed at each write and at the end:
+    // the cost of each part, e.g. for the error against run time)
+    using wallClock = std::chrono::steady_clock;
+    const auto seconds = [](const wallClock::time_point& t0)
+    {
+        return std::chrono::duration<double>(wallClock::now() - t0).count();
+    };
+    scalar flowTime = 0;
+    scalarList cloudTime(kinematicClouds.size(), Zero);
+    const auto printTimes = [&]()
+    {
+        Info<< "Wall time [s], largest of the processes: flow "
+            << returnReduce(flowTime, maxOp<scalar>());
+        forAll(kinematicClouds, ci)
+        {
+            Info<< ", " << kinematicClouds[ci].name() << ' '
+                << returnReduce(cloudTime[ci], maxOp<scalar>());
+        }
+        Info<< endl;
+    };
 
     Info<< "\nStarting time loop\n" << endl;
 
@@ -116,8 +170,18 @@ int main(int argc, char *argv[])
 
         Info<< "Time = " << runTime.timeName() << nl << endl;
 
+        const auto tFlow = wallClock::now();
+
+        // --- The flow: played back from the library once it is complete
+        const bool replayed =
+            replay.valid() && replay->replaying(runTime.value());
+        if (replayed)
+        {
+            replay->set(runTime.value(), phi);
+        }
+
         // --- The flow: pimpleFoam's pressure-velocity PIMPLE loop
-        while (!frozen && pimple.loop())
+        while (!frozen && !replayed && pimple.loop())
         {
             #include "UEqn.H"
 
@@ -133,20 +197,34 @@ int main(int argc, char *argv[])
             }
         }
 
+        if (replay.valid() && !replayed)
+        {
+            replay->collect(runTime.value(), runTime.deltaTValue());
+        }
+        flowTime += seconds(tFlow);
+
         // --- The particles: the same time step, in the flow just computed
         mu = laminarTransport.nu()*rhoInfValue;
 
-        for (basicKinematicCloud& kinematicCloud : kinematicClouds)
+        forAll(kinematicClouds, ci)
         {
+            basicKinematicCloud& kinematicCloud = kinematicClouds[ci];
             Info<< "Evolving " << kinematicCloud.name() << endl;
 
+            const auto tCloud = wallClock::now();
             kinematicCloud.evolve();
+            cloudTime[ci] += seconds(tCloud);
         }
 
-        runTime.write();
+        if (runTime.write())
+        {
+            printTimes();
+        }
 
         runTime.printExecutionTime(Info);
     }
+
+    printTimes();
 
     Info<< "End\n" << endl;
 
