@@ -6,9 +6,14 @@
 #                        feedback, the rough wall (with the regime gate: its stick
 #                        probability over v_t) and the classic rebound as seven
 #                        clouds in one run (about 70 s)
-#   parallel             Allrun -test (serial) and Allrun -test -parallel 2, gates
-#                        off: both checked, and their impact counts on the nose
-#                        agree within 4 Poisson standard deviations (about 60 s)
+#   parallel             Allrun -test (serial), Allrun -test -parallel 2 and
+#                        Allrun -test -parallel 2 -replay (the flow solved until
+#                        its library is complete, then played back), gates off:
+#                        each checked, and their impact counts on the nose agree
+#                        with the serial run's within 4 Poisson standard
+#                        deviations; the replayed flow repeats with the library's
+#                        period (forces at t and t + period equal) and the flow
+#                        is solved only until the library ends (about 90 s)
 #   steady               Allrun -steady -test: the frozen-RANS route (about 15 s)
 # Checked for every run and gate setting:
 #   * mass conservation over the whole run: deposit field integral (surfaceFieldValue
@@ -30,7 +35,7 @@ set -u
 mode=${WEDGE_MODE:-transient}
 case "$mode" in
     transient) runs=("-test -gate regime -compare -feedback -rough -rebound"); gates="off tangential shear regime feedback rough rebound" ;;
-    parallel)  runs=("-test" "-test -parallel 2"); gates=off ;;
+    parallel)  runs=("-test" "-test -parallel 2" "-test -parallel 2 -replay"); gates=off ;;
     steady)    runs=("-steady -test"); gates=off ;;
     *) echo "unknown WEDGE_MODE '$mode'"; exit 2 ;;
 esac
@@ -151,6 +156,20 @@ run_case() {  # run_case N ARGS: Allrun ARGS in a fresh copy $tmp/wedgeN, then t
             check "decomposed into 2" "grep -q 'Processor 1' '$w/log.decomposePar' && grep -q 'nProcs : 2' '$w/$log'"
             check "reconstructed deposit field" "ls '$w/'0.*/kinematicCloud:snowDeposit >/dev/null 2>&1" ;;
     esac
+    case "$args" in
+        *-replay*)
+            # -test: library 0.05 .. 0.1 s (the end of the spin-up), played back to 0.2 s
+            check "replay: library of 50 snapshots complete, played back from 0.1 s" \
+                "grep -q 'Replay: library complete, 50 snapshots' '$w/$log' && grep -q 'Replay: from 0.1.* s the flow is played back' '$w/$log'"
+            # the flow is not solved after the library: no pressure solution after 0.1 s
+            check "replay: no flow solved after the library" \
+                "awk '/^Time = /{t=\$3} /Solving for p/ && t > 0.1 + 1e-6 {n++} END{exit n > 0}' '$w/$log'"
+            # the forces repeat with the period: Cd at t and t + 0.05 s in the played-back part
+            local fc; fc=$(find "$w/postProcessing/forceCoeffs" -name '*.dat' | head -1)
+            check "replay: the played-back flow repeats with the library's period (Cd at t and t + 0.05 s)" \
+                "awk '!/^#/ {cd[sprintf(\"%.4f\", \$1)] = \$3} END { n = 0; for (t in cd) { u = sprintf(\"%.4f\", t + 0.05); if (t > 0.1005 && (u in cd)) { n++; d = cd[t] - cd[u]; if (d < 0) d = -d; if (d > 1e-6 * (1 + (cd[t] < 0 ? -cd[t] : cd[t]))) bad++ } } exit !(n >= 5 && bad == 0) }' '$fc'"
+            check "replay: wall time of the flow and the cloud in the log" "grep -q '^Allrun .*Wall time \\[s\\].*flow .*kinematicCloud' '$tmp/allrun$n.log'" ;;
+    esac
     awk -F, '$1=="nose"{print $5}' "$r/off/deposit_per_patch.csv" 2>/dev/null > "$tmp/nose$n" || true
     "$w/Allclean"
     (cd "$w" && find . -type f | sed 's|^\./||' | sort > "$tmp/after$n")
@@ -161,9 +180,12 @@ for i in "${!runs[@]}"; do
     run_case "$i" "${runs[$i]}"
 done
 if [ "$mode" = parallel ]; then
-    a=$(cat "$tmp/nose0" 2>/dev/null); b=$(cat "$tmp/nose1" 2>/dev/null)
-    check "serial and parallel nose impacts agree within 4 sigma ($a vs $b)" \
-        "awk -v a='${a:-0}' -v b='${b:-0}' 'BEGIN{d=a-b; if (d<0) d=-d; exit !(a>0 && b>0 && d <= 4*sqrt(a+b))}'"
+    a=$(cat "$tmp/nose0" 2>/dev/null)
+    for i in 1 2; do
+        b=$(cat "$tmp/nose$i" 2>/dev/null)
+        check "serial and '${runs[$i]}' nose impacts agree within 4 sigma ($a vs $b)" \
+            "awk -v a='${a:-0}' -v b='${b:-0}' 'BEGIN{d=a-b; if (d<0) d=-d; exit !(a>0 && b>0 && d <= 4*sqrt(a+b))}'"
+    done
 fi
 
 [ "$fails" = 0 ] || { echo "$fails check(s) failed"; exit 1; }

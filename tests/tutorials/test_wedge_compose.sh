@@ -4,7 +4,7 @@
 # class masses 1:2:1. Checks the composed map (sum_k w_k m_k per face), the
 # composed region masses and their propagated errors (se^2 = sum (w_k M_k)^2 /
 # n_eff_k), the class captures, the log-normal weights (sum to 1, the mass median
-# class), the bad inputs (exit 2, no output), and that a failed run leaves nothing.
+# class, the interpolated mass medians), the bad inputs (exit 2, no output), and that a failed run leaves nothing.
 set -u
 top=${SW_TOP:?SW_TOP not set}
 C="$top/tutorials/wedge/post/wedge-compose"
@@ -54,6 +54,12 @@ check "rear deposit's median class is 10 um" "grep -q 'rear-face deposit 10 um' 
 check "log-normal MVD 20: exit 0" "[ $? -eq 0 ]"
 check "log-normal MVD 20: weights sum to 1" "awk -F'|' '\$2 ~ /^ [0-9]/ { s += \$4 } END { exit !(s > 0.9999 && s < 1.0001) }' '$tmp/out2/classes.md'"
 check "log-normal MVD 20: median class 20 um" "grep -q 'the spray 20 um' '$tmp/out2/classes.md'"
+# interpolated: the spray's own median is 20 x 1.03 = 20.6 um (the truncation at 2 and
+# 150 um moves it by less than 0.05 um); the deposit's lies inside its median class,
+# 14.1 .. 154.5 um, and below the spray's (the finer classes capture more here)
+mm=$(sed -n 's/.*(interpolated.*): the spray \([0-9.]*\) um, the rear-face deposit \([0-9.]*\) um\./\1 \2/p' "$tmp/out2/classes.md")
+check "log-normal MVD 20: interpolated medians, spray 20.6 um, deposit in 14.1 .. 20.6 um ($mm)" \
+    "echo '$mm' | awk '{ exit !(\$1 == 20.6 && \$2 > 14.1 && \$2 < 20.6) }'"
 "$C" --results "$tmp/res" --out "$tmp/out3" --mvd 3 > /dev/null 2>&1
 check "log-normal MVD 3: median class 5 um" "grep -q 'the spray 5 um' '$tmp/out3/classes.md'"
 # bad inputs: exit 2, one line, nothing written
