@@ -1,19 +1,23 @@
 #!/usr/bin/env bash
 # test_wedge_case.sh - tutorials/wedge end to end on its coarsest variant, in a
 # temporary copy. WEDGE_MODE selects the run:
-#   transient (default)  Allrun -test -gate regime -compare -feedback -rough -rebound:
-#                        the DDES route, the four gate settings, the build-up
+#   transient (default)  Allrun -test -gate regime -compare -feedback -rough -rebound
+#                        -wake-source: the DDES route (the flow played back after
+#                        its library), the four gate settings, the build-up
 #                        feedback, the rough wall (with the regime gate: its stick
-#                        probability over v_t) and the classic rebound as seven
-#                        clouds in one run (about 70 s)
-#   parallel             Allrun -test (serial), Allrun -test -parallel 2 and
-#                        Allrun -test -parallel 2 -replay (the flow solved until
-#                        its library is complete, then played back), gates off:
-#                        each checked, and their impact counts on the nose agree
-#                        with the serial run's within 4 Poisson standard
-#                        deviations; the replayed flow repeats with the library's
-#                        period (forces at t and t + period equal) and the flow
-#                        is solved only until the library ends (about 90 s)
+#                        probability over v_t), the classic rebound, the five size
+#                        classes and their wake-source twins as seventeen clouds in
+#                        one run; the classes composed into the decided spray and
+#                        its envelope (about 2 min)
+#   parallel             Allrun -test -coupled -sizes none (serial), the same on 2
+#                        processes, and Allrun -test -parallel 2 -sizes none (the
+#                        flow solved until its library is complete, then played
+#                        back), gates off: each checked, and their impact counts on
+#                        the nose agree with the serial run's within 4 Poisson
+#                        standard deviations (about 90 s)
+# Checked for every run whose flow is played back: the library is complete, the
+# flow is not solved after it, the replayed flow repeats with the library's period
+# (forces at t and t + period equal), the wall times of flow and clouds are logged.
 #   steady               Allrun -steady -test: the frozen-RANS route (about 15 s)
 # Checked for every run and gate setting:
 #   * mass conservation over the whole run: deposit field integral (surfaceFieldValue
@@ -34,8 +38,9 @@
 set -u
 mode=${WEDGE_MODE:-transient}
 case "$mode" in
-    transient) runs=("-test -gate regime -compare -feedback -rough -rebound"); gates="off tangential shear regime feedback rough rebound" ;;
-    parallel)  runs=("-test" "-test -parallel 2" "-test -parallel 2 -replay"); gates=off ;;
+    transient) runs=("-test -gate regime -compare -feedback -rough -rebound -wake-source")
+               gates="off tangential shear regime feedback rough rebound sizes/d5um sizes/d10um sizes/d20um sizes/d40um sizes/d80um wake_source/d5um wake_source/d80um" ;;
+    parallel)  runs=("-test -coupled -sizes none" "-test -parallel 2 -coupled -sizes none" "-test -parallel 2 -sizes none"); gates=off ;;
     steady)    runs=("-steady -test"); gates=off ;;
     *) echo "unknown WEDGE_MODE '$mode'"; exit 2 ;;
 esac
@@ -134,6 +139,18 @@ run_case() {  # run_case N ARGS: Allrun ARGS in a fresh copy $tmp/wedgeN, then t
                     "grep -q 'wallRegimes roughABS: patches .*stick probability table [0-9]* x 11 x [0-9]*' '$w/$log' && grep -q \"tangential gate on: the rough wall's stick probability over v_t 0..25.6\" '$w/$log'" ;;
             esac
             check "rough.md: the 6 patches, flat against rough" "[ \$(grep -c -E '^\| (rear|nose|top|bottom|sideYneg|sideYpos) \|' '$r/rough.md') = 6 ]"
+            # the size classes (issue 21): composed into the decided spray and its envelope
+            local mvd
+            for mvd in 20 8 56; do
+                check "compose/mvd$mvd: classes, regions with errors, map and PNG" \
+                    "[ \$(grep -c -E '^\| (5|10|20|40|80) \|' '$r/compose/mvd$mvd/classes.md') = 5 ] && [ \$(grep -c -E '^\| (left side|right side|centre|edges|whole face) \|' '$r/compose/mvd$mvd/regions.md') = 5 ] && [ -s '$r/compose/mvd$mvd/rear_deposit.csv' ] && [ \"\$(head -c 4 '$r/compose/mvd$mvd/rear_deposit.png' | tail -c 3)\" = PNG ]"
+            done
+            check "compose/mvd20: the spray's interpolated mass median is 20.6 um" "grep -q 'interpolated.*the spray 20.6 um' '$r/compose/mvd20/classes.md'"
+            check "capture.md: the 5 classes" "[ \$(grep -c -E '^\| (5|10|20|40|80) \|' '$r/capture.md') = 5 ]"
+            check "the classes are split, the main cloud is not" \
+                "grep -q 'splittingClasses' '$w/constant/kinematicCloud_d5umProperties' && ! grep -q 'splittingClasses' '$w/constant/kinematicCloudProperties' && [ ! -e '$w/constant/splitting' ]"
+            check "wake_source: capture of the 5 classes, composed" \
+                "[ \$(grep -c -E '^\| (5|10|20|40|80) \|' '$r/wake_source/capture.md') = 5 ] && [ -s '$r/wake_source/compose/mvd20/regions.md' ]"
             check "rebound.md: the 6 patches, kernel against classic, with the counts by reason" "[ \$(grep -c -E '^\| (rear|nose|top|bottom|sideYneg|sideYpos) \|.*[0-9]+ / [0-9]+ / [0-9]+ / [0-9]+ / [0-9]+ \|.*[0-9]+ / [0-9]+ / [0-9]+ / [0-9]+ / [0-9]+ \|' '$r/rebound.md') = 6 ]"
             check "gates_per_patch.md: the counts by reason of the 4 gate settings on the 6 patches" "grep -q 'Which rule decided' '$r/gates_per_patch.md' && [ \$(grep -c -E '^\| (rear|nose|top|bottom|sideYneg|sideYpos) \|( [0-9]+ / [0-9]+ / [0-9]+ / [0-9]+ / [0-9]+ \|){4}\$' '$r/gates_per_patch.md') = 6 ]"
             check "the shear-gate cloud had the wall shear stress" "ls '$w/'0.*/wallShearStress >/dev/null 2>&1"
@@ -157,7 +174,8 @@ run_case() {  # run_case N ARGS: Allrun ARGS in a fresh copy $tmp/wedgeN, then t
             check "reconstructed deposit field" "ls '$w/'0.*/kinematicCloud:snowDeposit >/dev/null 2>&1" ;;
     esac
     case "$args" in
-        *-replay*)
+        *-steady*|*-coupled*) ;;
+        *)
             # -test: library 0.05 .. 0.1 s (the end of the spin-up), played back to 0.2 s
             check "replay: library of 50 snapshots complete, played back from 0.1 s" \
                 "grep -q 'Replay: library complete, 50 snapshots' '$w/$log' && grep -q 'Replay: from 0.1.* s the flow is played back' '$w/$log'"

@@ -39,6 +39,10 @@ refused "got '99999999999999999999'" -parallel 99999999999999999999
 refused "got '-2'" -parallel -2
 refused "got ''" -parallel
 refused "-rebound needs the transient route" -steady -rebound
+refused "-replay needs the transient route" -steady -replay
+refused "-wake-source needs the transient route" -steady -wake-source
+refused "-wake-source releases the size classes in the wake: not with -sizes none" -wake-source -sizes none
+refused "-sizes needs whole diameters in um (1..1000), comma-separated, or none" -sizes nothing
 refused "-oversubscribe needs -parallel N with N > 1" -oversubscribe
 refused "-gate must be off, tangential, shear or regime, got 'on'" -gate on
 refused "-sizes needs whole diameters in um (1..1000)" -sizes 5,,10
