@@ -4,7 +4,8 @@
 # class masses 1:2:1. Checks the composed map (sum_k w_k m_k per face), the
 # composed region masses and their propagated errors (se^2 = sum (w_k M_k)^2 /
 # n_eff_k), the class captures, the log-normal weights (sum to 1, the mass median
-# class, the interpolated mass medians), the bad inputs (exit 2, no output), and that a failed run leaves nothing.
+# class, the interpolated mass medians), the halves of the window composed and
+# compared, the bad inputs (exit 2, no output), and that a failed run leaves nothing.
 set -u
 top=${SW_TOP:?SW_TOP not set}
 C="$top/tutorials/wedge/post/wedge-compose"
@@ -62,6 +63,26 @@ check "log-normal MVD 20: interpolated medians, spray 20.6 um, deposit in 14.1 .
     "echo '$mm' | awk '{ exit !(\$1 == 20.6 && \$2 > 14.1 && \$2 < 20.6) }'"
 "$C" --results "$tmp/res" --out "$tmp/out3" --mvd 3 > /dev/null 2>&1
 check "log-normal MVD 3: median class 5 um" "grep -q 'the spray 5 um' '$tmp/out3/classes.md'"
+check "no halves rows: no halves table" "! grep -q 'halves of the sampling window' '$tmp/out/regions.md'"
+# the halves: each class's statistics with a first and a second half (whole face
+# 0.1 kg, n_eff 100 in every class; weights 1:2:1): composed x2 = 2 (0.25 + 0.5 +
+# 0.25) 0.1 = 0.2 kg, error sqrt(sum (2 w_k 0.1)^2 / 100) = 0.0122 (6.1 %); equal
+# halves agree (difference 0), a second half 3 times the first disagrees by
+# 0.4 / sqrt(0.0122^2 + 0.0367^2) = 10.3 standard errors
+halves() {  # halves DIR M1 M2: whole-face rows of the halves with masses M1, M2, n_eff 100
+    local f
+    for f in "$1"/d*um/rear_statistics.md; do
+        printf '| first half 0.15 .. 0.3 s | 0 | 0 | 0 | 0 | 3 impacts, 3 origins, %s kg, n_eff 100, +- 10 %% |\n| second half 0.3 .. 0.45 s | 0 | 0 | 0 | 0 | 3 impacts, 3 origins, %s kg, n_eff 100, +- 10 %% |\n' "$2" "$3" >> "$f"
+    done
+}
+cp -r "$tmp/res" "$tmp/resA"; halves "$tmp/resA" 0.1 0.1
+"$C" --results "$tmp/resA" --out "$tmp/outA" --masses "$tmp/masses.csv" > /dev/null 2>&1
+check "equal halves: agree, whole face 0.2 kg +- 6.1 % each (x2)" \
+    "grep -q '^Halves: agree' '$tmp/outA/regions.md' && grep -q '^| whole face | 0.2 | 6.1 % | 0.2 | 6.1 % | +0.0 |' '$tmp/outA/regions.md'"
+cp -r "$tmp/res" "$tmp/resB"; halves "$tmp/resB" 0.1 0.3
+"$C" --results "$tmp/resB" --out "$tmp/outB" --masses "$tmp/masses.csv" > /dev/null 2>&1
+check "second half 3x the first: disagree by +10.3 standard errors" \
+    "grep -q '^Halves: \*\*disagree\*\* (1 of 1 regions' '$tmp/outB/regions.md' && grep -q '^| whole face | 0.2 | 6.1 % | 0.6 | 6.1 % | +10.3 |' '$tmp/outB/regions.md'"
 # bad inputs: exit 2, one line, nothing written
 bad() {  # bad TEXT args...
     local want=$1; shift
