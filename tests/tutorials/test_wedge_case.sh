@@ -12,9 +12,9 @@
 #   parallel             Allrun -test -coupled -sizes none (serial), the same on 2
 #                        processes, and Allrun -test -parallel 2 -sizes none (the
 #                        flow solved until its library is complete, then played
-#                        back), gates off: each checked, and their impact counts on
-#                        the nose agree with the serial run's within 4 Poisson
-#                        standard deviations (about 90 s)
+#                        back), gates off: each checked, and the nose impact counts
+#                        of the two coupled runs agree within 4 Poisson standard
+#                        deviations (about 2 min)
 # Checked for every run whose flow is played back: the library is complete, the
 # flow is not solved after it, the replayed flow repeats with the library's period
 # (forces at t and t + period equal), the wall times of flow and clouds are logged.
@@ -94,7 +94,11 @@ run_case() {  # run_case N ARGS: Allrun ARGS in a fresh copy $tmp/wedgeN, then t
         inj=$(val injected "$mb"); esc=$(val escaped "$mb"); air=$(val airborne "$mb")
         logd=$(val deposited_logged "$mb"); fld=$(val deposited_field "$mb")
         check "$g: injected = the spray's mass ($want kg)" "absle \$(awk -v i=$inj -v w=$want 'BEGIN{print (i-w)/w}') 1e-6"
-        check "$g: something deposited" "awk -v d=$logd 'BEGIN{exit !(d>0)}'"
+        # a size class may deposit nothing under a gate (-test: 40 and 80 um all bounce
+        # under the regime gate); every other cloud deposits
+        case "$g" in sizes/*|wake_source/*) ;; *)
+            check "$g: something deposited" "awk -v d=$logd 'BEGIN{exit !(d>0)}'" ;;
+        esac
         check "$g: field integral = logged total (1e-5 of injected)" "absle \$(awk -v a=$fld -v b=$logd -v i=$inj 'BEGIN{print (a-b)/i}') 1e-5"
         check "$g: logged = injected - escaped - airborne (1e-5)" "absle \$(awk -v l=$logd -v i=$inj -v e=$esc -v a=$air 'BEGIN{print (l-(i-e-a))/i}') 1e-5"
         local rear_int rear_area map_int
@@ -142,8 +146,9 @@ run_case() {  # run_case N ARGS: Allrun ARGS in a fresh copy $tmp/wedgeN, then t
             # the size classes (issue 21): composed into the decided spray and its envelope
             local mvd
             for mvd in 20 8 56; do
-                check "compose/mvd$mvd: classes, regions with errors, map and PNG" \
-                    "[ \$(grep -c -E '^\| (5|10|20|40|80) \|' '$r/compose/mvd$mvd/classes.md') = 5 ] && [ \$(grep -c -E '^\| (left side|right side|centre|edges|whole face) \|' '$r/compose/mvd$mvd/regions.md') = 5 ] && [ -s '$r/compose/mvd$mvd/rear_deposit.csv' ] && [ \"\$(head -c 4 '$r/compose/mvd$mvd/rear_deposit.png' | tail -c 3)\" = PNG ]"
+                # regions.md: the window's 5 regions, then the halves' 5 and their verdict
+                check "compose/mvd$mvd: classes, regions with errors, the halves, map and PNG" \
+                    "[ \$(grep -c -E '^\| (5|10|20|40|80) \|' '$r/compose/mvd$mvd/classes.md') = 5 ] && [ \$(grep -c -E '^\| (left side|right side|centre|edges|whole face) \|' '$r/compose/mvd$mvd/regions.md') = 10 ] && grep -q '^Halves: ' '$r/compose/mvd$mvd/regions.md' && [ -s '$r/compose/mvd$mvd/rear_deposit.csv' ] && [ \"\$(head -c 4 '$r/compose/mvd$mvd/rear_deposit.png' | tail -c 3)\" = PNG ]"
             done
             check "compose/mvd20: the spray's interpolated mass median is 20.6 um" "grep -q 'interpolated.*the spray 20.6 um' '$r/compose/mvd20/classes.md'"
             check "capture.md: the 5 classes" "[ \$(grep -c -E '^\| (5|10|20|40|80) \|' '$r/capture.md') = 5 ]"
@@ -198,8 +203,12 @@ for i in "${!runs[@]}"; do
     run_case "$i" "${runs[$i]}"
 done
 if [ "$mode" = parallel ]; then
+    # the coupled runs only: -test takes its flow library 0.05 .. 0.1 s after the start,
+    # while the wake still forms, so its played-back flow is not the coupled one of
+    # 0.1 .. 0.2 s (on the coarse case, a developed library, the counts agree:
+    # doc/wedge.md, "Frozen-flow replay")
     a=$(cat "$tmp/nose0" 2>/dev/null)
-    for i in 1 2; do
+    for i in 1; do
         b=$(cat "$tmp/nose$i" 2>/dev/null)
         check "serial and '${runs[$i]}' nose impacts agree within 4 sigma ($a vs $b)" \
             "awk -v a='${a:-0}' -v b='${b:-0}' 'BEGIN{d=a-b; if (d<0) d=-d; exit !(a>0 && b>0 && d <= 4*sqrt(a+b))}'"
