@@ -322,7 +322,7 @@ inline void checkCoeffKeys(const dictionary& cd)
         cd,
         {
             "patches", "regime", "stuckParcels", "reboundTangential", "rebound",
-            "randomSeed",
+            "randomSeed", "stickRecords",
             "tangentialGate", "shearGate", "buildUp", "wallRegimes"
         },
         std::string(cd.dictName())
@@ -1221,6 +1221,29 @@ void Foam::SnowWallInteraction<CloudType>::setup()
         }
         Info<< endl;
     }
+    // the snow patches whose sticks are recorded: stickRecords, or none
+    recordSticks_.setSize(n, false);
+    stickLines_.setSize(n);
+    if (cd.found("stickRecords"))
+    {
+        const wordRes sel(cd.get<wordRes>("stickRecords"));
+        if (sel.empty())
+        {
+            snowWallDetail::fatalAt(cd, cd.findEntry("stickRecords", keyType::LITERAL))
+                << "snowWallInteraction: stickRecords: the list is empty (give "
+                << "at least one snow patch name or pattern, or leave the entry out)"
+                << exit(FatalIOError);
+        }
+        checkPatterns(sel, cd, "stickRecords:");
+        Info<< "    snowWallInteraction: sticks recorded on";
+        forAll(snowPatches_, si)
+        {
+            recordSticks_[si] = sel.match(bm[snowPatches_[si]].name());
+            if (recordSticks_[si]) Info<< ' ' << bm[snowPatches_[si]].name();
+        }
+        Info<< " (postProcessing/lagrangian/" << this->owner().name()
+            << "/snowWallSticks)" << endl;
+    }
     setupWallRegimes(cd);
     {
         const label sd = cd.lookupOrDefault<label>("randomSeed", 1234567);
@@ -1561,6 +1584,7 @@ Foam::SnowWallInteraction<CloudType>::SnowWallInteraction
     massDeposit0_ = pim.massDeposit0_;
     nReason_ = pim.nReason_;
     nReason0_ = pim.nReason0_;
+    stickLines_ = pim.stickLines_;
     if (pim.depositPtr_.valid())
     {
         // an unregistered copy: the original owns the registered field
@@ -1828,6 +1852,17 @@ bool Foam::SnowWallInteraction<CloudType>::impactSnow
         const scalar area = this->owner().mesh().magSf().boundaryField()
             [pp.index()][facei];
         deposit().boundaryFieldRef()[pp.index()][facei] += mp/area;
+        if (recordSticks_[s])
+        {
+            OStringStream rec;
+            rec.precision(10);
+            const point& x = p.position();
+            rec << this->owner().mesh().time().value() << ' ' << x.x() << ' '
+                << x.y() << ' ' << x.z() << ' ' << p.origProc() << ' '
+                << p.origId() << ' ' << p.nParticle() << ' ' << p.d() << ' '
+                << p.rho();
+            stickLines_[s].append(rec.str());
+        }
         keepParticle = !removeStuck_;
         p.active(false);
         U = Zero;
@@ -1960,6 +1995,59 @@ void Foam::SnowWallInteraction<CloudType>::info(Ostream& os)
             );
         }
         writeReasons(ni, nc);
+        writeStickRecords();
+    }
+}
+
+
+template<class CloudType>
+void Foam::SnowWallInteraction<CloudType>::writeStickRecords()
+{
+    // the records since the last write, gathered on the master; every
+    // processor takes part for every recorded patch
+    const Time& time = this->owner().mesh().time();
+    const polyBoundaryMesh& bm = this->owner().mesh().boundaryMesh();
+    forAll(snowPatches_, s)
+    {
+        if (!recordSticks_[s]) continue;
+        List<List<string>> all(Pstream::nProcs());
+        all[Pstream::myProcNo()] = stickLines_[s];
+        Pstream::gatherList(all);
+        stickLines_[s].clear();
+        if (!Pstream::master()) continue;
+        const fileName dir
+        (
+            time.globalPath()/"postProcessing"/"lagrangian"
+           /this->owner().name()/"snowWallSticks"/time.timeName()
+        );
+        mkDir(dir);
+        // written whole to a temporary file, then renamed
+        const word pn(bm[snowPatches_[s]].name());
+        const fileName final(dir/(pn + ".post")), tmp(dir/("." + pn + ".post.tmp"));
+        {
+            OFstream os(tmp);
+            os  << "# Time (position0 position1 position2) origProc origId"
+                << " nParticle d rho" << nl;
+            for (const List<string>& l : all)
+            {
+                for (const string& line : l)
+                {
+                    os  << line.c_str() << nl;
+                }
+            }
+            if (!os.good())
+            {
+                FatalErrorInFunction
+                    << "snowWallInteraction: cannot write " << tmp
+                    << exit(FatalError);
+            }
+        }
+        if (!mv(tmp, final))
+        {
+            FatalErrorInFunction
+                << "snowWallInteraction: cannot rename " << tmp << " to "
+                << final << exit(FatalError);
+        }
     }
 }
 
