@@ -106,6 +106,15 @@ run_case() {  # run_case N ARGS: Allrun ARGS in a fresh copy $tmp/wedgeN, then t
         rear_area=$(awk -F, '$1=="rear"{print $2}' "$r/$g/deposit_per_patch.csv")
         map_int=$(awk -F, -v A="$rear_area" 'NR>1{s+=$3; n++} END{printf "%.10g", s*A/n}' "$r/$g/rear_deposit.csv")
         check "$g: rear map x face area = rear integral ($map_int vs $rear_int)" "absle \$(awk -v a=$map_int -v b=$rear_int 'BEGIN{print a-b}') \$(awk -v b=$rear_int 'BEGIN{print 1e-4*b+1e-9}')"
+        # the wall model's stick records (stickRecords (rear)): the sticks over the window
+        # (steady: the whole run) add up to the rear face's deposit, and the statistics use them
+        local cl ta=0.1 tb=0.2 sm
+        cl=$(awk '$1=="cloud" {print $3}' "$mb")
+        case "$args" in *-steady*) ta=-1; tb=1e30 ;; esac
+        sm=$(cat "$w/postProcessing/lagrangian/$cl/snowWallSticks/"*/rear.post 2>/dev/null |
+            awk -v a="$ta" -v b="$tb" '!/^#/ { gsub(/[()]/, " "); if ($1 > a + 1e-12 && $1 <= b + 1e-12) m += $7 * $9 * 3.14159265358979 / 6 * $8 ^ 3 } END { printf "%.10g", m }')
+        check "$g: stick records of the rear face = its deposit ($sm vs $rear_int kg)" \
+            "absle \$(awk -v a='$sm' -v b='$rear_int' 'BEGIN{print a-b}') \$(awk -v b='$rear_int' 'BEGIN{print 1e-5*b+1e-12}') && { ! awk -v b='$rear_int' 'BEGIN{exit !(b > 0)}' || grep -q ' sticks, .* origins' '$r/$g/rear_statistics.md'; }"
         check "$g: rear-face PNG" "[ \"\$(head -c 4 '$r/$g/rear_deposit.png' | tail -c 3)\" = PNG ]"
         check "$g: per-patch table lists the 6 wedge patches" "[ \$(grep -c -E '^\| (rear|nose|top|bottom|sideYneg|sideYpos) \|' '$r/$g/deposit_per_patch.md') = 6 ]"
         # the counts by reason (issue 23): on every patch, and adding up to the impacts
