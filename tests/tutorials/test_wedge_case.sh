@@ -10,11 +10,13 @@
 #                        one run; the classes composed into the decided spray and
 #                        its envelope (about 2 min)
 #   parallel             Allrun -test -coupled -sizes none (serial), the same on 2
-#                        processes, and Allrun -test -parallel 2 -sizes none (the
-#                        flow solved until its library is complete, then played
-#                        back), gates off: each checked, and the nose impact counts
-#                        of the two coupled runs agree within 4 Poisson standard
-#                        deviations (about 2 min)
+#                        processes, and Allrun -test -parallel 2 -sizes none
+#                        -refine-wake -halfstep (the flow solved until its library
+#                        is complete, then played back; the resolution check's
+#                        mesh and time step: its cell count and Courant numbers
+#                        checked), gates off: each checked, and the nose impact
+#                        counts of the two coupled runs agree within 4 Poisson
+#                        standard deviations (about 2.5 min)
 # Checked for every run whose flow is played back: the library is complete, the
 # flow is not solved after it, the replayed flow repeats with the library's period
 # (forces at t and t + period equal), the wall times of flow and clouds are logged.
@@ -40,7 +42,7 @@ mode=${WEDGE_MODE:-transient}
 case "$mode" in
     transient) runs=("-test -gate regime -compare -feedback -rough -rebound -wake-source")
                gates="off tangential shear regime feedback rough rebound sizes/d5um sizes/d10um sizes/d20um sizes/d40um sizes/d80um wake_source/d5um wake_source/d80um" ;;
-    parallel)  runs=("-test -coupled -sizes none" "-test -parallel 2 -coupled -sizes none" "-test -parallel 2 -sizes none"); gates=off ;;
+    parallel)  runs=("-test -coupled -sizes none" "-test -parallel 2 -coupled -sizes none" "-test -parallel 2 -sizes none -refine-wake -halfstep"); gates=off ;;
     steady)    runs=("-steady -test"); gates=off ;;
     *) echo "unknown WEDGE_MODE '$mode'"; exit 2 ;;
 esac
@@ -160,6 +162,10 @@ run_case() {  # run_case N ARGS: Allrun ARGS in a fresh copy $tmp/wedgeN, then t
                     "[ \$(grep -c -E '^\| (5|10|20|40|80) \|' '$r/compose/mvd$mvd/classes.md') = 5 ] && [ \$(grep -c -E '^\| (left side|right side|centre|edges|whole face) \|' '$r/compose/mvd$mvd/regions.md') = 10 ] && grep -q '^Halves: ' '$r/compose/mvd$mvd/regions.md' && [ -s '$r/compose/mvd$mvd/rear_deposit.csv' ] && [ \"\$(head -c 4 '$r/compose/mvd$mvd/rear_deposit.png' | tail -c 3)\" = PNG ]"
             done
             check "compose/mvd20: the spray's interpolated mass median is 20.6 um" "grep -q 'interpolated.*the spray 20.6 um' '$r/compose/mvd20/classes.md'"
+            # post/wedge-resolution reads a real run's tables: the run against itself
+            # compares every region with snow and finds no change
+            check "wedge-resolution: the run against itself, the 3 sprays and the classes, nothing differs" \
+                "'$w/post/wedge-resolution' --base '$r' --refined '$r' > '$tmp/res$n.md' && [ \$(grep -c '^## Spray MVD' '$tmp/res$n.md') = 3 ] && [ \$(grep -c 'differing by more than 2 standard errors: 0[.]' '$tmp/res$n.md') = 4 ] && ! grep -q -e '| differs |' -e 'one run only' '$tmp/res$n.md' && grep -q '| whole face | .* | +0.0 % | .* | +0.0 | agrees' '$tmp/res$n.md'"
             check "capture.md: the 5 classes" "[ \$(grep -c -E '^\| (5|10|20|40|80) \|' '$r/capture.md') = 5 ]"
             check "the classes are split, the main cloud is not" \
                 "grep -q 'splittingClasses' '$w/constant/kinematicCloud_d5umProperties' && ! grep -q 'splittingClasses' '$w/constant/kinematicCloudProperties' && [ ! -e '$w/constant/splitting' ]"
@@ -186,6 +192,19 @@ run_case() {  # run_case N ARGS: Allrun ARGS in a fresh copy $tmp/wedgeN, then t
         *-parallel*)
             check "decomposed into 2" "grep -q 'Processor 1' '$w/log.decomposePar' && grep -q 'nProcs : 2' '$w/$log'"
             check "reconstructed deposit field" "ls '$w/'0.*/kinematicCloud:snowDeposit >/dev/null 2>&1" ;;
+    esac
+    case "$args" in
+        *-refine-wake*)
+            # -test: nxDown 16 -> 20, nBody 12 -> 15: (8 + 12 + 20) x (15 + 2 x 7)^2 - 12 x 15^2 cells
+            check "-refine-wake: the mesh of nxDown 20, nBody 15: 30 940 cells" \
+                "grep -q 'blockMesh (test, wake refined: .*nxDown 20; nBody 15;' '$tmp/allrun$n.log' && grep -q 'cells: *30940\$' '$tmp/allrun$n.log'" ;;
+    esac
+    case "$args" in
+        *-halfstep*)
+            # maxCo 1 (2 by default): the largest Courant number of the run's steps
+            check "-halfstep: every step at Courant number <= 1.01" \
+                "awk '/^Courant Number/ { if (\$NF > m) m = \$NF; n++ } END { exit !(n > 10 && m <= 1.01) }' '$w/$log'"
+            check "-halfstep: maxCo 1 in the controlDict" "grep -q 'maxCo 1;' '$w/system/halfStep'" ;;
     esac
     case "$args" in
         *-steady*|*-coupled*) ;;
