@@ -7,7 +7,8 @@
 # Runs `snowregime map --no-plot` on the default 46 x 50 grid (10-100 um, the
 # automatic speed range) on 2 threads, N repetitions (default 3), for the flat
 # wall and for a lattice of 1 um asperities (square, spacing 2 um) at each
-# number of impact points per cell in LIST (default 16,64), and prints the
+# number of impact points per cell in LIST (default 16,64; no empty item, no
+# value twice, used in ascending order with a note when given otherwise), and prints the
 # medians of
 #   grid     the map's grid (the stick fraction of every cell) [s]
 #   total    grid + the contour bisection (p = 0.1, 0.5, 0.9) + fit [s]
@@ -30,7 +31,7 @@ before=d83784a
 missing_value() { echo "rough.sh: $1 (see --help)" >&2; exit 2; }   # a usage error: exit 2
 while [ $# -gt 0 ]; do
     case "$1" in
-        -h|--help) sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;;
         --reps) [ -n "${2:-}" ] || missing_value "--reps needs a number"; reps=$2; shift ;;
         --points) [ -n "${2:-}" ] || missing_value "--points needs a list"; plist=$2; shift ;;
         --set) [ -n "${2:-}" ] || missing_value "--set needs KEY=VALUE"; sets+=(--set "$2"); shift ;;
@@ -41,6 +42,9 @@ while [ $# -gt 0 ]; do
     shift
 done
 [[ "$reps" =~ ^[1-9][0-9]*$ ]] || { echo "bench/rough.sh: --reps: '$reps' is not a positive integer" >&2; exit 2; }
+# shellcheck source=../etc/outdir.sh
+. "$top/etc/outdir.sh"
+outdir_list plist rough.sh --points "$plist" num
 [[ "$plist" =~ ^[1-9][0-9]*(,[1-9][0-9]*)*$ ]] || { echo "bench/rough.sh: --points: '$plist' is not a list of positive integers" >&2; exit 2; }
 [ -x "$sr" ] || { echo "bench/rough.sh: $sr missing: run ./Allwmake" >&2; exit 1; }
 tmp=$(mktemp -d)

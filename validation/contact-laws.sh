@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # contact-laws.sh - the kernel's normal contact laws side by side (doc/kernel.md)
 #
-# Usage: validation/contact-laws.sh --out DIR [--config FILE] [--set KEY=VALUE]... [--help]
+# Usage: validation/contact-laws.sh --out DIR [--force] [--config FILE] [--set KEY=VALUE]... [--help]
 #
 # With bin/snowregime on the embedded defaults (dry snow on ABS), or on the
 # settings given (--config/--set, as for snowregime), it measures for each law
@@ -11,12 +11,17 @@
 #   both         cor thornton, dashpot while loading and unloading, calibrated
 #                to the same non-adhesive COR
 #   tn-1MPa ...  cor thornton-ning at sigma_y = 1, 3, 10, 30 MPa
-# and writes into DIR (created; an existing DIR is replaced only when the run
-# succeeds):
+# and writes into DIR, only when the run succeeds:
 #   vcrit.csv    d [m] and v_crit [m/s] per law, 5-200 um (16 diameters)
 #   vcrit.md     the same at 10, 20, 50, 100 um as a markdown table
 #   e_v.csv      rebound COR e_n(v) at d = 50 um, v 1 mm/s - 50 m/s (0 = stick)
 #   contact-laws.png  both, as plots (gnuplot)
+# DIR missing: created (its parent must exist). DIR an empty folder or an
+# earlier SnowWall output folder (it holds .snowwall-output): the files are
+# written into it, what else it holds stays. Any other existing DIR is refused
+# (exit 2) unless --force: then the files are written into it (regular files of
+# the same names replaced), nothing deleted, no .snowwall-output added.
+# Nothing is ever deleted from DIR.
 # Speeds are searched in [1e-4, 1000] m/s; "> 1000" means sticks everywhere.
 # The snowregime used is bin/snowregime, or $SNOWREGIME if set (the tests).
 # Exit status: 0 done, 1 a run failed, 2 usage error or a rejected setting.
@@ -24,12 +29,14 @@ set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 sr=${SNOWREGIME:-$top/bin/snowregime}
 out=
+force=0
 sets=()
 missing_value() { echo "contact-laws.sh: $1 (see --help)" >&2; exit 2; }   # a usage error: exit 2
 while [ $# -gt 0 ]; do
     case "$1" in
-        -h|--help) sed -n '2,25p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;;
         --out) [ -n "${2:-}" ] || missing_value "--out needs a folder"; out=$2; shift ;;
+        --force) force=1 ;;
         --config) [ -n "${2:-}" ] || missing_value "--config needs a file"; sets+=(--config "$2"); shift ;;
         --set) [ -n "${2:-}" ] || missing_value "--set needs KEY=VALUE"; sets+=(--set "$2"); shift ;;
         *) echo "contact-laws.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
@@ -40,9 +47,9 @@ done
 [ -x "$sr" ] || { echo "contact-laws.sh: $sr missing: run ./Allwmake" >&2; exit 1; }
 command -v gnuplot >/dev/null || { echo "contact-laws.sh: gnuplot missing (etc/setup.sh)" >&2; exit 1; }
 
-# shellcheck source=outdir.sh
-. "$top/validation/outdir.sh"
-outdir_begin contact-laws "$out"
+# shellcheck source=../etc/outdir.sh
+. "$top/etc/outdir.sh"
+outdir_begin contact-laws.sh "$out" "$force"
 
 laws=(elastic thornton both tn-1MPa tn-3MPa tn-10MPa tn-30MPa)
 law_sets() {
@@ -161,6 +168,6 @@ EOF
     rm -f plot.gp
 )
 rm -f "$tmp"/v_* "$tmp"/t_* "$tmp/hdr"
-outdir_commit "$out"
+outdir_commit
 echo "contact-laws.sh: vcrit.csv, vcrit.md, e_v.csv, contact-laws.png in $out"
 cat "$out/vcrit.md"

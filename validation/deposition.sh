@@ -2,7 +2,7 @@
 # deposition.sh - turbulent deposition in a channel: the CFD chain against the
 # measured deposition velocities (issue 20, doc/deposition.md)
 #
-# Usage: validation/deposition.sh --out DIR [--mesh resolved|wf|both]
+# Usage: validation/deposition.sh --out DIR [--force] [--mesh resolved|wf|both]
 #            [--tau-plus LIST] [--models LIST] [--parcels N] [--t-run T]
 #            [--coeffs FILE | --calibrate] [--short] [--help]
 #
@@ -29,12 +29,20 @@
 # height, graded), wf (a wall-function mesh: 10 uniform cells, first cell
 # centre y+ about 30, as on the wedge), both (default).
 #
-# Writes into DIR (created; an existing DIR is replaced only when the run
-# succeeds): vplus.csv and vplus.md (V+ per mesh, treatment and tau+, with the
-# counts, the error and Wood's correlation), vplus.png (V+ against tau+ with
-# the correlations of the measurements), flow.md (u_tau, Re_tau, y+ of the
-# first cell, the run times) and the cases (<mesh>/case, logs included).
-# --tau-plus: default 0.3,1,3,10,30; --parcels per cloud (default 2000);
+# Writes into DIR, only when the run succeeds: vplus.csv and vplus.md (V+ per
+# mesh, treatment and tau+, with the counts, the error and Wood's correlation),
+# vplus.png (V+ against tau+ with the correlations of the measurements),
+# flow.md (u_tau, Re_tau, y+ of the first cell, the run times),
+# deposition.coeffs (the closure used) and the cases (<mesh>/case, logs
+# included). DIR missing: created (its parent must exist). DIR an empty folder
+# or an earlier SnowWall output folder (it holds .snowwall-output): the files
+# are written into it, what else it holds stays. Any other existing DIR is
+# refused (exit 2) unless --force: then the files are written into it (regular
+# files of the same names replaced), nothing deleted, no .snowwall-output
+# added. Nothing is ever deleted from DIR.
+# --tau-plus: default 0.3,1,3,10,30 (no empty item, no value twice; used in
+# ascending order, with a note when given otherwise); --models: no empty item,
+# no name twice; --parcels per cloud (default 2000);
 # --t-run: the window in wall units t+ = t u_tau^2/nu (default 20000, after a
 # warm-up of 2000); --coeffs: the closure (default etc/deposition.coeffs, the
 # shipped calibration); --calibrate: calibrate it anew first (bin/snowdeposit
@@ -53,9 +61,10 @@ trun=20000
 twarm=2000
 coeffs=
 calibrate=0
+force=0
 while [ $# -gt 0 ]; do
     case "$1" in
-        -h|--help) sed -n '2,43p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;;
         --out) out=${2:?"--out needs a folder"}; shift ;;
         --mesh) meshes=${2:?"--mesh needs resolved, wf or both"}; shift ;;
         --tau-plus) taus=${2:?"--tau-plus needs a list"}; shift ;;
@@ -64,6 +73,7 @@ while [ $# -gt 0 ]; do
         --t-run) trun=${2:?"--t-run needs a number"}; shift ;;
         --coeffs) coeffs=${2:?"--coeffs needs a file"}; shift ;;
         --calibrate) calibrate=1 ;;
+        --force) force=1 ;;
         --short) meshes=wf; taus=1,10; models=nearwall; parcels=1000; trun=8000; twarm=1000 ;;
         *) echo "deposition.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
     esac
@@ -74,6 +84,10 @@ die2() { echo "deposition.sh: $*" >&2; exit 2; }
 case "$meshes" in resolved|wf) ;; both) meshes="resolved wf" ;; *) die2 "--mesh: '$meshes' is not resolved, wf or both" ;; esac
 [[ "$parcels" =~ ^[1-9][0-9]{0,5}$ ]] || die2 "--parcels: '$parcels' is not a whole number in 1..999999"
 [[ "$trun" =~ ^[1-9][0-9]{0,6}$ ]] || die2 "--t-run: '$trun' is not a whole number of wall units in 1..9999999"
+# shellcheck source=../etc/outdir.sh
+. "$top/etc/outdir.sh"
+outdir_list taus deposition.sh --tau-plus "$taus" num
+outdir_list models deposition.sh --models "$models" name
 IFS=, read -r -a tauList <<< "$taus"
 [ "${#tauList[@]}" -ge 1 ] && [ "${#tauList[@]}" -le 12 ] || die2 "--tau-plus: 1 to 12 values"
 for t in "${tauList[@]}"; do
@@ -94,9 +108,7 @@ done
     || { echo "deposition.sh: the project's solver and wrapper are missing: run ./Allwmake" >&2; exit 1; }
 [ -x "$top/bin/snowdeposit" ] || { echo "deposition.sh: bin/snowdeposit missing: run ./Allwmake" >&2; exit 1; }
 command -v gnuplot >/dev/null || { echo "deposition.sh: gnuplot not found" >&2; exit 1; }
-# shellcheck source=outdir.sh
-. "$top/validation/outdir.sh"
-outdir_begin deposition "$out"
+outdir_begin deposition.sh "$out" "$force"
 # shellcheck source=../etc/openfoam-env.sh
 . "$top/etc/openfoam-env.sh" >/dev/null
 t_start=$(date +%s)
@@ -336,7 +348,7 @@ done
 echo >> "$flowmd"
 echo "Whole run: $t_total s (the meshes side by side, one process each)." >> "$flowmd"
 mv "$rows" "$tmp/vplus.csv"
-"$here/deposition-report" --out "$tmp" "$tmp/vplus.csv" || { echo "deposition.sh: the report failed" >&2; exit 1; }
+"$here/deposition-report" --force --out "$tmp" "$tmp/vplus.csv" || { echo "deposition.sh: the report failed" >&2; exit 1; }
 echo "deposition.sh: done in $t_total s"
 cat "$tmp/vplus.md"
-outdir_commit "$out"
+outdir_commit

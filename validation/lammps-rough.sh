@@ -3,7 +3,7 @@
 #     lammps-rough.sh - the rough-wall impacts of snowregime checked against LAMMPS (issue 24)
 #
 # SYNOPSIS
-#     validation/lammps-rough.sh --out DIR [--quick] [--grid K] [--angles LIST]
+#     validation/lammps-rough.sh --out DIR [--force] [--quick] [--grid K] [--angles LIST]
 #                                [--speeds-hertz LIST] [--speeds-jkr LIST] [--cases LIST]
 #                                [--d D] [--cor E] [--lmp-steps N] [--halve] [--check]
 #     validation/lammps-rough.sh --help
@@ -39,16 +39,27 @@
 #     head-on impact on one asperity in both codes against the closed forms.
 #
 # OPTIONS
-#     --out DIR            output folder (required; its parent must exist; replaced
-#                          only when the run succeeds): summary.md (the tables),
-#                          impacts.csv (every impact in both codes), times.txt
+#     --out DIR            output folder (required): summary.md (the tables),
+#                          impacts.csv (every impact in both codes), report.txt,
+#                          times.txt, written only when the run succeeds. DIR
+#                          missing: created (its parent must exist). DIR an empty
+#                          folder or an earlier SnowWall output folder (it holds
+#                          .snowwall-output): the files are written into it, what
+#                          else it holds stays. Any other existing DIR is refused
+#                          (exit 2) unless --force. Nothing is deleted from DIR.
+#     --force              write into an existing DIR that is not a SnowWall
+#                          output folder: regular files of the same names are
+#                          replaced, nothing deleted, no .snowwall-output added
 #     --quick              the test subset: --grid 2 --angles 0,30,60 --speeds-hertz 0.5,2
 #                          --speeds-jkr 1 --cases hertz,jkr-elastic, no single-contact
 #                          sticking velocities (about 5 s)
 #     --grid K             K x K impact points over the lattice's unit cell,
 #                          x, y = 0, s/K, ..., (K-1)s/K (default 5: 25 points; 1..20)
 #     --angles LIST        impact angles from the normal [deg] (default 0,30,60; each
-#                          in [0, 80]): v_n = V cos, v_t = V sin (along +x)
+#                          in [0, 80]): v_n = V cos, v_t = V sin (along +x). The
+#                          number lists take no empty item and no value twice;
+#                          they are used in ascending order (a note when given
+#                          otherwise); --cases takes no empty item or name twice
 #     --speeds-hertz LIST  impact speeds V of the hertz case [m/s] (default 0.5,2)
 #     --speeds-jkr LIST    impact speeds V of the jkr cases [m/s] (default 0.3,1);
 #                          each speed in (0, 20]
@@ -90,7 +101,7 @@ lmp=${LMP:-lmp}
 me=lammps-rough.sh
 usage() { echo "$me: $1 (see --help)" >&2; exit 2; }
 out= ; grid=5; angles=0,30,60; sh=0.5,2; sj=0.3,1; cases=hertz,jkr-elastic,jkr
-d=10e-6; cor=0.7; steps=100; halve=(); check=0; single=()
+d=10e-6; cor=0.7; steps=100; halve=(); check=0; single=(); force=0
 need() { [ $# -ge 2 ] && [ -n "$2" ] || usage "$1 needs a value"; }
 while [ $# -gt 0 ]; do
     case "$1" in
@@ -105,6 +116,7 @@ while [ $# -gt 0 ]; do
         --cor) need "$@"; cor=$2; shift ;;
         --lmp-steps) need "$@"; steps=$2; shift ;;
         --halve) halve=(--halve) ;;
+        --force) force=1 ;;
         --check) check=1 ;;
         --quick) grid=2; angles=0,30,60; sh=0.5,2; sj=1; cases=hertz,jkr-elastic; single=(--no-single) ;;
         *) usage "unknown option '$1'" ;;
@@ -118,22 +130,25 @@ inrange() {
     [[ "$2" =~ $num ]] && awk -v x="$2" -v lo="$3" -v hi="$4" 'BEGIN { exit !(x >= lo && x <= hi) }' \
         || usage "$1 '$2' is not a number in [$3, $4]"
 }
-inlist() {    # inlist NAME LIST LO HI LO_OPEN
+# shellcheck source=../etc/outdir.sh
+. "$top/etc/outdir.sh"
+inlist() {    # inlist VAR NAME LO HI LO_OPEN: VAR's comma list checked, in ascending order
     local v vals
-    [[ "$2" =~ ^[^,]+(,[^,]+)*$ ]] || usage "$1 '$2' is not a comma list of numbers"
-    IFS=, read -r -a vals <<< "$2"
+    outdir_list "$1" "$me" "$2" "${!1}" num
+    IFS=, read -r -a vals <<< "${!1}"
     for v in "${vals[@]}"; do
-        inrange "$1 (in '$2')" "$v" "$3" "$4"
-        [ "$5" = 0 ] || awk -v x="$v" 'BEGIN { exit !(x > 0) }' || usage "$1 (in '$2') '$v' must be > 0"
+        inrange "$2 (in '${!1}')" "$v" "$3" "$4"
+        [ "$5" = 0 ] || awk -v x="$v" 'BEGIN { exit !(x > 0) }' || usage "$2 (in '${!1}') '$v' must be > 0"
     done
 }
 [[ "$grid" =~ ^[1-9][0-9]?$ ]] && [ "$grid" -le 20 ] || usage "--grid '$grid' is not a whole number in 1..20"
-inlist --angles "$angles" 0 80 0
-inlist --speeds-hertz "$sh" 0 20 1
-inlist --speeds-jkr "$sj" 0 20 1
+inlist angles --angles 0 80 0
+inlist sh --speeds-hertz 0 20 1
+inlist sj --speeds-jkr 0 20 1
 inrange --d "$d" 2e-6 1e-4
 inrange --cor "$cor" 0.3 0.95
 inrange --lmp-steps "$steps" 20 2000
+outdir_list cases "$me" --cases "$cases" name
 IFS=, read -r -a cl <<< "$cases"
 [ ${#cl[@]} -gt 0 ] || usage "--cases is empty"
 for c in "${cl[@]}"; do
@@ -141,9 +156,7 @@ for c in "${cl[@]}"; do
 done
 command -v "$lmp" >/dev/null 2>&1 || { echo "$me: LAMMPS ('$lmp') is not installed: run etc/setup.sh --lammps (skipped)" >&2; exit 77; }
 [ -x "$sl" ] || { echo "$me: $sl missing: run ./Allwmake" >&2; exit 1; }
-# shellcheck source=outdir.sh
-. "$top/validation/outdir.sh"
-outdir_begin lammps-rough "$out"
+outdir_begin "$me" "$out" "$force"
 t0=$(date +%s)
 rc=0
 "$sl" --out "$tmp" --lmp "$(command -v "$lmp")" --deck "$top/validation/lammps/impact.lmp" \
@@ -153,7 +166,7 @@ rc=0
 [ "$rc" = 0 ] || [ "$rc" = 3 ] || { cat "$tmp/report.txt" >&2; echo "$me: the comparison failed (exit $rc)" >&2; exit 1; }
 t1=$(date +%s)
 echo "$me: $((t1 - t0)) s wall time (grid $grid, angles $angles, cases $cases${halve:+, step halving})" >"$tmp/times.txt"
-outdir_commit "$out"
+outdir_commit
 cat "$out/report.txt"
 cat "$out/times.txt"
 if [ "$check" = 1 ] && [ "$rc" = 3 ]; then

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # rough-reference.sh - the reference study's rough wall of 1 um spheres (issue 24, doc/kernel.md)
 #
-# Usage: validation/rough-reference.sh --out DIR [--points N] [--threads N] [--quick] [--help]
+# Usage: validation/rough-reference.sh --out DIR [--force] [--points N] [--threads N] [--quick] [--help]
 #
 # With bin/snowregime on the embedded defaults (dry snow on ABS) it measures the
 # critical normal speed v_crit of 10, 20, 50 and 100 um ice spheres hitting
@@ -16,7 +16,7 @@
 # (asperity_yield contact, particle, elastic; snowregime --help), at the stick
 # fractions p = 0.9, 0.5 and 0.1 (v_crit: where the fraction of N impact points
 # that stick falls below p; the same points at every speed, seed 1). It writes
-# into DIR (created; an existing DIR is replaced only when the run succeeds):
+# into DIR, only when the run succeeds:
 #   reference.md   the v_crit table, the rough/flat ratio table, the run time
 #   reference.csv  wall,asperity_yield,p,d_um,vcrit_m_s,ratio_to_flat
 #                  (nan: no change of regime in the search range)
@@ -25,6 +25,12 @@
 #   times.txt      the run time and the load average before and after
 #   logs/          every snowregime vcrit output (its # comments: brackets,
 #                  non-monotone warnings)
+# DIR missing: created (its parent must exist). DIR an empty folder or an
+# earlier SnowWall output folder (it holds .snowwall-output): the files are
+# written into it, what else it holds stays. Any other existing DIR is refused
+# (exit 2) unless --force: then the files are written into it (regular files of
+# the same names replaced), nothing deleted, no .snowwall-output added.
+# Nothing is ever deleted from DIR.
 # --points N: impact points per speed (default 256); --threads N: threads of
 # snowregime vcrit, over the diameters (default 2); --quick: 8 points, speeds
 # to 5 %, no sensitivity table (the test, tests/regime_cli/test_rough_reference.sh).
@@ -39,6 +45,7 @@ sr=${SNOWREGIME:-$top/bin/snowregime}
 me=rough-reference.sh
 out=
 quick=0
+force=0
 points=256
 threads=2
 usage_error() { echo "$me: $1 (see --help)" >&2; exit 2; }
@@ -49,6 +56,7 @@ while [ $# -gt 0 ]; do
         --points) [ -n "${2:-}" ] || usage_error "--points needs a number"; points=$2; shift ;;
         --threads) [ -n "${2:-}" ] || usage_error "--threads needs a number"; threads=$2; shift ;;
         --quick) quick=1 ;;
+        --force) force=1 ;;
         *) usage_error "unknown option '$1'" ;;
     esac
     shift
@@ -61,9 +69,9 @@ for c in touching random; do
     [ -r "$top/regime/configs/rough-spheres-$c.conf" ] || { echo "$me: regime/configs/rough-spheres-$c.conf missing" >&2; exit 1; }
 done
 [ -x "$sr" ] || { echo "$me: $sr missing: run ./Allwmake" >&2; exit 1; }
-# shellcheck source=outdir.sh
-. "$top/validation/outdir.sh"
-outdir_begin rough-reference "$out"
+# shellcheck source=../etc/outdir.sh
+. "$top/etc/outdir.sh"
+outdir_begin rough-reference.sh "$out" "$force"
 mkdir "$tmp/logs"
 
 dtab=10e-6,20e-6,50e-6,100e-6
@@ -192,6 +200,6 @@ nonmono=$(grep -l -i 'non-monotone' "$tmp"/logs/*.txt 2>/dev/null | sed 's|.*/||
     [ -z "$nonmono" ] || { echo; echo "Non-monotone stick fraction reported by snowregime vcrit in: $nonmono(logs/)."; }
 } >"$tmp/reference.md"
 rm -f "$tmp"/logs/*.err
-outdir_commit "$out"
+outdir_commit
 cat "$out/reference.md"
-[ ! -f "$out/sensitivity.md" ] || { echo; cat "$out/sensitivity.md"; }
+[ "$quick" = 1 ] || { echo; cat "$out/sensitivity.md"; }

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # rough-wall.sh - sticking on a rough wall against the flat wall (issue 9, doc/snowregime.md)
 #
-# Usage: validation/rough-wall.sh --out DIR [--points N] [--nd N --nv N] [--quick]
+# Usage: validation/rough-wall.sh --out DIR [--force] [--points N] [--nd N --nv N] [--quick]
 #                                 [--config FILE] [--set KEY=VALUE]... [--help]
 #
 # With bin/snowregime on the embedded defaults (dry snow on ABS), or on the
@@ -16,7 +16,13 @@
 #   map/         snowregime map of the square lattice (N points per cell;
 #                map.png, contours.csv, regime.coeffs with the probability table)
 #   rough-map.png  the map's picture
-# into DIR (created; an existing DIR is replaced only when the run succeeds).
+#   times.txt, logs/  the run times and every snowregime output
+# into DIR, only when the run succeeds. DIR missing: created (its parent must
+# exist). DIR an empty folder or an earlier SnowWall output folder (it holds
+# .snowwall-output): the files are written into it, what else it holds stays.
+# Any other existing DIR is refused (exit 2) unless --force: then the files are
+# written into it (regular files of the same names replaced), nothing deleted,
+# no .snowwall-output added. Nothing is ever deleted from DIR.
 # --points N: impact points per (d, v_n) (default 64); --nd/--nv: the map's
 # grid (default 46 x 50); --quick: 8 points, speeds to 5 %, an 8 x 8 map (the test).
 # Speeds are searched in [1e-3, 50] m/s to 1 % (the stick fraction of N points
@@ -28,6 +34,7 @@ top=$(cd "$(dirname "$0")/.." && pwd)
 sr=${SNOWREGIME:-$top/bin/snowregime}
 out=
 quick=0
+force=0
 points=64
 nd=46
 nv=50
@@ -35,11 +42,12 @@ sets=()
 missing_value() { echo "rough-wall.sh: $1 (see --help)" >&2; exit 2; }   # a usage error: exit 2
 while [ $# -gt 0 ]; do
     case "$1" in
-        -h|--help) sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;;
         --out) [ -n "${2:-}" ] || missing_value "--out needs a folder"; out=$2; shift ;;
         --points) [ -n "${2:-}" ] || missing_value "--points needs a number"; points=$2; shift ;;
         --nd) [ -n "${2:-}" ] || missing_value "--nd needs a number"; nd=$2; shift ;;
         --nv) [ -n "${2:-}" ] || missing_value "--nv needs a number"; nv=$2; shift ;;
+        --force) force=1 ;;
         --quick) points=8; nd=8; nv=8; quick=1 ;;
         --config) [ -n "${2:-}" ] || missing_value "--config needs a file"; sets+=(--config "$2"); shift ;;
         --set) [ -n "${2:-}" ] || missing_value "--set needs KEY=VALUE"; sets+=(--set "$2"); shift ;;
@@ -52,9 +60,9 @@ for n in "$points" "$nd" "$nv"; do
     [[ "$n" =~ ^[1-9][0-9]{0,4}$ ]] || { echo "rough-wall.sh: '$n' is not a whole number in 1..99999" >&2; exit 2; }
 done
 [ -x "$sr" ] || { echo "rough-wall.sh: $sr missing: run ./Allwmake" >&2; exit 1; }
-# shellcheck source=outdir.sh
-. "$top/validation/outdir.sh"
-outdir_begin rough-wall "$out"
+# shellcheck source=../etc/outdir.sh
+. "$top/etc/outdir.sh"
+outdir_begin rough-wall.sh "$out" "$force"
 
 dtab=10e-6,20e-6,50e-6,100e-6
 search=(--vmin 1e-3 --vmax 50 --tol 1e-2 --scan-ratio 1.5)
@@ -115,7 +123,7 @@ rm -f "$tmp"/*.err "$tmp/err"
 mkdir -p "$tmp/logs"
 mv "$tmp"/*.txt "$tmp/map.log" "$tmp/logs/" 2>/dev/null || true
 mv "$tmp/logs/times.txt" "$tmp/times.txt"
-outdir_commit "$out"
+outdir_commit
 cat "$out/vcrit.md"
 echo
 cat "$out/geometry.md"

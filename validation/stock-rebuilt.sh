@@ -48,7 +48,7 @@ case "$name" in
     '') usage "--case NAME is required (injectionChannel, cyclone, verticalChannel)" ;;
     *) usage "unknown case '$name' (injectionChannel, cyclone, verticalChannel)" ;;
 esac
-[ ! -e "$out" ] || usage "$out exists: give a new folder"
+[ ! -e "$out" ] && [ ! -L "$out" ] || usage "$out exists: give a new folder"
 
 export SW_TOP="$top"
 # the tests' helpers (stock_copy, shorten, dropin, count_hits, hits, snow_counts, balance);

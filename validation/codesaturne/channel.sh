@@ -3,7 +3,7 @@
 # the walls a SnowWall snow zone (wallmodel/CodeSaturne), every contact a deposit
 # (issue 25 item 3, doc/codesaturne.md)
 #
-# Usage: validation/codesaturne/channel.sh --out DIR [--tau-plus LIST] [--depo LIST]
+# Usage: validation/codesaturne/channel.sh --out DIR [--force] [--tau-plus LIST] [--depo LIST]
 #            [--parcels N] [--warmup N] [--window N] [--help]
 #
 # The OpenFOAM benchmark's wall-function channel: two walls 2h = 12.7 mm apart,
@@ -21,12 +21,19 @@
 #
 # --tau-plus LIST   comma-separated (default 0.3,1,3,10,30)
 # --depo LIST       0 (Langevin only), 1 (with the deposition model); default 0,1
+#                   (both lists: no empty item, no value twice; used in ascending
+#                   order, with a note when given otherwise)
 # --parcels N       particles per run (default 2000)
 # --warmup N, --window N   time steps of 2 t+ (defaults 1000 and 4000: 2000 t+
 #                   and 8000 t+); both multiples of 100
-# Writes into DIR (created, replaced only when the run succeeds): vplus.csv,
-# vplus.md (with Wood's correlation), flow.md (u_tau, bulk velocity, y+ of the
-# first cell, times). Needs Code_Saturne (etc/setup.sh) and ./Allwmake.
+# Writes into DIR, only when the run succeeds: vplus.csv, vplus.md (with
+# Wood's correlation), flow.md (u_tau, bulk velocity, y+ of the first cell,
+# times). DIR missing: created (with its parents). DIR an empty folder or an
+# earlier SnowWall output folder (it holds .snowwall-output): the files are
+# written into it, what else it holds stays. Any other existing DIR is refused
+# (exit 2) unless --force: then the files are written into it (regular files
+# of the same names replaced), nothing deleted, no .snowwall-output added.
+# Needs Code_Saturne (etc/setup.sh) and ./Allwmake.
 # Exit status: 0 done, 1 a run failed, 2 a usage error.
 set -euo pipefail
 top=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
@@ -37,21 +44,27 @@ depos=0,1
 parcels=2000
 warmup=1000
 window=4000
+force=0
 usage() { echo "channel.sh: $1 (see --help)" >&2; exit 2; }
 while [ $# -gt 0 ]; do
     case "$1" in
-        -h|--help) sed -n '2,29p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;;
         --out) [ -n "${2:-}" ] || usage "--out needs a folder"; out=$2; shift ;;
         --tau-plus) [ -n "${2:-}" ] || usage "--tau-plus needs a list"; taus=$2; shift ;;
         --depo) [ -n "${2:-}" ] || usage "--depo needs a list of 0 and 1"; depos=$2; shift ;;
         --parcels) [ -n "${2:-}" ] || usage "--parcels needs a number"; parcels=$2; shift ;;
         --warmup) [ -n "${2:-}" ] || usage "--warmup needs a number"; warmup=$2; shift ;;
         --window) [ -n "${2:-}" ] || usage "--window needs a number"; window=$2; shift ;;
+        --force) force=1 ;;
         *) usage "unknown argument '$1'" ;;
     esac
     shift
 done
 [ -n "$out" ] || usage "no --out DIR"
+# shellcheck source=../../etc/outdir.sh
+. "$top/etc/outdir.sh"
+outdir_list taus channel.sh --tau-plus "$taus" num
+outdir_list depos channel.sh --depo "$depos" num
 for t in ${taus//,/ }; do
     awk -v t="$t" 'BEGIN { exit !(t ~ /^[0-9.eE+-]+$/ && t + 0 >= 0.01 && t + 0 <= 1000) }' \
         || usage "tau+ '$t' is not a number in [0.01, 1000]"
@@ -63,8 +76,12 @@ for v in "$warmup" "$window"; do
 done
 command -v code_saturne > /dev/null || { echo "channel.sh: code_saturne not installed (etc/setup.sh)" >&2; exit 1; }
 export USER=${USER:-$(id -un 2> /dev/null || echo snowwall)}
+# the output folder checked before any work; its work folder $tmp gets the
+# three results, the study runs in a folder of its own under /tmp
+outdir_begin channel.sh "$out" "$force" parents
+outwork=$tmp
 tmp=$(mktemp -d /tmp/sw-channel-XXXXXX)
-trap 'rm -rf "$tmp"' EXIT
+trap 'rm -rf -- "$tmp"; outdir_cleanup' EXIT
 t0=$(date +%s)
 
 # the flow
@@ -141,9 +158,8 @@ t2=$(date +%s)
     echo "|---:|---:|---:|---:|---:|---:|---:|---:|"
     echo "| 10 | $yplus | $utau | 314 | $ubulk | $res | $((t1 - t0)) | $((t2 - t1)) |"
 } > "$tmp/flow.md"
-mkdir -p "$(dirname "$out")"
-rm -rf "$out.new"; mkdir "$out.new"
-cp "$tmp/vplus.csv" "$tmp/vplus.md" "$tmp/flow.md" "$out.new/"
-rm -rf "$out"; mv "$out.new" "$out"
+cp "$tmp/vplus.csv" "$tmp/vplus.md" "$tmp/flow.md" "$outwork/"
+rm -rf -- "$tmp"
+outdir_commit
 cat "$out/flow.md" "$out/vplus.md"
 echo "channel.sh: written $out/ ($((t2 - t0)) s)"
