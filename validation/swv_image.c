@@ -1,6 +1,7 @@
 /* swv_image.c - PNG (libpng simplified API) and JPEG (libjpeg) reading/writing. */
 #include "swv_image.h"
 #include "swv_error.h"
+#include "swo_out.h"
 
 #include <errno.h>
 #include <stdio.h>      /* before jpeglib.h, which uses FILE */
@@ -234,51 +235,49 @@ int swv_image_read_mem(const unsigned char *data, size_t n, const char *name, sw
     return rc;
 }
 
-/* temp file next to path; returns an open FILE and fills tmp */
-static FILE *open_temp(const char *path, char *tmp, size_t tmplen, char *err, size_t errlen)
+/* The writers go through the common output writer (swo_out.h): a temporary
+ * in path's folder, every write error checked, renamed over path only when
+ * path is absent or a regular file (a device, FIFO, folder or link there is
+ * refused, code 2, and left as it is); on failure the temporary is removed. */
+static FILE *open_out(const char *path, swo_set **set, int *code, char *err, size_t errlen)
 {
-    if ((size_t)snprintf(tmp, tmplen, "%s.tmpXXXXXX", path) >= tmplen) {
-        swv_fail(err, errlen, 2, "%s: path too long", path);
-        return NULL;
-    }
-    int fd = mkstemp(tmp);
-    if (fd < 0) {
-        swv_fail(err, errlen, 1, "%s: cannot create a temporary file (%s)", path, strerror(errno));
-        return NULL;
-    }
-    mode_t mask = umask(0);   /* mkstemp makes 0600: give the usual 0666 & ~umask */
-    umask(mask);
-    (void)fchmod(fd, 0666 & ~mask);
-    FILE *f = fdopen(fd, "wb");
+    char e[600];
+    *set = NULL;
+    const swo_spec spec = { "snowphoto", "--out", NULL, 0, 0 };
+    int rc = swo_alloc(&spec, set, e, sizeof e);
+    FILE *f = rc == SWO_OK ? swo_open(*set, path, e, sizeof e) : NULL;
     if (!f) {
-        close(fd);
-        unlink(tmp);
-        swv_fail(err, errlen, 1, "%s: fdopen failed (%s)", path, strerror(errno));
+        *code = swv_fail(err, errlen, *set ? swo_code(*set) : rc, "%s", e);
+        swo_free(*set);
+        *set = NULL;
     }
     return f;
 }
 
-static int finish_temp(FILE *f, const char *tmp, const char *path, char *err, size_t errlen)
+static int finish_out(swo_set *set, char *err, size_t errlen)
 {
-    int bad = ferror(f);
-    if (fclose(f) != 0 || bad) {
-        unlink(tmp);
-        return swv_fail(err, errlen, 1, "%s: write failed", path);
-    }
-    if (rename(tmp, path) != 0) {
-        int e = errno;
-        unlink(tmp);
-        return swv_fail(err, errlen, 1, "%s: rename failed (%s)", path, strerror(e));
-    }
-    return 0;
+    char e[600];
+    int rc = swo_commit(set, e, sizeof e);
+    if (rc != SWO_OK)
+        swv_fail(err, errlen, rc, "%s", e);
+    swo_free(set);
+    return rc;
+}
+
+/* an encoder failed: the set is dropped, its temporary removed */
+static int drop_out(swo_set *set)
+{
+    swo_free(set);
+    return 1;
 }
 
 int swv_image_write_png(const char *path, const swv_image *img, char *err, size_t errlen)
 {
-    char tmp[4096];
-    FILE *f = open_temp(path, tmp, sizeof tmp, err, errlen);
+    swo_set *set;
+    int code;
+    FILE *f = open_out(path, &set, &code, err, errlen);
     if (!f)
-        return 1;
+        return code;
     png_image pi;
     memset(&pi, 0, sizeof pi);
     pi.version = PNG_IMAGE_VERSION;
@@ -286,11 +285,10 @@ int swv_image_write_png(const char *path, const swv_image *img, char *err, size_
     pi.height = (png_uint_32)img->height;
     pi.format = PNG_FORMAT_RGB;
     if (!png_image_write_to_stdio(&pi, f, 0, img->rgb, 0, NULL)) {
-        fclose(f);
-        unlink(tmp);
+        drop_out(set);
         return swv_fail(err, errlen, 1, "%s: PNG encoding failed (%s)", path, pi.message);
     }
-    return finish_temp(f, tmp, path, err, errlen);
+    return finish_out(set, err, errlen);
 }
 
 int swv_image_write_jpeg(const char *path, const swv_image *img, int quality, char *err,
@@ -298,18 +296,18 @@ int swv_image_write_jpeg(const char *path, const swv_image *img, int quality, ch
 {
     if (quality < 1 || quality > 100)
         return swv_fail(err, errlen, 2, "JPEG quality %d outside 1..100", quality);
-    char tmp[4096];
-    FILE *f = open_temp(path, tmp, sizeof tmp, err, errlen);
+    swo_set *set;
+    int code;
+    FILE *f = open_out(path, &set, &code, err, errlen);
     if (!f)
-        return 1;
+        return code;
     struct jpeg_compress_struct ci;
     struct jerr je;
     ci.err = &je.pub;
     jerr_init(&je.pub);
     if (setjmp(je.jb)) {
         jpeg_destroy_compress(&ci);
-        fclose(f);
-        unlink(tmp);
+        drop_out(set);
         return swv_fail(err, errlen, 1, "%s: JPEG encoding failed (%s)", path, je.msg);
     }
     jpeg_create_compress(&ci);
@@ -327,7 +325,7 @@ int swv_image_write_jpeg(const char *path, const swv_image *img, int quality, ch
     }
     jpeg_finish_compress(&ci);
     jpeg_destroy_compress(&ci);
-    return finish_temp(f, tmp, path, err, errlen);
+    return finish_out(set, err, errlen);
 }
 
 static double luma_px(const swv_image *img, int x, int y)

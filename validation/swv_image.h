@@ -2,8 +2,11 @@
  *
  * Lifecycle: swv_image_alloc / swv_image_read -> use -> swv_image_free.
  * Every function returns 0 on success and a non-zero code with a one-line
- * message in err (err may be NULL) on failure; nothing exits. Writers write a
- * temporary file in the destination folder and rename() it into place.
+ * message in err (err may be NULL) on failure; nothing exits. Writers go
+ * through the common output writer (common/swo_out.h): a temporary in the
+ * destination folder renamed into place once whole; code 2 when the path is
+ * refused (its folder missing or unwritable; a folder, device, FIFO, socket or
+ * link at the path, left as it is), 1 on a write failure (a full disk).
  */
 #ifndef SWV_IMAGE_H
 #define SWV_IMAGE_H

@@ -2,10 +2,10 @@
  * simulated deposit map; list which rear-face regions hold snow. */
 #include "swv_compare.h"
 #include "swv_image.h"
+#include "swo_out.h"
 
 #include <errno.h>
 #include <math.h>
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -75,7 +75,12 @@ static const char *usage =
 "    --res N                 comparison grid N x N, 2..4000 (default 200)\n"
 "    --out PNG               side-by-side image: rectified photo | simulated map\n"
 "                            (white -> dark blue = 0 -> max) | overlay (white both,\n"
-"                            red simulation only, blue photo only, grey neither)\n"
+"                            red simulation only, blue photo only, grey neither)\n""                            PNG appears whole or not at all (a temporary in its\n"
+"                            folder, renamed at the end; a full disk is exit 1).\n"
+"                            Checked before any work: its folder must exist and\n"
+"                            be writable, and PNG is replaced only when absent or\n"
+"                            a regular file (a folder, device, FIFO, socket or\n"
+"                            symbolic link there: exit 2, left as it is)\n"
 "    --band B                edge band width for regions, in (0, 0.3) (default 0.1)\n"
 "    --hold F                covered fraction for 'holds snow', in (0, 1] (default 0.3)\n"
 "    --label TEXT            first column of the regions rows (default: the CSV path);\n"
@@ -90,8 +95,7 @@ static const char *usage =
 "    0 success, 2 usage or input error (one line on standard error naming the\n"
 "    option or input and the value), 1 other failure (memory, writing the\n"
 "    output). Interrupted by SIGINT, SIGTERM or SIGHUP, snowphoto leaves no file:\n"
-"    a signal during the writing of --out is held until the file is complete,\n"
-"    then the file is removed and the run ends by the signal.\n"
+"    the temporary of --out is removed and the run ends by the signal.\n"
 "\n"
 "EXAMPLE\n"
 "    snowphoto compare --photo rear.jpg --corners 412,188,1630,204,1611,1402,398,1380 \\\n"
@@ -133,30 +137,20 @@ static int parse_corners(const char *s, double c[4][2])
     return 0;
 }
 
-/* Write the side-by-side PNG with SIGINT, SIGTERM and SIGHUP held back: the
- * writer's temporary file is always completed and renamed or removed. When such
- * a signal came meanwhile (and is not ignored), the new file is removed too and
- * the signal, delivered as the mask is restored, ends the run: an interrupted
- * run leaves nothing. */
-static int write_side(const char *path, const swv_image *side, char *err, size_t errlen)
+/* --out PNG checked before any work: its folder takes files and PNG is absent
+ * or a regular file (common/swo_out.h; a device or FIFO there is refused and
+ * left as it is). 0, or the exit status with the message printed. */
+static int check_out(const char *path)
 {
-    static const int sigs[3] = {SIGINT, SIGTERM, SIGHUP};
-    sigset_t term, old, pend;
-    sigemptyset(&term);
-    for (int i = 0; i < 3; i++)
-        sigaddset(&term, sigs[i]);
-    sigprocmask(SIG_BLOCK, &term, &old);
-    int rc = swv_image_write_png(path, side, err, errlen);
-    if (!rc && sigpending(&pend) == 0)
-        for (int i = 0; i < 3; i++) {
-            struct sigaction sa;
-            if (sigismember(&pend, sigs[i]) && sigaction(sigs[i], NULL, &sa) == 0 &&
-                sa.sa_handler != SIG_IGN) {
-                unlink(path);
-                break;
-            }
-        }
-    sigprocmask(SIG_SETMASK, &old, NULL);
+    char err[600];
+    swo_set *set = NULL;
+    const swo_spec spec = { "snowphoto", "--out", NULL, 0, 0 };
+    int rc = swo_alloc(&spec, &set, err, sizeof err);
+    if (rc == SWO_OK)
+        rc = swo_check(set, path, err, sizeof err);
+    if (rc != SWO_OK)
+        fprintf(stderr, "snowphoto: --out: %s\n", err);
+    swo_free(set);
     return rc;
 }
 
@@ -280,6 +274,12 @@ int main(int argc, char **argv)
         fprintf(stderr, "snowphoto compare: --photo and --corners are required\n");
         return 2;
     }
+    if (out_path) {
+        const int c = check_out(out_path);
+        if (c)
+            return c;
+    }
+    swo_signals_on();   /* interrupted, the run leaves no temporary of --out behind */
     char err[1024] = "";
     swv_simmap *sim = NULL;
     int rc = swv_simmap_read(sim_path, &sim, err, sizeof err);
@@ -344,8 +344,8 @@ int main(int argc, char **argv)
         fprintf(stderr, "snowphoto: %s: %s\n", photo_path, err);
     } else {
         if (out_path) {
-            rc = write_side(out_path, side, err, sizeof err);
-            if (rc) fprintf(stderr, "snowphoto: %s\n", err);
+            rc = swv_image_write_png(out_path, side, err, sizeof err);
+            if (rc) fprintf(stderr, "snowphoto: --out: %s\n", err);
         }
         if (!rc) {
             printf("photo = %s\nsim = %s\n", photo_path, sim_path);

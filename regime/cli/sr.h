@@ -51,8 +51,18 @@ int sr_settings_apply(const sr_settings *s, swr_params *p, char *err, size_t err
 /* Usage error: prints "snowregime CMD: MSG" and returns SR_EXIT_USAGE. */
 int sr_usage_error(const char *cmd, const char *msg);
 int sr_fail(const char *cmd, const char *msg);
-/* The output folder cannot be made: "--out: 'DIR': MSG", SR_EXIT_USAGE. */
-int sr_out_error(const char *cmd, const char *dir, const char *msg);
+/* The output set of `--out DIR` (swo_out.h: the output-folder contract; force:
+ * --force, which also lets a long run go, see sr_help.c), or of files by their
+ * own paths when dir is NULL. Prints "snowregime CMD: note: ..." when it writes
+ * into a foreign folder by force. NULL with the message printed and *rc the
+ * exit status (SR_EXIT_USAGE when refused, SR_EXIT_FAIL otherwise). */
+swo_set *sr_out_open(const char *cmd, const char *dir, int force, int *rc);
+/* An output failure of set o with message msg printed: its exit status. */
+int sr_out_fail(const char *cmd, const swo_set *o, const char *msg);
+/* A comma list of numbers (swo_list_numbers: no empty item, no value twice,
+ * taken in ascending order with a note on stderr): 0, or -1 with a->err. */
+int sr_list(sr_args *a, const char *opt, const char *text, double lo, double hi, double **out,
+            int *n);
 /* Prints the help text of a subcommand (to stdout). */
 void sr_help(const char *cmd);
 

@@ -152,6 +152,21 @@ int sr_cmd_collide(int argc, char **argv)
                                    "is flat, where every impact point gives the same outcome");
     swr_model *m = swr_model_alloc(&p, err, sizeof err);
     if (!m) return sr_usage_error(cmd, err);
+    /* the trace files: each replaced only when absent or a regular file, in a
+     * folder that takes files; checked before the run */
+    swo_set *o = NULL;
+    int rc = 0;
+    if (csv || vtk) {
+        o = sr_out_open(cmd, NULL, 0, &rc);
+        if (o && csv && swo_check(o, csv, err, sizeof err) != SWO_OK) rc = sr_out_fail(cmd, o, err);
+        if (o && rc == 0 && vtk && swo_check(o, vtk, err, sizeof err) != SWO_OK)
+            rc = sr_out_fail(cmd, o, err);
+        if (rc) {
+            swo_free(o);
+            swr_model_free(m);
+            return rc;
+        }
+    }
 
     sr_trace_buf buf = { NULL, 0, 0, 0.5 * in.d, 0 };
     swr_trace tr = { (int)stride, trace_fn, &buf };
@@ -166,24 +181,22 @@ int sr_cmd_collide(int argc, char **argv)
         char msg[200];
         snprintf(msg, sizeof msg, "--%s", r.msg);
         free(buf.p);
+        swo_free(o);
         return sr_usage_error(cmd, msg);
     }
-    int rc = 0;
-    if (csv || vtk) {
-        swt_outset *o = swt_outset_alloc(NULL, err, sizeof err);
+    if (o) {
         FILE *f;
-        if (!o) rc = sr_fail(cmd, err);
-        else if (buf.oom) rc = sr_fail(cmd, "out of memory for the trajectory");
+        if (buf.oom) rc = sr_fail(cmd, "out of memory for the trajectory");
         if (rc == 0 && csv) {
-            if (!(f = swt_outset_open(o, csv, err, sizeof err))) rc = sr_fail(cmd, err);
+            if (!(f = swo_open(o, csv, err, sizeof err))) rc = sr_out_fail(cmd, o, err);
             else write_csv(f, &buf, &in);
         }
         if (rc == 0 && vtk) {
-            if (!(f = swt_outset_open(o, vtk, err, sizeof err))) rc = sr_fail(cmd, err);
+            if (!(f = swo_open(o, vtk, err, sizeof err))) rc = sr_out_fail(cmd, o, err);
             else write_vtk(f, &buf, &in);
         }
-        if (rc == 0 && swt_outset_commit(o, err, sizeof err) != 0) rc = sr_fail(cmd, err);
-        swt_outset_free(o);
+        if (rc == 0 && swo_commit(o, err, sizeof err) != SWO_OK) rc = sr_out_fail(cmd, o, err);
+        swo_free(o);
     }
     free(buf.p);
     if (rc) return rc;

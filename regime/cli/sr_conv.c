@@ -12,7 +12,7 @@ int sr_cmd_convergence(int argc, char **argv)
     sr_settings s = { 0 };
     s.threads = 1;
     double *d = NULL, *acc = NULL;
-    int nd = 0, nacc = 0, plot = 1, rc = 0;
+    int nd = 0, nacc = 0, plot = 1, rc = 0, force = 0;
     double ref_factor = 8.0, tol = 1e-7, min_time = 0.01;
     const char *out = NULL, *v;
     for (; a.i < argc; a.i++) {
@@ -21,22 +21,12 @@ int sr_cmd_convergence(int argc, char **argv)
         if (r > 0) continue;
         if (sr_flag(&a, "--help") || sr_flag(&a, "-h")) { sr_help(cmd); goto done; }
         if (sr_flag(&a, "--no-plot")) { plot = 0; continue; }
+        if (sr_flag(&a, "--force")) { force = 1; continue; }
         int bad = 0;
         if (sr_opt(&a, "--out", &v)) { if (!v || !*v) { snprintf(a.err, sizeof a.err, "--out: missing folder name"); bad = 1; } else out = v; }
-        else if (sr_opt(&a, "--d", &v)) { free(d); d = NULL; bad = !v || swt_parse_list("--d", v, SWR_D_MIN, SWR_D_MAX, &d, &nd, a.err, sizeof a.err); }
-        else if (sr_opt(&a, "--accuracy", &v)) {
-            free(acc); acc = NULL;
-            bad = !v || swt_parse_list("--accuracy", v, 1.0, 1e6, &acc, &nacc, a.err, sizeof a.err);
-            /* as --vt and --angle of map: strictly increasing, each value once (a repeated
-             * or unsorted list was run as given, rows twice; hostile sweep, issue 22) */
-            for (int k = 1; !bad && k < nacc; k++)
-                if (!(acc[k] > acc[k - 1])) {
-                    snprintf(a.err, sizeof a.err, "--accuracy: '%s': value %g (item %d) is not above %g "
-                             "(item %d): the list must increase strictly, each value once",
-                             v, acc[k], k + 1, acc[k - 1], k);
-                    bad = 1;
-                }
-        }
+        else if (sr_opt(&a, "--d", &v)) bad = !v || sr_list(&a, "--d", v, SWR_D_MIN, SWR_D_MAX, &d, &nd);
+        /* each value once, taken in ascending order (the rows and the plot follow it) */
+        else if (sr_opt(&a, "--accuracy", &v)) bad = !v || sr_list(&a, "--accuracy", v, 1.0, 1e6, &acc, &nacc);
         else if (sr_opt(&a, "--ref-factor", &v)) bad = !v || swt_parse_double("--ref-factor", v, 2.0, 1e3, &ref_factor, a.err, sizeof a.err);
         else if (sr_opt(&a, "--tol", &v)) bad = !v || swt_parse_double("--tol", v, 1e-12, 0.1, &tol, a.err, sizeof a.err);
         else if (sr_opt(&a, "--min-time", &v)) bad = !v || swt_parse_double("--min-time", v, 0.0, 3600.0, &min_time, a.err, sizeof a.err);
@@ -64,6 +54,9 @@ int sr_cmd_convergence(int argc, char **argv)
     char err[400];
     swr_params base;
     if (sr_settings_apply(&s, &base, err, sizeof err) != 0) { rc = sr_usage_error(cmd, err); goto done; }
+    /* the output folder, checked (and made) before any work */
+    swo_set *os = sr_out_open(cmd, out, force, &rc);
+    if (!os) goto done;
     double amax = 0.0;
     for (int k = 0; k < nacc; k++) amax = fmax(amax, acc[k]);
     const int ncol = nacc + 1;   /* last: the reference */
@@ -135,12 +128,10 @@ int sr_cmd_convergence(int argc, char **argv)
         }
     }
     double sec = swt_now() - t_all;
-    swt_outset *os = NULL;
     FILE *fc = NULL, *fm = NULL;
-    if (rc == 0 && !(os = swt_outset_alloc(out, err, sizeof err))) rc = sr_out_error(cmd, out, err);
-    if (rc == 0 && (!(fc = swt_outset_open(os, "convergence.csv", err, sizeof err)) ||
-                    !(fm = swt_outset_open(os, "convergence.md", err, sizeof err))))
-        rc = sr_fail(cmd, err);
+    if (rc == 0 && (!(fc = swo_open(os, "convergence.csv", err, sizeof err)) ||
+                    !(fm = swo_open(os, "convergence.md", err, sizeof err))))
+        rc = sr_out_fail(cmd, os, err);
     if (rc == 0) {
         fprintf(fc, "# snowregime convergence: v_crit (bisection tol %g) against the reference accuracy %g\n",
                 tol, ref_factor * amax);
@@ -171,10 +162,11 @@ int sr_cmd_convergence(int argc, char **argv)
     }
     if (rc == 0 && plot) {
         fflush(NULL);
-        const char *png = swt_outset_add(os, "convergence.png", err, sizeof err);
-        const char *tc = swt_outset_add(os, "convergence.csv", err, sizeof err);
+        const char *png = swo_add(os, "convergence.png", err, sizeof err);
+        const char *tc = png ? swo_add(os, "convergence.csv", err, sizeof err) : NULL;
         swt_gnuplot g;
-        if (swt_gnuplot_open(&g, png, 850, 600, err, sizeof err) != 0) rc = sr_fail(cmd, err);
+        if (!png || !tc) rc = sr_out_fail(cmd, os, err);
+        else if (swt_gnuplot_open(&g, png, 850, 600, err, sizeof err) != 0) rc = sr_fail(cmd, err);
         else {
             FILE *f = g.f;
             fprintf(f, "set datafile separator ','\nset logscale xy\nset key top right\nset format y '10^{%%L}'\nset format x '%%g'\n");
@@ -190,10 +182,10 @@ int sr_cmd_convergence(int argc, char **argv)
             if (swt_gnuplot_finish(&g, err, sizeof err) != 0) rc = sr_fail(cmd, err);
         }
     }
-    if (rc == 0 && swt_outset_commit(os, err, sizeof err) != 0) rc = sr_fail(cmd, err);
+    if (rc == 0 && swo_commit(os, err, sizeof err) != SWO_OK) rc = sr_out_fail(cmd, os, err);
     if (rc == 0) printf("written to %s/\n", out);
-    swt_outset_free(os);
 freeall:
+    swo_free(os);
     for (int k = 0; models && k < ncol; k++) swr_model_free(models[k]);
     free(models); free(vc); free(us); free(spc); free(dts); free(cpu);
 done:

@@ -13,6 +13,9 @@ int main(int argc, char **argv)
         fputs("usage: snowregime COMMAND [OPTIONS]   (snowregime --help for the manual)\n", stderr);
         return SR_EXIT_USAGE;
     }
+    /* an interrupted run leaves no output: the temporaries of its output set,
+     * the folders it created and a running gnuplot are cleaned up */
+    swo_signals_on();
     const char *c = argv[1];
     if (strcmp(c, "--help") == 0 || strcmp(c, "-h") == 0 || strcmp(c, "help") == 0) {
         sr_help(argc > 2 ? argv[2] : NULL);

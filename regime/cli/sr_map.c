@@ -15,7 +15,8 @@ typedef struct {
     int degree, refine, plot;
     swt_vcrit_opts o;       /* outcome, tangential motion, tolerance */
     const char *out;
-    int force;              /* --force: run even when estimated above SR_LONG_RUN_S */
+    int force;              /* --force: run even when estimated above SR_LONG_RUN_S, and
+                               write into a non-empty folder that is not an output folder */
     swt_progress_mode progress; /* --progress: the progress line also off a terminal */
     swt_progress *pg;       /* the run's progress report (set by the command) */
 } sr_mapopt;
@@ -36,7 +37,7 @@ static int mapopt_parse(sr_args *a, sr_mapopt *m)
     const char *v;
     long n;
     if (sr_flag(a, "--no-plot")) { m->plot = 0; return 1; }
-    if (sr_flag(a, "--force")) { m->force = 1; return 1; }
+    if (sr_flag(a, "--force")) { m->force = 1; return 1; }   /* long run and foreign --out folder */
     if (sr_flag(a, "--progress")) { m->progress = SWT_PROGRESS_ON; return 1; }
     if (sr_opt(a, "--out", &v)) {
         if (!v || !*v) { snprintf(a->err, sizeof a->err, "--out: missing folder name"); return -1; }
@@ -248,7 +249,7 @@ static void gp_map_axes(FILE *f, const swt_map *mp)
     fprintf(f, "set xlabel 'normal impact speed v_n [m/s]'\nset ylabel 'particle diameter d [um]'\n");
 }
 
-static int write_map_plot(swt_outset *os, const char *sfx, const sr_mapres *r, const char *title,
+static int write_map_plot(swo_set *os, const char *sfx, const sr_mapres *r, const char *title,
                           char *err, size_t errlen)
 {
     char name[128], gpname[128], csv[128], itf[128];
@@ -256,9 +257,9 @@ static int write_map_plot(swt_outset *os, const char *sfx, const sr_mapres *r, c
     snprintf(gpname, sizeof gpname, "map%s.gp", sfx);
     snprintf(csv, sizeof csv, "map%s.csv", sfx);
     snprintf(itf, sizeof itf, "interface%s.csv", sfx);
-    const char *png = swt_outset_add(os, name, err, errlen);
-    const char *tcsv = swt_outset_add(os, csv, err, errlen);
-    const char *titf = swt_outset_add(os, itf, err, errlen);
+    const char *png = swo_add(os, name, err, errlen);
+    const char *tcsv = swo_add(os, csv, err, errlen);
+    const char *titf = swo_add(os, itf, err, errlen);
     if (!png || !tcsv || !titf) return -1;
     swt_gnuplot g;
     if (swt_gnuplot_open(&g, png, 800, 700, err, errlen) != 0) return -1;
@@ -300,16 +301,16 @@ static void write_contours_csv(FILE *f, const sr_mapres *r, const sr_contours *c
             fprintf(f, "%g,%.9g,%.9g\n", lv[k], its[k]->vn[q], its[k]->dcrit[q]);
 }
 
-static int write_rough_plot(swt_outset *os, const char *sfx, const sr_mapres *r, const char *title,
+static int write_rough_plot(swo_set *os, const char *sfx, const sr_mapres *r, const char *title,
                             char *err, size_t errlen)
 {
     char npng[64], ncsv[64], ncon[64];
     snprintf(npng, sizeof npng, "map%s.png", sfx);
     snprintf(ncsv, sizeof ncsv, "map%s.csv", sfx);
     snprintf(ncon, sizeof ncon, "contours%s.csv", sfx);
-    const char *png = swt_outset_add(os, npng, err, errlen);
-    const char *tcsv = swt_outset_add(os, ncsv, err, errlen);
-    const char *tcon = swt_outset_add(os, ncon, err, errlen);
+    const char *png = swo_add(os, npng, err, errlen);
+    const char *tcsv = swo_add(os, ncsv, err, errlen);
+    const char *tcon = swo_add(os, ncon, err, errlen);
     if (!png || !tcsv || !tcon) return -1;
     swt_gnuplot g;
     if (swt_gnuplot_open(&g, png, 820, 700, err, errlen) != 0) return -1;
@@ -327,25 +328,25 @@ static int write_rough_plot(swt_outset *os, const char *sfx, const sr_mapres *r,
 }
 
 /* Writes one map's files into the set. */
-static int write_map_files(swt_outset *os, const char *sfx, const sr_mapres *r, const swr_params *p,
+static int write_map_files(swo_set *os, const char *sfx, const sr_mapres *r, const swr_params *p,
                            const char *what, int plot, int threads, char *err, size_t errlen)
 {
     char name[128];
     FILE *f;
     snprintf(name, sizeof name, "map%s.csv", sfx);
-    if (!(f = swt_outset_open(os, name, err, errlen))) return -1;
+    if (!(f = swo_open(os, name, err, errlen))) return -1;
     write_map_csv(f, r, p, what);
     snprintf(name, sizeof name, "interface%s.csv", sfx);
-    if (!(f = swt_outset_open(os, name, err, errlen))) return -1;
+    if (!(f = swo_open(os, name, err, errlen))) return -1;
     write_interface_csv(f, r);
     snprintf(name, sizeof name, "fit%s.txt", sfx);
-    if (!(f = swt_outset_open(os, name, err, errlen))) return -1;
+    if (!(f = swo_open(os, name, err, errlen))) return -1;
     write_fit_txt(f, r, threads);
     char label[200];
     snprintf(label, sizeof label, "%s, gamma %g", what, p->gamma);
     if (r->fit_ok) {
         snprintf(name, sizeof name, "regime%s.coeffs", sfx);
-        if (!(f = swt_outset_open(os, name, err, errlen))) return -1;
+        if (!(f = swo_open(os, name, err, errlen))) return -1;
         /* the kernel's e_n(d, v_n) of this map's bouncing points (issue 23) */
         swt_rebound rb;
         if (swt_rebound_init(&rb, r->mp, NULL, 1, err, errlen) != 0) return -1;
@@ -356,7 +357,7 @@ static int write_map_files(swt_outset *os, const char *sfx, const sr_mapres *r, 
     }
     if (r->contours) {
         snprintf(name, sizeof name, "contours%s.csv", sfx);
-        if (!(f = swt_outset_open(os, name, err, errlen))) return -1;
+        if (!(f = swo_open(os, name, err, errlen))) return -1;
         write_contours_csv(f, r, r->contours);
     }
     if (plot && r->mp->points > 0) {
@@ -388,6 +389,30 @@ static int oblique_nodes(const swt_grid *g, double *v_lo, double *v_hi)
     return 1 + (int)ceil(log(*v_hi / *v_lo) / (step > 0.0 ? step : log(1.5)));
 }
 
+/* Every file name of the maps (one per --vt / --angle value, suffix -vtV or
+ * -angleA) checked before the work: one that is a folder, device, FIFO, socket
+ * or link in the output folder is refused before hours of maps, not after. */
+static int check_map_names(swo_set *os, const double *axis, int naxis, int axis_angle, char *err,
+                           size_t errlen)
+{
+    static const char *const stem[][2] = { { "map", ".csv" },  { "interface", ".csv" },
+                                          { "fit", ".txt" },  { "regime", ".coeffs" },
+                                          { "contours", ".csv" }, { "map", ".png" } };
+    if (swo_check(os, "regime.coeffs", err, errlen) != SWO_OK)
+        return -1;
+    for (int k = 0; k < (axis ? naxis : 1); k++) {
+        char sfx[64] = "", name[160];
+        if (axis)
+            snprintf(sfx, sizeof sfx, "-%s%g", axis_angle ? "angle" : "vt", axis[k]);
+        for (size_t q = 0; q < sizeof stem / sizeof stem[0]; q++) {
+            snprintf(name, sizeof name, "%s%s%s", stem[q][0], sfx, stem[q][1]);
+            if (swo_check(os, name, err, errlen) != SWO_OK)
+                return -1;
+        }
+    }
+    return 0;
+}
+
 int sr_cmd_map(int argc, char **argv)
 {
     const char *cmd = "map";
@@ -415,20 +440,12 @@ int sr_cmd_map(int argc, char **argv)
         if (!hit) hit = ang = sr_opt(&a, "--angle", &v);
         if (hit) {
             if (axis) { rc = sr_usage_error(cmd, "--vt and --angle: give one of them, once"); goto out; }
-            if (!v || swt_parse_list(ang ? "--angle" : "--vt", v, 0.0, ang ? 89.9 : SWR_V_MAX, &axis,
-                                     &naxis, a.err, sizeof a.err)) {
+            /* checked here, before any map is computed: each value once, taken in
+             * ascending order (one map per value, the table's axis increasing) */
+            if (!v || sr_list(&a, ang ? "--angle" : "--vt", v, 0.0, ang ? 89.9 : SWR_V_MAX, &axis,
+                              &naxis)) {
                 rc = sr_usage_error(cmd, a.err); goto out;
             }
-            /* checked here, before any map is computed (issue 22: an unsorted or
-             * repeated --vt list was found only by the oblique table, after the
-             * maps, with exit 1; a repeated value wrote one map's files twice) */
-            for (int k = 1; k < naxis; k++)
-                if (!(axis[k] > axis[k - 1])) {
-                    snprintf(a.err, sizeof a.err, "%s: '%s': value %g (item %d) is not above %g "
-                             "(item %d): the list must increase strictly, each value once",
-                             ang ? "--angle" : "--vt", v, axis[k], k + 1, axis[k - 1], k);
-                    rc = sr_usage_error(cmd, a.err); goto out;
-                }
             axis_angle = ang;
             continue;
         }
@@ -484,8 +501,17 @@ int sr_cmd_map(int argc, char **argv)
         goto out;
     }
 
+    /* the output folder, checked (and made) before any work */
+    swo_set *os = sr_out_open(cmd, mo.out, mo.force, &rc);
+    if (!os) { swr_model_free(m); goto out; }
     if (axis) mo.o.full_stick = 1;
     int nmaps = axis ? naxis : 1;
+    if (check_map_names(os, axis, naxis, axis_angle, err, sizeof err) != 0) {
+        rc = sr_out_fail(cmd, os, err);
+        swo_free(os);
+        swr_model_free(m);
+        goto out;
+    }
     /* the speed range (automatic: from the first map's settings) is common to all maps */
     swt_vcrit_opts o0 = mo.o;
     if (axis) {
@@ -501,6 +527,7 @@ int sr_cmd_map(int argc, char **argv)
         if (swt_grid_check(&gp, err, sizeof err) == 0
             && sr_estimate(cmd, m, &gp, &o0, work, s.threads, mo.force, mo.progress, &mo.pg, err,
                            sizeof err) != 0) {
+            swo_free(os);
             swr_model_free(m);
             rc = sr_usage_error(cmd, err);
             goto out;
@@ -508,17 +535,17 @@ int sr_cmd_map(int argc, char **argv)
     }
     if ((!mo.set_vmin || !mo.set_vmax) &&
         sr_auto_vrange(m, &mo.g, mo.set_vmin, mo.set_vmax, &o0, mo.pg, err, sizeof err) != 0) {
+        swo_free(os);
         swr_model_free(m);
         rc = sr_fail(cmd, err);
         goto out;
     }
     if (swt_grid_check(&mo.g, err, sizeof err) != 0) {
+        swo_free(os);
         swr_model_free(m);
         rc = sr_usage_error(cmd, err);
         goto out;
     }
-    swt_outset *os = swt_outset_alloc(mo.out, err, sizeof err);
-    if (!os) { swr_model_free(m); rc = sr_out_error(cmd, mo.out, err); goto out; }
     /* --vt LIST starting at 0: the v_t = 0 map's fit and speed nodes, for the
      * combined regime.coeffs with the d_crit(v_n, v_t) table */
     /* a list from 0: one combined regime.coeffs; on a flat wall with the
@@ -542,7 +569,7 @@ int sr_cmd_map(int argc, char **argv)
         double v_lo, v_hi;
         const long nodes = oblique_nodes(&mo.g, &v_lo, &v_hi);
         if (nodes * naxis > SWW_TABLE_MAX) {
-            swt_outset_free(os);
+            swo_free(os);
             swr_model_free(m);
             snprintf(err, sizeof err, "--vt: %d values x %ld speed nodes (the map's --nv %d "
                      "spacing over [%g, %g] m/s) exceed the %d values of the d_crit(v_n, v_t) "
@@ -585,7 +612,7 @@ int sr_cmd_map(int argc, char **argv)
         } else if (!r.fit_ok && !axis) {
             rc = sr_fail(cmd, r.fit_err);
         } else if (write_map_files(os, sfx, &r, &p, what, mo.plot, s.threads, err, sizeof err) != 0) {
-            rc = sr_fail(cmd, err);
+            rc = sr_out_fail(cmd, os, err);
         } else {
             const swt_fit *F = &r.fit;
             printf("map%s: %s\n", sfx, what);
@@ -661,9 +688,9 @@ int sr_cmd_map(int argc, char **argv)
             snprintf(label, sizeof label, "%s, rough wall, vt 0..%g m/s, gamma %g",
                      sr_outcome_text(&mo.o, ocb, sizeof ocb), axis[naxis - 1], p.gamma);
             const swt_prob pr = { pd0, pv0, axis, mo.g.nd, mo.g.nv, naxis, pvt, points0 };
-            FILE *f = swt_outset_open(os, "regime.coeffs", err, sizeof err);
+            FILE *f = swo_open(os, "regime.coeffs", err, sizeof err);
             if (!f) {
-                rc = sr_fail(cmd, err);
+                rc = sr_out_fail(cmd, os, err);
             } else {
                 swt_coeffs_write_prob(f, &fit0, &p, d0min, d0max, label, &pr, &rb0);
                 printf("regime.coeffs: stick probability %d x %d x %d (d x v_t 0..%g m/s x v_n), "
@@ -689,9 +716,9 @@ int sr_cmd_map(int argc, char **argv)
                 char ocb[160], label[300];
                 snprintf(label, sizeof label, "%s, vt 0..%g m/s, gamma %g",
                          sr_outcome_text(&o, ocb, sizeof ocb), axis[naxis - 1], p.gamma);
-                FILE *f = swt_outset_open(os, "regime.coeffs", err, sizeof err);
+                FILE *f = swo_open(os, "regime.coeffs", err, sizeof err);
                 if (!f) {
-                    rc = sr_fail(cmd, err);
+                    rc = sr_out_fail(cmd, os, err);
                 } else {
                     swt_coeffs_write_all(f, &fit0, &p, d0min, d0max, label, &ob, NULL, &rb0);
                     /* the v_t = 0 row against the fit it sits beside */
@@ -714,9 +741,9 @@ int sr_cmd_map(int argc, char **argv)
     }
     free(vn0);
     swt_rebound_free(&rb0);
-    if (rc == 0 && swt_outset_commit(os, err, sizeof err) != 0) rc = sr_fail(cmd, err);
+    if (rc == 0 && swo_commit(os, err, sizeof err) != SWO_OK) rc = sr_out_fail(cmd, os, err);
     if (rc == 0) printf("written to %s/\n", mo.out);
-    swt_outset_free(os);
+    swo_free(os);
     swr_model_free(m);
 out:
     swt_progress_free(mo.pg);
@@ -767,6 +794,22 @@ int sr_cmd_sensitivity(int argc, char **argv)
         return sr_usage_error(cmd, err);
     }
     const int nvar = 1 + 2 * (int)(sizeof sens_ranges / sizeof sens_ranges[0]);
+    /* the output folder and its file names, checked (the folder made) before any work */
+    int rc = 0;
+    swo_set *os = sr_out_open(cmd, mo.out, mo.force, &rc);
+    if (!os) {
+        swr_model_free(m0);
+        return rc;
+    }
+    static const char *const names[] = { "sensitivity.csv", "sensitivity.md",
+                                         "sensitivity-interfaces.csv", "sensitivity.png" };
+    for (size_t q = 0; q < sizeof names / sizeof names[0]; q++)
+        if (swo_check(os, names[q], err, sizeof err) != SWO_OK) {
+            rc = sr_out_fail(cmd, os, err);
+            swo_free(os);
+            swr_model_free(m0);
+            return rc;
+        }
     {
         const swt_grid gp = pilot_grid(&mo);
         const double work = sr_auto_vrange_work(m0, mo.set_vmin, mo.set_vmax, &mo.o)
@@ -774,6 +817,7 @@ int sr_cmd_sensitivity(int argc, char **argv)
         if (swt_grid_check(&gp, err, sizeof err) == 0
             && sr_estimate(cmd, m0, &gp, &mo.o, work, s.threads, mo.force, mo.progress, &mo.pg,
                            err, sizeof err) != 0) {
+            swo_free(os);
             swr_model_free(m0);
             return sr_usage_error(cmd, err);
         }
@@ -781,11 +825,13 @@ int sr_cmd_sensitivity(int argc, char **argv)
     if ((!mo.set_vmin || !mo.set_vmax) &&
         sr_auto_vrange(m0, &mo.g, mo.set_vmin, mo.set_vmax, &mo.o, mo.pg, err, sizeof err) != 0) {
         swt_progress_free(mo.pg);
+        swo_free(os);
         swr_model_free(m0);
         return sr_fail(cmd, err);
     }
     if (swt_grid_check(&mo.g, err, sizeof err) != 0) {
         swt_progress_free(mo.pg);
+        swo_free(os);
         swr_model_free(m0);
         return sr_usage_error(cmd, err);
     }
@@ -794,7 +840,6 @@ int sr_cmd_sensitivity(int argc, char **argv)
     char keys[9][16];
     double vals[9];
     memset(res, 0, sizeof res);
-    int rc = 0;
     double t0 = swt_now();
     for (int k = 0; k < nvar && rc == 0; k++) {
         swr_params p = base;
@@ -820,13 +865,11 @@ int sr_cmd_sensitivity(int argc, char **argv)
         if (m != m0) swr_model_free(m);
     }
     double sec = swt_now() - t0;
-    swt_outset *os = NULL;
-    if (rc == 0 && !(os = swt_outset_alloc(mo.out, err, sizeof err))) rc = sr_out_error(cmd, mo.out, err);
     FILE *fc = NULL, *fm = NULL, *fi = NULL;
-    if (rc == 0 && (!(fc = swt_outset_open(os, "sensitivity.csv", err, sizeof err)) ||
-                    !(fm = swt_outset_open(os, "sensitivity.md", err, sizeof err)) ||
-                    !(fi = swt_outset_open(os, "sensitivity-interfaces.csv", err, sizeof err))))
-        rc = sr_fail(cmd, err);
+    if (rc == 0 && (!(fc = swo_open(os, "sensitivity.csv", err, sizeof err)) ||
+                    !(fm = swo_open(os, "sensitivity.md", err, sizeof err)) ||
+                    !(fi = swo_open(os, "sensitivity-interfaces.csv", err, sizeof err))))
+        rc = sr_out_fail(cmd, os, err);
     if (rc == 0) {
         const sr_mapres *b = &res[0];
         fprintf(fc, "# snowregime sensitivity: %d x %d grid, d %g..%g m, vn %g..%g m/s (%s)\n",
@@ -873,10 +916,11 @@ int sr_cmd_sensitivity(int argc, char **argv)
     }
     if (rc == 0 && mo.plot) {
         fflush(NULL);
-        const char *png = swt_outset_add(os, "sensitivity.png", err, sizeof err);
-        const char *ti = swt_outset_add(os, "sensitivity-interfaces.csv", err, sizeof err);
+        const char *png = swo_add(os, "sensitivity.png", err, sizeof err);
+        const char *ti = png ? swo_add(os, "sensitivity-interfaces.csv", err, sizeof err) : NULL;
         swt_gnuplot g;
-        if (swt_gnuplot_open(&g, png, 950, 650, err, sizeof err) != 0) rc = sr_fail(cmd, err);
+        if (!png || !ti) rc = sr_out_fail(cmd, os, err);
+        else if (swt_gnuplot_open(&g, png, 950, 650, err, sizeof err) != 0) rc = sr_fail(cmd, err);
         else {
             FILE *f = g.f;
             fprintf(f, "set datafile separator ','\nset key outside right top\nset format x '%%g'\nset mxtics 10\n");
@@ -897,9 +941,9 @@ int sr_cmd_sensitivity(int argc, char **argv)
             if (swt_gnuplot_finish(&g, err, sizeof err) != 0) rc = sr_fail(cmd, err);
         }
     }
-    if (rc == 0 && swt_outset_commit(os, err, sizeof err) != 0) rc = sr_fail(cmd, err);
+    if (rc == 0 && swo_commit(os, err, sizeof err) != SWO_OK) rc = sr_out_fail(cmd, os, err);
     if (rc == 0) printf("written to %s/\n", mo.out);
-    swt_outset_free(os);
+    swo_free(os);
     for (int k = 0; k < nvar; k++) mapres_free(&res[k]);
     swr_model_free(m0);
     swt_progress_free(mo.pg);

@@ -173,10 +173,42 @@ int sr_usage_error(const char *cmd, const char *msg)
     return SR_EXIT_USAGE;
 }
 
-int sr_out_error(const char *cmd, const char *dir, const char *msg)
+swo_set *sr_out_open(const char *cmd, const char *dir, int force, int *rc)
 {
-    fprintf(stderr, "snowregime %s: --out: '%s': %s\n", cmd, dir, msg);
-    return SR_EXIT_USAGE;
+    char tool[64], err[600];
+    snprintf(tool, sizeof tool, "snowregime %s", cmd);
+    const swo_spec spec = { tool, "--out", dir, force, 1 };
+    swo_set *o = NULL;
+    const int c = swo_alloc(&spec, &o, err, sizeof err);
+    if (c != SWO_OK) {
+        fprintf(stderr, "snowregime %s: %s\n", cmd, err);
+        *rc = c == SWO_EREFUSED ? SR_EXIT_USAGE : SR_EXIT_FAIL;
+        return NULL;
+    }
+    if (swo_note(o))
+        fprintf(stderr, "snowregime %s: note: %s\n", cmd, swo_note(o));
+    *rc = 0;
+    return o;
+}
+
+int sr_out_fail(const char *cmd, const swo_set *o, const char *msg)
+{
+    fprintf(stderr, "snowregime %s: %s\n", cmd, msg);
+    return swo_code(o) == SWO_EREFUSED ? SR_EXIT_USAGE : SR_EXIT_FAIL;
+}
+
+int sr_list(sr_args *a, const char *opt, const char *text, double lo, double hi, double **out,
+            int *n)
+{
+    char note[600];
+    free(*out);
+    *out = NULL;
+    if (swo_list_numbers(opt, text, lo, hi, 0, 0, out, n, note, sizeof note, a->err,
+                         sizeof a->err) != SWO_OK)
+        return -1;
+    if (note[0])
+        fprintf(stderr, "snowregime %s: note: %s\n", a->cmd, note);
+    return 0;
 }
 
 int sr_fail(const char *cmd, const char *msg)

@@ -49,8 +49,7 @@ int sr_cmd_vcrit(int argc, char **argv)
         const char *name = NULL;
         double lo = 0, hi = 0;
         if (sr_opt(&a, "--d", &v)) {
-            free(d); d = NULL;
-            if (!v || swt_parse_list("--d", v, SWR_D_MIN, SWR_D_MAX, &d, &nd, a.err, sizeof a.err)) {
+            if (!v || sr_list(&a, "--d", v, SWR_D_MIN, SWR_D_MAX, &d, &nd)) {
                 rc = sr_usage_error(cmd, a.err); goto out;
             }
             continue;

@@ -25,10 +25,14 @@ check() {   # expected-text args...
 }
 check "frobnicate" "$SD" frobnicate
 check "--bogus" "$SD" channel --bogus 1
-check "--tau-plus" "$SD" channel --tau-plus 1,0.5
+# the comma-list rule: an empty item or a value twice refused, naming the option and the text
+check "--tau-plus: '1,,3' has an empty item" "$SD" channel --tau-plus 1,,3
+check "--tau-plus: ',1' has an empty item" "$SD" channel --tau-plus ,1
+check "--tau-plus: '1,' has an empty item" "$SD" channel --tau-plus 1,
+check "--tau-plus: '1,3,1.0' gives the value 1 twice" "$SD" channel --tau-plus 1,3,1.0
 check "nan" "$SD" channel --tau-plus nan
 check "0x10" "$SD" channel --tau-plus 0x10
-check "--tau-plus: 0" "$SD" channel --tau-plus 0
+check "--tau-plus: '0' (in '0') is out of range (0, 10000]" "$SD" channel --tau-plus 0
 check "--particles" "$SD" channel --particles 0
 check "--particles" "$SD" channel --particles 2.5
 check "--seed" "$SD" channel --seed -1
@@ -52,7 +56,63 @@ check "--set CT: 'nan' is not a finite decimal number" "$SD" channel --set CT=na
 # a word; the work is estimated before it starts and refused over the limit
 check "at least 5e+16 particle steps" "$SD" channel --particles 1e8 --t-run 1e9 --tau-plus 1
 check "--force" "$SD" calibrate --out "$WORK/x" --particles 1e6
-[ ! -e "$WORK/x" ] && [ ! -e "$WORK/y" ] && ok "no file left by the errors" || fail "a file was left"
+# --particles 0: one "(see snowdeposit --help)", the range named
+"$SD" channel --particles 0 >/dev/null 2>"$WORK/err"
+[ "$(cat "$WORK/err")" = "snowdeposit: --particles: 0 is not an integer in [1, 100000000] (see snowdeposit --help)" ] \
+    || fail "--particles 0: $(cat "$WORK/err")"
+# calibrate --out FILE onto a folder, a FIFO, a link or a /dev/full-like node made
+# here: refused before the work (exit 2, named), each left as it was
+mkdir "$WORK/outdir"; mkfifo "$WORK/fifo"; echo keep >"$WORK/target"; ln -s "$WORK/target" "$WORK/link"
+check "cannot write '$WORK/outdir': it exists and is a folder" "$SD" calibrate --out "$WORK/outdir"
+check "cannot write '$WORK/fifo': it exists and is a FIFO" "$SD" calibrate --out "$WORK/fifo"
+check "cannot write '$WORK/link': it exists and is a symbolic link" "$SD" calibrate --out "$WORK/link"
+[ -d "$WORK/outdir" ] && [ -p "$WORK/fifo" ] && [ -L "$WORK/link" ] && [ "$(cat "$WORK/target")" = keep ] \
+    || fail "a refused --out was changed"
+if mknod "$WORK/full" c 1 7 2>/dev/null; then
+    check "cannot write '$WORK/full': it exists and is a character device" "$SD" calibrate --out "$WORK/full"
+    [ -c "$WORK/full" ] && ok "--out onto a device node: refused, still a device" || fail "--out replaced the device node"
+    rm -f "$WORK/full"
+fi
+rmdir "$WORK/outdir"; rm -f "$WORK/fifo" "$WORK/link" "$WORK/target"
+[ -z "$(ls -A "$WORK" | grep -v '^err$')" ] && ok "no file left by the errors" || fail "a file was left: $(ls -A "$WORK")"
+# FILE in a read-only folder, as an unprivileged user (root's writes are not
+# stopped by permissions): refused before the work, exit 2
+mkdir "$WORK/ro" && chmod 555 "$WORK/ro" && chmod 755 "$WORK"
+as_user=
+if [ "$(id -u)" != 0 ]; then as_user=" "
+elif command -v setpriv >/dev/null && setpriv --reuid=nobody --regid=nogroup --clear-groups true 2>/dev/null; then
+    as_user="setpriv --reuid=nobody --regid=nogroup --clear-groups"
+fi
+if [ -n "$as_user" ]; then
+    check "folder '$WORK/ro' is not writable" $as_user "$SD" calibrate --out "$WORK/ro/x.coeffs"
+    [ -z "$(ls -A "$WORK/ro")" ] && ok "read-only folder: refused, nothing written" || fail "read-only folder: $(ls -A "$WORK/ro")"
+else
+    echo "skip: no unprivileged user for the read-only check"
+fi
+rmdir "$WORK/ro"
+# a real full disk (a 16 KiB tmpfs filled up): the write error is found at
+# flush/close, exit 1 naming FILE, the temporary removed (skipped where mounting
+# is not permitted)
+mkdir "$WORK/tiny"
+if mount -t tmpfs -o size=16k tmpfs "$WORK/tiny" 2>/dev/null; then
+    dd if=/dev/zero of="$WORK/tiny/fill" bs=1k count=64 2>/dev/null
+    "$SD" calibrate --out "$WORK/tiny/full.coeffs" --tau-plus 1,3 --particles 10 --t-run 10 --t-warm 0 \
+        >/dev/null 2>"$WORK/err"; rc=$?
+    left=$(ls -A "$WORK/tiny" | grep -v '^fill')
+    umount "$WORK/tiny"
+    [ $rc -eq 1 ] && grep -qF "write error on '$WORK/tiny/full.coeffs': No space left on device" "$WORK/err" \
+        && ok "full disk: exit 1, named" || fail "full disk: exit $rc, $(cat "$WORK/err")"
+    [ -z "$left" ] && ok "full disk: no file, no temporary" || fail "full disk left: $left"
+else
+    echo "skip: mounting a tmpfs is not permitted here"
+fi
+rmdir "$WORK/tiny"
+# a list out of order: taken in ascending order, with a one-line note
+"$SD" channel --tau-plus 3,1 --particles 20 --t-run 20 --t-warm 0 >"$WORK/sorted.txt" 2>"$WORK/err" \
+    || fail "channel --tau-plus 3,1: $(cat "$WORK/err")"
+[ "$(cat "$WORK/err")" = "snowdeposit: note: --tau-plus: '3,1' taken in ascending order" ] || fail "no ascending note: $(cat "$WORK/err")"
+[ "$(awk '!/^#/ && $1 + 0 > 0 { printf "%s ", $1 }' "$WORK/sorted.txt")" = "1 3 " ] || fail "tau+ rows not ascending: $(cat "$WORK/sorted.txt")"
+rm -f "$WORK/sorted.txt"
 
 # a short calibration: the file, its keys, and the closure at work
 "$SD" calibrate --out "$WORK/dep.coeffs" --tau-plus 0.3,1,3,10 --particles 300 --t-run 4000 \
@@ -60,7 +120,7 @@ check "--force" "$SD" calibrate --out "$WORK/x" --particles 1e6
 for k in tauPlus vPlusSublayer vPlusLaw vPlusCrw cSublayer sublayerYPlus layerYPlus; do
     grep -q "^ *$k " "$WORK/dep.coeffs" || fail "dep.coeffs has no $k"
 done
-ls "$WORK" | grep -q tmp && fail "calibrate left a temporary file" || ok "no temporary left"
+ls -A "$WORK" | grep -q tmp && fail "calibrate left a temporary file" || ok "no temporary left"
 "$SD" channel --closure wood --tau-plus 1,3,10 --particles 300 --t-run 4000 --t-warm 500 \
     >"$WORK/ch.txt" 2>"$WORK/err" || fail "channel --closure: $(cat "$WORK/err")"
 cat "$WORK/ch.txt"
@@ -79,6 +139,6 @@ pid=$!
 sleep 1
 kill -TERM $pid; wait $pid; rc=$?
 [ $rc -eq 143 ] || fail "SIGTERM: exit $rc, want 143"
-ls "$WORK" | grep -q killed && fail "SIGTERM left $(ls "$WORK" | grep killed)" || ok "SIGTERM leaves nothing"
+ls -A "$WORK" | grep -q killed && fail "SIGTERM left $(ls -A "$WORK" | grep killed)" || ok "SIGTERM leaves nothing"
 
 if [ "$FAILS" -eq 0 ]; then echo "PASS"; exit 0; else echo "$FAILS failure(s)"; exit 1; fi

@@ -57,8 +57,10 @@ sources() {  # sources TARGET: the compiler arguments of a target
                      "$top/regime/physics/*.c -I$top/wallmodel/core -I$top/regime/physics -lm" ;;
         simcsv) echo "$here/fuzz_simcsv.c $top/validation/swv_compare.c $top/validation/swv_homography.c" \
                      "$top/validation/swv_image.c $top/validation/swv_error.c -I$top/validation" \
+                     "$top/common/swo_out.c $top/common/swo_list.c -I$top/common" \
                      "-D_XOPEN_SOURCE=700 $(pkg-config --cflags --libs gsl libpng libjpeg) -lm" ;;
         image)  echo "$here/fuzz_image.c $top/validation/swv_image.c $top/validation/swv_error.c" \
+                     "$top/common/swo_out.c $top/common/swo_list.c -I$top/common" \
                      "-I$top/validation -D_XOPEN_SOURCE=700 -DSWV_IMAGE_MAX_PIXELS=4000000" \
                      "-DSWV_IMAGE_MAX_SIDE=4000 $(pkg-config --cflags --libs libpng libjpeg) -lm" ;;
     esac

@@ -38,6 +38,8 @@ xlast=$(tail -1 "$WORK/t.csv" | cut -d, -f2)
 fcmp "$xlast" ">" 0 || fail "centre x does not advance with vt > 0 ($xlast)"
 # a NaN diameter and a bad trace path
 "$SR" collide --d nan --vn 1 >/dev/null 2>"$WORK/e"; [ $? -eq 2 ] && grep -q -- "--d: 'nan'" "$WORK/e" || fail "NaN diameter"
-"$SR" collide --d 4e-05 --vn 1 --trace-csv "$WORK/no/such/dir/t.csv" >/dev/null 2>&1; [ $? -eq 1 ] || fail "unwritable trace path should exit 1"
+# a trace into a missing folder: refused before the run (exit 2), the path named
+"$SR" collide --d 4e-05 --vn 1 --trace-csv "$WORK/no/such/dir/t.csv" >/dev/null 2>"$WORK/e"; rc=$?
+[ $rc -eq 2 ] && grep -qF "cannot write '$WORK/no/such/dir/t.csv'" "$WORK/e" || fail "trace into a missing folder: exit $rc, $(cat "$WORK/e")"
 ok "collide checks done"
 finish

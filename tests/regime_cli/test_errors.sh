@@ -35,9 +35,13 @@ check "--vmax" "$SR" map --vmin 2 --vmax 1
 check "--angle: '95'" "$SR" map --angle 95
 check "unknown option '--frob'" "$SR" map --frob
 # an unsorted or repeated --vt / --angle list (issue 22: found after the maps, exit 1)
-check "--vt: '0,0.5,0.5,1': value 0.5 (item 3) is not above 0.5 (item 2)" "$SR" map --vt 0,0.5,0.5,1
-check "--vt: '0,1,0.5': value 0.5 (item 3) is not above 1 (item 2)" "$SR" map --vt 0,1,0.5
-check "--angle: '30,0': value 0 (item 2) is not above 30" "$SR" map --angle 30,0
+check "--vt: '0,0.5,0.5,1' gives the value 0.5 twice (items 2 '0.5' and 3 '0.5'): give each value once" "$SR" map --vt 0,0.5,0.5,1
+check "--angle: '30,0,30' gives the value 30 twice" "$SR" map --angle 30,0,30
+# a list out of order: taken in ascending order (one map per value, the table's
+# axis increasing), with a one-line note on stderr
+"$SR" map --out "$WORK/vtsort" --vt 0.5,0 --nd 6 --nv 6 --no-plot >/dev/null 2>"$WORK/err" || fail "map --vt 0.5,0: $(cat "$WORK/err")"
+[ "$(cat "$WORK/err")" = "snowregime map: note: --vt: '0.5,0' taken in ascending order" ] || fail "map --vt 0.5,0: stderr $(cat "$WORK/err")"
+grep -q "^ *obliqueVt *(0 0.5);" "$WORK/vtsort/regime.coeffs" && [ -s "$WORK/vtsort/map-vt0.5.csv" ] || fail "map --vt 0.5,0: no combined table"
 # overlapping asperities (issue 22: one impact ran for hours): refused before any work
 check "asperity_spacing: 1.5e-06 m is below 2 asperity_r = 2e-06 m: the asperities would overlap" \
     "$SR" map --set wall=lattice --set asperity_spacing=1.5e-6
@@ -80,11 +84,15 @@ check "--vt: 60 values x 100 speed nodes (the map's --nv 50 spacing" \
 check "--set: gamma" "$SR" sensitivity --set gamma=1e9
 check "--nd: '0'" "$SR" sensitivity --nd 0
 check "--accuracy: '-3'" "$SR" convergence --accuracy -3
-check "--accuracy: '20,10,10': value 10 (item 2) is not above 20 (item 1)" "$SR" convergence --accuracy 20,10,10
-check "--accuracy: '10,20,20': value 20 (item 3) is not above 20 (item 2)" "$SR" convergence --accuracy 10,20,20
+check "--accuracy: '20,10,10' gives the value 10 twice (items 2 '10' and 3 '10')" "$SR" convergence --accuracy 20,10,10
+check "--accuracy: '10,20,20.0' gives the value 20 twice" "$SR" convergence --accuracy 10,20,20.0
+check "--vt: '0,,1' has an empty item" "$SR" map --vt 0,,1
+check "--angle: '30,' has an empty item" "$SR" map --angle 30,
 check "--d: 'nan'" "$SR" convergence --d nan
 # commands without --out
-for a in "vcrit --d -2e-5|--d: '-2e-5'" "vcrit --d 1e-5,,2e-5|empty item" "vcrit --d 1e-5 --tol 0|--tol: '0'" \
+for a in "vcrit --d -2e-5|--d: '-2e-5'" "vcrit --d 1e-5,,2e-5|--d: '1e-5,,2e-5' has an empty item" \
+         "vcrit --d ,1e-5|--d: ',1e-5' has an empty item" "vcrit --d 1e-5,|--d: '1e-5,' has an empty item" \
+         "vcrit --d 2e-5,1e-5,2e-5|--d: '2e-5,1e-5,2e-5' gives the value 2e-05 twice" "vcrit --d 1e-5 --tol 0|--tol: '0'" \
          "vcrit --d 1e-5 --set mu=-1|mu" "collide --d 1e-5 --vn -1|--vn: '-1'" "collide --vn 1|--d: missing" \
          "collide --d 1e-5 --vn 1 --set E=abc|abc" "vcrit --d|--d: missing value" \
          "collide --d 5e-5 --vn 5000|--vn: '5000'" "vcrit --d 1e-5 --vmax 1e4|--vmax: '1e4'" \
@@ -104,15 +112,23 @@ for a in "vcrit --d -2e-5|--d: '-2e-5'" "vcrit --d 1e-5,,2e-5|empty item" "vcrit
     [ $rc -eq 2 ] || fail "'$args': exit $rc, want 2"
     grep -qF -- "$want" "$WORK/err" || fail "'$args': message does not name '$want': $(cat "$WORK/err")"
 done
-# a trace onto a folder or a FIFO (as root, --trace-csv /dev/full renamed a regular file
-# over the device): exit 1 naming it, the FIFO left as it was (hostile sweep, issue 22)
-mkdir -p "$WORK/tracedir"; rm -f "$WORK/fifo"; mkfifo "$WORK/fifo"
-for t in "$WORK/tracedir" "$WORK/fifo"; do
-    "$SR" collide --d 5e-5 --vn 1 --trace-csv "$t" >/dev/null 2>"$WORK/err"; rc=$?
-    [ $rc -eq 1 ] && grep -qF -- "cannot write '$t': it exists and is not a regular file" "$WORK/err" \
-        || fail "--trace-csv $t: exit $rc, $(cat "$WORK/err")"
+# a trace onto a folder, a FIFO, a link or a /dev/full-like node made here (as
+# root, --trace-csv /dev/full once renamed a regular file over the device):
+# refused before the run, exit 2 naming it, each left as it was
+mkdir -p "$WORK/tracedir"; rm -f "$WORK/fifo" "$WORK/tlink" "$WORK/tdev"; mkfifo "$WORK/fifo"
+echo keep >"$WORK/ttarget"; ln -s "$WORK/ttarget" "$WORK/tlink"
+tdev=; mknod "$WORK/tdev" c 1 7 2>/dev/null && tdev=$WORK/tdev
+for t in "$WORK/tracedir|a folder" "$WORK/fifo|a FIFO" "$WORK/tlink|a symbolic link" ${tdev:+"$tdev|a character device"}; do
+    what=${t#*|}; t=${t%%|*}
+    for o in --trace-csv --trace-vtk; do
+        "$SR" collide --d 5e-5 --vn 1 $o "$t" >/dev/null 2>"$WORK/err"; rc=$?
+        [ $rc -eq 2 ] && grep -qF -- "cannot write '$t': it exists and is $what" "$WORK/err" \
+            || fail "$o $t: exit $rc, $(cat "$WORK/err")"
+    done
 done
 [ -p "$WORK/fifo" ] || fail "--trace-csv onto a FIFO replaced it"
+[ -L "$WORK/tlink" ] && [ "$(cat "$WORK/ttarget")" = keep ] || fail "--trace-csv onto a link replaced it"
+[ -z "$tdev" ] || [ -c "$tdev" ] || fail "--trace-csv onto a device node replaced it"
 [ -z "$(ls -A "$WORK/tracedir")" ] && [ -z "$(ls -A "$WORK" | grep '^\.tmp-')" ] || fail "--trace-csv onto a folder left files"
 # --version with more words: refused, not dropped (hostile sweep, issue 22)
 "$SR" --version map >/dev/null 2>"$WORK/err"; rc=$?
@@ -122,6 +138,46 @@ done
 "$SR" map --out "$WORK/plainfile" --nd 4 --nv 4 >/dev/null 2>"$WORK/err"; rc=$?
 [ $rc -eq 2 ] && grep -qF -- "--out: '$WORK/plainfile'" "$WORK/err" || fail "--out on a file: exit $rc, $(cat "$WORK/err")"
 [ ! -s "$WORK/plainfile" ] || fail "--out on a file changed the file"
+# the output folder (doc/snowregime.md, "Output folders"): one that holds a file
+# of someone else's and no .snowwall-output marker is refused before any work
+# (exit 2, the folder and one entry named); --force writes its files beside it
+# and deletes nothing; a folder the tool made gets the marker; a link is refused
+mkdir -p "$WORK/foreign" && echo mine >"$WORK/foreign/notes.txt"
+"$SR" map --out "$WORK/foreign" --nd 6 --nv 6 --no-plot >/dev/null 2>"$WORK/err"; rc=$?
+[ $rc -eq 2 ] && grep -qF -- "snowregime map: --out: '$WORK/foreign' is not empty and not a SnowWall output folder (holds 'notes.txt'); give --force to write into it" "$WORK/err" \
+    || fail "foreign --out: exit $rc, $(cat "$WORK/err")"
+[ "$(ls -A "$WORK/foreign")" = notes.txt ] || fail "foreign --out: files written: $(ls -A "$WORK/foreign")"
+"$SR" map --out "$WORK/foreign" --nd 6 --nv 6 --no-plot --force >/dev/null 2>"$WORK/err" || fail "foreign --out --force: $(cat "$WORK/err")"
+grep -qF -- "note: --force: writing into '$WORK/foreign'" "$WORK/err" || fail "foreign --out --force: no note"
+[ "$(cat "$WORK/foreign/notes.txt")" = mine ] && [ -s "$WORK/foreign/map.csv" ] && [ ! -e "$WORK/foreign/.snowwall-output" ] \
+    || fail "foreign --out --force: $(ls -A "$WORK/foreign")"
+"$SR" convergence --out "$WORK/foreign" --d 1e-5 --accuracy 20 --no-plot >/dev/null 2>"$WORK/err"; rc=$?
+[ $rc -eq 2 ] && grep -qF "holds 'fit.txt'" "$WORK/err" || fail "convergence into a foreign folder: exit $rc, $(cat "$WORK/err")"
+"$SR" map --out "$WORK/own" --nd 6 --nv 6 --no-plot >/dev/null 2>&1 || fail "map into a new folder"
+head -1 "$WORK/own/.snowwall-output" | grep -qx "SnowWall output folder" && grep -qx "tool: snowregime map" "$WORK/own/.snowwall-output" \
+    || fail "no marker in a folder map made"
+echo mine >"$WORK/own/notes.txt"
+"$SR" sensitivity --out "$WORK/own" --nd 4 --nv 4 --no-plot >/dev/null 2>"$WORK/err" || fail "sensitivity into an output folder: $(cat "$WORK/err")"
+[ "$(cat "$WORK/own/notes.txt")" = mine ] && [ -s "$WORK/own/sensitivity.csv" ] && [ -s "$WORK/own/map.csv" ] || fail "own folder: $(ls -A "$WORK/own")"
+ln -s "$WORK/own" "$WORK/ownlink"
+"$SR" map --out "$WORK/ownlink" --nd 6 --nv 6 --no-plot >/dev/null 2>"$WORK/err"; rc=$?
+[ $rc -eq 2 ] && grep -qF "is a symbolic link" "$WORK/err" || fail "--out a link: exit $rc, $(cat "$WORK/err")"
+# an output name taken by a FIFO or a /dev/full-like node: refused before the work, left as it was
+rm -f "$WORK/own/fit.txt"; mkfifo "$WORK/own/fit.txt"
+"$SR" map --out "$WORK/own" --nd 6 --nv 6 --no-plot >/dev/null 2>"$WORK/err"; rc=$?
+[ $rc -eq 2 ] && grep -qF "cannot write '$WORK/own/fit.txt': it exists and is a FIFO" "$WORK/err" && [ -p "$WORK/own/fit.txt" ] \
+    || fail "fit.txt a FIFO: exit $rc, $(cat "$WORK/err")"
+rm -f "$WORK/own/sensitivity.md"
+if mknod "$WORK/own/sensitivity.md" c 1 7 2>/dev/null; then
+    "$SR" sensitivity --out "$WORK/own" --nd 4 --nv 4 --no-plot >/dev/null 2>"$WORK/err"; rc=$?
+    [ $rc -eq 2 ] && grep -qF "it exists and is a character device" "$WORK/err" && [ -c "$WORK/own/sensitivity.md" ] \
+        || fail "sensitivity.md a device node: exit $rc, $(cat "$WORK/err")"
+fi
+[ -z "$(ls -A "$WORK/own" | grep '^\.tmp-')" ] || fail "temporaries left in $WORK/own"
+# a list out of order is taken in ascending order, with a note
+"$SR" vcrit --d 3e-5,1e-5 >"$WORK/vc" 2>"$WORK/err" || fail "vcrit --d 3e-5,1e-5: $(cat "$WORK/err")"
+grep -qx "snowregime vcrit: note: --d: '3e-5,1e-5' taken in ascending order" "$WORK/err" || fail "no ascending note: $(cat "$WORK/err")"
+[ "$(grep -v '^#' "$WORK/vc" | cut -f1 | tr '\n' ' ')" = "1e-05 3e-05 " ] || fail "vcrit --d 3e-5,1e-5: not ascending: $(cat "$WORK/vc")"
 # a failure after the folder exists leaves the old files untouched and no temporaries
 mkdir -p "$WORK/keep" && echo old >"$WORK/keep/fit.txt"
 "$SR" map --out "$WORK/keep" --set gamma=abc >/dev/null 2>&1

@@ -35,8 +35,23 @@ slerr "--cor" --out "$WORK/y" --cor
 [ ! -e "$WORK/y" ] || fail "snowlammps made its output folder on bad input"
 "$SL" --out "$WORK/y" --lmp /nonexistent/lmp --grid 1 --angles 0 --cases hertz >/dev/null 2>"$WORK/sle"
 [ $? -eq 1 ] && grep -q "nonexistent" "$WORK/sle" || fail "snowlammps with a missing lmp: not exit 1 naming it"
-[ ! -e "$WORK/y/.work" ] || fail "snowlammps left its work folder"
-command -v "${LMP:-lmp}" >/dev/null 2>&1 || { echo "SKIP: LAMMPS (lmp) not installed: etc/setup.sh --lammps"; exit 77; }
+[ ! -e "$WORK/y" ] || fail "snowlammps left its work folder or the output folder it made: $(ls -A "$WORK/y")"
+# the comma-list rule: a value or a case twice, an empty item refused; a list out
+# of order taken in ascending order with a note (here before lmp is found missing)
+slerr "gives the value 2 twice" --out "$WORK/y" --speeds-hertz 2,0.5,2
+slerr "names 'hertz' twice" --out "$WORK/y" --cases hertz,jkr,hertz
+slerr "'0,' has an empty item" --out "$WORK/y" --angles 0,
+"$SL" --out "$WORK/y" --lmp /nonexistent/lmp --speeds-hertz 2,0.5 >/dev/null 2>"$WORK/sle"
+grep -qx "snowlammps: note: --speeds-hertz: '2,0.5' taken in ascending order" "$WORK/sle" || fail "no ascending note: $(cat "$WORK/sle")"
+# the output folder: a foreign one refused before any work unless --force; a link refused
+mkdir -p "$WORK/fo" && echo mine >"$WORK/fo/notes.txt"
+slerr "is not empty and not a SnowWall output folder (holds 'notes.txt'); give --force" --out "$WORK/fo"
+"$SL" --out "$WORK/fo" --force --lmp /nonexistent/lmp >/dev/null 2>"$WORK/sle"
+[ $? -eq 1 ] && grep -q "note: --force" "$WORK/sle" && [ "$(ls -A "$WORK/fo")" = notes.txt ] || fail "snowlammps --force into a foreign folder: $(cat "$WORK/sle"); $(ls -A "$WORK/fo")"
+ln -s "$WORK/fo" "$WORK/folink"
+slerr "is a symbolic link" --out "$WORK/folink"
+# (a failure of the checks above is reported, not hidden by the skip)
+command -v "${LMP:-lmp}" >/dev/null 2>&1 || { [ "$FAILS" -eq 0 ] || finish; echo "SKIP: LAMMPS (lmp) not installed: etc/setup.sh --lammps"; exit 77; }
 "$LR" --help | grep -q "jkr-elastic" || fail "--help does not describe the cases"
 "$LR" --out "$WORK/q" --quick --check >"$WORK/q.log" 2>&1 || { cat "$WORK/q.log"; fail "lammps-rough.sh --quick --check exit $?"; }
 for f in summary.md impacts.csv report.txt times.txt; do

@@ -127,68 +127,13 @@ static void coeffs_file_reads_back(void **s)
     swt_interface_free(&it);
 }
 
-static int exists(const char *p)
-{
-    struct stat st;
-    return stat(p, &st) == 0;
-}
-
-static void outset_is_atomic(void **s)
-{
-    (void)s;
-    char base[] = "/tmp/test_swt_out_XXXXXX", dir[300], p[400];
-    assert_non_null(mkdtemp(base));
-    snprintf(dir, sizeof dir, "%s/a/b", base);
-    char err[300];
-    /* abort: temporaries and the folders it created are removed */
-    swt_outset *o = swt_outset_alloc(dir, err, sizeof err);
-    assert_non_null(o);
-    FILE *f = swt_outset_open(o, "x.csv", err, sizeof err);
-    assert_non_null(f);
-    fputs("1,2\n", f);
-    snprintf(p, sizeof p, "%s/.tmp-x.csv", dir);
-    assert_true(exists(p));
-    swt_outset_abort(o);
-    swt_outset_free(o);
-    assert_false(exists(p));
-    snprintf(p, sizeof p, "%s/a", base);
-    assert_false(exists(p));
-    assert_true(exists(base));
-    /* commit: final names appear, no temporaries */
-    o = swt_outset_alloc(dir, err, sizeof err);
-    f = swt_outset_open(o, "x.csv", err, sizeof err);
-    fputs("1,2\n", f);
-    assert_int_equal(swt_outset_commit(o, err, sizeof err), 0);
-    swt_outset_free(o);
-    snprintf(p, sizeof p, "%s/x.csv", dir);
-    assert_true(exists(p));
-    snprintf(p, sizeof p, "%s/.tmp-x.csv", dir);
-    assert_false(exists(p));
-    /* a registered output that was never produced fails the commit, nothing renamed */
-    o = swt_outset_alloc(dir, err, sizeof err);
-    f = swt_outset_open(o, "y.csv", err, sizeof err);
-    assert_non_null(swt_outset_add(o, "never.png", err, sizeof err));
-    assert_int_equal(swt_outset_commit(o, err, sizeof err), -1);
-    assert_non_null(strstr(err, "never.png"));
-    swt_outset_free(o);
-    snprintf(p, sizeof p, "%s/y.csv", dir);
-    assert_false(exists(p));
-    snprintf(p, sizeof p, "%s/.tmp-y.csv", dir);
-    assert_false(exists(p));
-    /* clean up */
-    snprintf(p, sizeof p, "%s/x.csv", dir); unlink(p);
-    rmdir(dir);
-    snprintf(p, sizeof p, "%s/a", base); rmdir(p);
-    rmdir(base);
-}
+/* the output sets and the comma lists: tests/common/test_swo.c */
 
 static void parse_is_strict(void **s)
 {
     (void)s;
     double v;
     long n;
-    double *l;
-    int k;
     char err[300];
     assert_int_equal(swt_parse_double("--x", "1.5e-3", 0, 1, &v, err, sizeof err), 0);
     assert_true(v == 1.5e-3);
@@ -203,14 +148,6 @@ static void parse_is_strict(void **s)
     assert_int_equal(n, 12);
     assert_int_equal(swt_parse_int("--n", "1.5", 2, 20, &n, err, sizeof err), -1);
     assert_int_equal(swt_parse_int("--n", "99999999999999999999", 2, 20, &n, err, sizeof err), -1);
-    assert_int_equal(swt_parse_list("--d", "1e-5,2e-5,3e-5", 0, 1, &l, &k, err, sizeof err), 0);
-    assert_int_equal(k, 3);
-    assert_true(l[2] == 3e-5);
-    free(l);
-    assert_int_equal(swt_parse_list("--d", "1e-5,,3e-5", 0, 1, &l, &k, err, sizeof err), -1);
-    assert_int_equal(swt_parse_list("--d", "1e-5,", 0, 1, &l, &k, err, sizeof err), -1);
-    assert_int_equal(swt_parse_list("--d", "1e-5,-2", 0, 1, &l, &k, err, sizeof err), -1);
-    assert_non_null(strstr(err, "'-2'"));
 }
 
 /* synthetic outcomes: sticks on the union of intervals [lo_k, hi_k) */
@@ -300,7 +237,6 @@ int main(void)
         cmocka_unit_test(fit_refuses_bad_input),
         cmocka_unit_test(fit_lowers_degree_when_not_monotone),
         cmocka_unit_test(coeffs_file_reads_back),
-        cmocka_unit_test(outset_is_atomic),
         cmocka_unit_test(parse_is_strict),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

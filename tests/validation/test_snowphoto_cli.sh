@@ -127,20 +127,41 @@ check "--label with '|' and newline: one row" "[ \$(wc -l < '$tmp/regions_l') = 
 check "--label with '|' and newline: escaped" "grep -qF '| a\\|b c\\\`d |' '$tmp/regions_l'"
 check "--label with '|': 6 columns" "[ \$(sed 's/\\\\|//g' '$tmp/regions_l' | tr -cd '|' | wc -c) = 7 ]"
 
+# --out onto a FIFO, a folder, a link or a /dev/full-like node made here (never a
+# system node): refused before any work (exit 2, named), each left as it was
+mkfifo "$tmp/fifo.png"; mkdir "$tmp/dir.png"; echo keep > "$tmp/target"; ln -s "$tmp/target" "$tmp/link.png"
+for t in "fifo.png|a FIFO" "dir.png|a folder" "link.png|a symbolic link"; do
+    "$exe" compare --photo "$tmp/photo.png" --corners $corners --sim "$tmp/sim.csv" --out "$tmp/${t%%|*}" \
+        > /dev/null 2> "$tmp/err"; rc=$?
+    check "--out onto ${t#*|}: exit 2, named" "[ $rc = 2 ] && grep -qF \"cannot write '$tmp/${t%%|*}': it exists and is ${t#*|}\" '$tmp/err'"
+done
+check "--out onto a FIFO, folder, link: left as they were" "[ -p '$tmp/fifo.png' ] && [ -d '$tmp/dir.png' ] && [ -L '$tmp/link.png' ] && [ \"\$(cat '$tmp/target')\" = keep ]"
+rm -rf "$tmp/fifo.png" "$tmp/dir.png" "$tmp/link.png" "$tmp/target"
+if mknod "$tmp/full.png" c 1 7 2> /dev/null; then
+    "$exe" compare --photo "$tmp/photo.png" --corners $corners --sim "$tmp/sim.csv" --out "$tmp/full.png" \
+        > /dev/null 2> "$tmp/err"; rc=$?
+    check "--out onto a device node: exit 2, named" "[ $rc = 2 ] && grep -qF 'is a character device' '$tmp/err'"
+    check "--out onto a device node: still a device" "[ -c '$tmp/full.png' ]"
+    rm -f "$tmp/full.png"
+fi
+"$exe" compare --photo "$tmp/photo.png" --corners $corners --sim "$tmp/sim.csv" --out "$tmp/no/such/x.png" \
+    > /dev/null 2> "$tmp/err"; rc=$?
+check "--out into a missing folder: exit 2, named" "[ $rc = 2 ] && grep -qF '$tmp/no/such/x.png' '$tmp/err'"
+
 # issue 13: an interrupted run leaves nothing (SIGTERM while the side-by-side PNG of
-# --res 4000, about 2 s, is being written: held, then the file removed)
+# --res 4000, about 2 s, is being written: its temporary removed by the handler)
 "$exe" compare --photo "$tmp/photo.png" --corners $corners --sim "$tmp/sim.csv" --res 4000 \
     --out "$tmp/int.png" > /dev/null 2>&1 &
 pid=$!
 for _ in $(seq 1000); do
-    ls "$tmp"/int.png.tmp* > /dev/null 2>&1 && break
+    ls -A "$tmp" | grep -q '^\.tmp-int\.png' && break
     kill -0 $pid 2> /dev/null || break
     sleep 0.01
 done
 kill -TERM $pid 2> /dev/null
 wait $pid; rc=$?
 check "SIGTERM while writing: ends by the signal" "[ $rc = 143 ]"
-check "SIGTERM while writing: no output, no temporary" "[ -z \"\$(ls '$tmp' | grep int.png)\" ]"
+check "SIGTERM while writing: no output, no temporary" "[ -z \"\$(ls -A '$tmp' | grep int.png)\" ]"
 
 # results that cannot be written (a full disk): exit 1 with a message, not 0
 if [ -w /dev/full ]; then
@@ -148,7 +169,7 @@ if [ -w /dev/full ]; then
     check "stdout on a full disk: exit 1" "[ $rc = 1 ] && grep -q 'standard output failed' '$tmp/err'"
 fi
 
-check "no temporary files left" "[ -z \"\$(ls '$tmp' | grep tmp)\" ]"
+check "no temporary files left" "[ -z \"\$(ls -A '$tmp' | grep tmp)\" ]"
 
 [ "$fails" = 0 ] || { echo "$fails check(s) failed"; exit 1; }
 echo "all checks passed"

@@ -2,11 +2,11 @@
  * with the C core's near-wall dispersion model, and the calibration of its
  * sublayer closure (doc/deposition.md). */
 #include "swc_channel.h"
+#include "swo_out.h"
 #include "swp_nearwall.h"
 
 #include <errno.h>
 #include <math.h>
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -50,17 +50,18 @@ static const char *usage =
 "    lambda+ = Vs+(tau+) / S, with Vs+ = max(0, V+_law - V+_crw) / c_s (c_s the\n"
 "    CRW's sublayer concentration over the mean), corrected once by a run with\n"
 "    the closure. It writes FILE (an OpenFOAM dictionary\n"
-"    depositionClosure { ... }, doc/deposition.md) through a temporary file\n"
-"    renamed at the end, and prints the table.\n"
+"    depositionClosure { ... }, doc/deposition.md) and prints the table.\n"
 "\n"
 "OPTIONS\n"
-"    --tau-plus LIST     comma-separated tau+ values, each in (0, 1e4], strictly\n"
-"                        increasing (default channel 0.1,0.3,1,3,10,30,100;\n"
-"                        calibrate 0.03,0.1,0.2,0.3,0.5,1,2,3,5,7,10,20,30,100,300)\n"
+"    --tau-plus LIST     comma-separated tau+ values, each in (0, 1e4], at most 64,\n"
+"                        each once, no empty item; a list out of order is taken in\n"
+"                        ascending order, with a note on stderr (default channel\n"
+"                        0.1,0.3,1,3,10,30,100; calibrate\n"
+"                        0.03,0.1,0.2,0.3,0.5,1,2,3,5,7,10,20,30,100,300)\n"
 "    --closure LAW       channel: calibrate the closure for LAW and use it\n"
 "    --law LAW           calibrate: wood (default) or mccoy-hanratty\n"
 "                        (3.5e-4 tau+^2 up to its plateau 0.17, as FDS uses it)\n"
-"    --out FILE          calibrate: the coefficients file to write\n"
+"    --out FILE          calibrate: the coefficients file to write (see OUTPUT)\n"
 "    --sublayer S        the closure's sublayer y+ < S, in (0, layerYPlus] (default 10)\n"
 "    --re-tau R          channel half-height in wall units, (10, 1e5] (default 314,\n"
 "                        Liu & Agarwal's pipe at Re = 10 000)\n"
@@ -80,6 +81,7 @@ static const char *usage =
 "                        CT, Cmu (wallmodel/core/swd.h)\n"
 "    --seed S            random seed, an integer >= 0 (default 1)\n"
 "    --force             run even when the work estimate is over the limit below\n"
+"                        (--out is a single file: there is no folder to force)\n"
 "    -h, --help          this text\n"
 "\n"
 "WORK LIMIT\n"
@@ -90,11 +92,19 @@ static const char *usage =
 "    exit 2, unless --force is given; over 4e8 steps (about 100 s) it prints\n"
 "    the estimate to stderr before it starts.\n"
 "\n"
+"OUTPUT\n"
+"    calibrate --out FILE: FILE appears whole or not at all: it is written to a\n"
+"    temporary in its folder (.tmp-NAME.XXXXXX), flushed and closed with every\n"
+"    error checked (a full disk is exit 1, the temporary removed) and renamed\n"
+"    over FILE at the end. Checked before any work: FILE's folder must exist\n"
+"    and be writable, and FILE is replaced only when it is absent or a regular\n"
+"    file: a folder, device (/dev/full, /dev/null), FIFO, socket or symbolic link\n"
+"    there is refused (exit 2) and left as it is.\n"
+"\n"
 "EXIT STATUS\n"
 "    0 success, 2 usage or input error (one line naming the option and the value),\n"
 "    1 other failure. Interrupted (SIGINT, SIGTERM, SIGHUP), calibrate leaves no\n"
-"    file: the signal ends the run at once, and one that comes while FILE is\n"
-"    written is held until the temporary file is removed.\n"
+"    file: the temporary is removed and the signal ends the run.\n"
 "\n"
 "EXAMPLES\n"
 "    snowdeposit channel --tau-plus 1,10 --particles 4000\n"
@@ -134,27 +144,23 @@ static int number(const char *opt, const char *s, double *v)
     return 0;
 }
 
+/* --tau-plus: the comma-list rule of every tool (swo_out.h): no empty item,
+ * each value once, taken in ascending order with a note */
 static int parse_list(const char *opt, const char *s, double *v, size_t *n)
 {
-    char buf[1024];
-    if (strlen(s) >= sizeof buf)
-        return usage_error("%s: the list '%.40s...' is too long", opt, s);
-    strcpy(buf, s);
-    *n = 0;
-    char *save = NULL;
-    for (char *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
-        if (*n >= MAXTAU)
-            return usage_error("%s: more than 64 values in '%s'", opt, s);
-        if (number(opt, t, &v[*n]))
-            return 2;
-        if (!(v[*n] > 0.0 && v[*n] <= 1e4))
-            return usage_error("%s: %s is outside (0, 1e4]", opt, t);
-        if (*n > 0 && !(v[*n] > v[*n - 1]))
-            return usage_error("%s: '%s' is not strictly increasing", opt, s);
-        (*n)++;
+    double *x = NULL;
+    int k = 0;
+    char note[600], err[600];
+    if (swo_list_numbers(opt, s, 0.0, 1e4, 1, MAXTAU, &x, &k, note, sizeof note, err,
+                         sizeof err) != SWO_OK) {
+        fprintf(stderr, "snowdeposit: %s (see snowdeposit --help)\n", err);
+        return 2;
     }
-    if (*n == 0)
-        return usage_error("%s: '%s' holds no value", opt, s);
+    if (note[0])
+        fprintf(stderr, "snowdeposit: note: %s\n", note);
+    memcpy(v, x, (size_t)k * sizeof *v);
+    *n = (size_t)k;
+    free(x);
     return 0;
 }
 
@@ -184,30 +190,14 @@ static double radius_plus(double tau_plus)
     return 0.5 * d * 1.0 / nu;
 }
 
-static int write_coeffs(const opts *o, const swd_model *m, const double *vs, const double *law,
-                        const double *vcrw, const double *vcrw_se, const double *cs)
+/* FILE through the common writer (the set `o` opened and FILE checked before the work) */
+static int write_coeffs(const opts *o, swo_set *set, const swd_model *m, const double *vs,
+                        const double *law, const double *vcrw, const double *vcrw_se,
+                        const double *cs)
 {
-    char tmp[4096];
-    if (snprintf(tmp, sizeof tmp, "%s.tmpXXXXXX", o->out) >= (int)sizeof tmp) {
-        fprintf(stderr, "snowdeposit: --out: '%s' is too long\n", o->out);
-        return 2;
-    }
-    sigset_t block, old;
-    sigemptyset(&block);
-    sigaddset(&block, SIGINT);
-    sigaddset(&block, SIGTERM);
-    sigaddset(&block, SIGHUP);
-    sigprocmask(SIG_BLOCK, &block, &old);
-    const int fd = mkstemp(tmp);
-    if (fd < 0) {
-        sigprocmask(SIG_SETMASK, &old, NULL);
-        fprintf(stderr, "snowdeposit: --out %s: cannot create a file there (%s)\n", o->out,
-                strerror(errno));
-        return 2;
-    }
-    FILE *f = fdopen(fd, "w");
-    int ok = f != NULL;
-    if (ok) {
+    char err[600];
+    FILE *f = swo_open(set, o->out, err, sizeof err);
+    if (f) {
         fprintf(f, "// SnowWall near-wall dispersion: sublayer deposition closure\n"
                    "// written by: snowdeposit calibrate (doc/deposition.md)\n"
                    "// channel Re_tau %g, %zu particles, window t+ %g, seed %lu\n\n",
@@ -231,25 +221,10 @@ static int write_coeffs(const opts *o, const swd_model *m, const double *vs, con
             fprintf(f, " );\n");
         }
         fprintf(f, "}\n");
-        ok = !ferror(f);
-        ok = (fclose(f) == 0) && ok;
-    } else {
-        close(fd);
     }
-    /* a signal that came while the file was written: no file, then the
-       signal ends the run when it is unblocked */
-    sigset_t pend;
-    sigpending(&pend);
-    const int interrupted = sigismember(&pend, SIGINT) || sigismember(&pend, SIGTERM)
-                            || sigismember(&pend, SIGHUP);
-    if (ok && !interrupted)
-        ok = rename(tmp, o->out) == 0;
-    if (!ok || interrupted)
-        unlink(tmp);
-    sigprocmask(SIG_SETMASK, &old, NULL);
-    if (!ok) {
-        fprintf(stderr, "snowdeposit: --out %s: writing failed (%s)\n", o->out, strerror(errno));
-        return 1;
+    if (!f || swo_commit(set, err, sizeof err) != SWO_OK) {
+        fprintf(stderr, "snowdeposit: --out: %s\n", err);
+        return swo_code(set);
     }
     return 0;
 }
@@ -316,8 +291,11 @@ static int parse(int argc, char **argv, opts *o, swd_model *m)
                 return 2;
             const double hi = !strcmp(a, "--seed") ? 4294967295.0 : 1e8;
             const double lo = !strcmp(a, "--seed") ? 0.0 : 1.0;
-            if (x != floor(x) || x < lo || x > hi)
-                return usage_error("%s: %s is not an integer in range (see --help)", a, v);
+            if (x != floor(x) || x < lo || x > hi) {
+                fprintf(stderr, "snowdeposit: %s: %s is not an integer in [%.0f, %.10g] (see "
+                        "snowdeposit --help)\n", a, v, lo, hi);
+                return 2;
+            }
             if (!strcmp(a, "--seed"))
                 o->p.seed = (unsigned long)x;
             else
@@ -376,6 +354,7 @@ int main(int argc, char **argv)
         return 0;
     }
     const int cal = !strcmp(argv[1], "calibrate");
+    swo_signals_on();   /* interrupted, calibrate leaves no temporary behind */
     if (!cal && strcmp(argv[1], "channel"))
         return usage_error("unknown command '%s'%s (channel, calibrate)", argv[1], "");
 
@@ -422,25 +401,20 @@ int main(int argc, char **argv)
         return usage_error("--closure is an option of channel, not of calibrate (calibrate --law %s "
                            "names the law to calibrate for)%s", o.closure, "");
     }
+    /* calibrate's FILE: its folder takes files and FILE is absent or a regular
+       file, checked before the work */
+    swo_set *set = NULL;
     if (cal) {
-        /* the folder of FILE must take a file, checked before the work */
-        char dir[4096];
-        const char *slash = strrchr(o.out, '/');
-        if (strlen(o.out) >= sizeof dir - 16 || !*o.out) {
+        char err[600];
+        const swo_spec spec = { "snowdeposit calibrate", "--out", NULL, 0, 0 };
+        int c = swo_alloc(&spec, &set, err, sizeof err);
+        if (c == SWO_OK)
+            c = swo_check(set, o.out, err, sizeof err);
+        if (c != SWO_OK) {
+            fprintf(stderr, "snowdeposit: --out: %s\n", err);
+            swo_free(set);
             swd_free(m);
-            return usage_error("--out: '%.60s' is not a usable file name%s", o.out, "");
-        }
-        if (slash) {
-            memcpy(dir, o.out, (size_t)(slash - o.out));
-            dir[slash == o.out ? 1 : slash - o.out] = '\0';
-        } else {
-            strcpy(dir, ".");
-        }
-        if (access(dir, W_OK | X_OK) != 0) {
-            fprintf(stderr, "snowdeposit: --out %s: cannot write into '%s' (%s)\n", o.out, dir,
-                    strerror(errno));
-            swd_free(m);
-            return 2;
+            return c;
         }
     }
     /* the work, estimated from below before any of it (hostile sweep, issue 22: 1e8
@@ -457,6 +431,7 @@ int main(int argc, char **argv)
                     "the limit is 1e10 steps (about 40 min): use fewer particles or a shorter "
                     "window, or --force\n",
                     steps, o.p.n, o.p.t_warm, o.p.t_run, o.p.dt_max, o.ntau, runs, sec / 3600.0);
+            swo_free(set);
             swd_free(m);
             return 2;
         }
@@ -479,6 +454,7 @@ int main(int argc, char **argv)
                            err, sizeof err);
         if (rc) {
             fprintf(stderr, "snowdeposit: %s\n", err);
+            swo_free(set);
             swd_free(m);
             return rc == -1 ? 2 : 1;
         }
@@ -491,7 +467,8 @@ int main(int argc, char **argv)
         for (size_t i = 0; i < n; i++)
             printf("%10.4g %12.4e %12.4e %10.2e %10.3f %12.4e\n", o.tau[i], law[i], vcrw[i],
                    vcrw_se[i], cs[i], vs[i]);
-        rc = write_coeffs(&o, m, vs, law, vcrw, vcrw_se, cs);
+        rc = write_coeffs(&o, set, m, vs, law, vcrw, vcrw_se, cs);
+        swo_free(set);
         swd_free(m);
         return rc;
     }

@@ -336,25 +336,14 @@ static double ekin_l(const swl_lres *l, double I)
     return 0.5 * (l->v[0] * l->v[0] + l->v[2] * l->v[2]) + 0.5 * I * l->w[1] * l->w[1];
 }
 
-/* write `text` to dir/name through a temporary file and a rename */
-static int write_file(const char *dir, const char *name, const char *text, size_t len, char *err,
+/* `text` as dir/name in the output set (swo_out.h: whole or not at all) */
+static int write_file(swo_set *set, const char *name, const char *text, size_t len, char *err,
                       size_t n)
 {
-    char path[4200], tmp[4300];
-    snprintf(path, sizeof path, "%s/%s", dir, name);
-    snprintf(tmp, sizeof tmp, "%s/.%s.tmp%ld", dir, name, (long)getpid());
-    FILE *f = fopen(tmp, "w");
-    if (!f) return fail(err, n, "%s: %s", tmp, strerror(errno));
-    const int bad = fwrite(text, 1, len, f) != len;
-    if (bad | (fclose(f) != 0)) {
-        remove(tmp);
-        return fail(err, n, "%s: write error", tmp);
-    }
-    if (rename(tmp, path) != 0) {
-        const int e = errno;
-        remove(tmp);
-        return fail(err, n, "%s: rename failed (%s)", path, strerror(e));
-    }
+    FILE *f = swo_open(set, name, err, n);
+    if (!f) return -1;
+    if (len && fwrite(text, 1, len, f) != len)
+        return fail(err, n, "%s: write error", swo_final(set, name));
     return 0;
 }
 
@@ -399,12 +388,12 @@ int swl_compare_run(const swl_opts *a, FILE *report, char *err, size_t errlen)
     const double t_start = swl_now();
     swl_model m;
     if (swl_model_init(&m, a->d, err, errlen) != 0) return -1;
+    /* the folder is the output set's (made or checked by the caller); LAMMPS's
+     * work files go to a folder of this run's own in it, never one that was there */
     char work[4200];
-    snprintf(work, sizeof work, "%s/.work", a->out);
-    if (mkdir(a->out, 0755) != 0 && errno != EEXIST)
-        return fail(err, errlen, "--out: cannot make '%s' (%s)", a->out, strerror(errno));
-    if (mkdir(work, 0755) != 0 && errno != EEXIST)
-        return fail(err, errlen, "cannot make '%s' (%s)", work, strerror(errno));
+    snprintf(work, sizeof work, "%s/.work-XXXXXX", a->out);
+    if (!mkdtemp(work))
+        return fail(err, errlen, "cannot make a work folder in '%s' (%s)", a->out, strerror(errno));
     swl_lammps L = { a->lmp, a->deck, work, &m, a->lmp_steps, 100.0, 0, 0.0, 0 };
     swl_ours O;
     memset(&O, 0, sizeof O);
@@ -598,8 +587,9 @@ int swl_compare_run(const swl_opts *a, FILE *report, char *err, size_t errlen)
         rc = fail(err, errlen, "out of memory");
         goto done;
     }
-    if (write_file(a->out, "impacts.csv", cbuf, clen, err, errlen) ||
-        write_file(a->out, "summary.md", sbuf, slen, err, errlen)) {
+    if (write_file(a->set, "impacts.csv", cbuf, clen, err, errlen) ||
+        write_file(a->set, "summary.md", sbuf, slen, err, errlen) ||
+        (rmdir(work), swo_commit(a->set, err, errlen) != SWO_OK)) {
         free(bad);
         rc = -1;
         goto done;

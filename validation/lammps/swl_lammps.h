@@ -17,6 +17,7 @@
 #ifndef SWL_LAMMPS_H
 #define SWL_LAMMPS_H
 
+#include "swo_out.h"
 #include <stddef.h>
 #include <stdio.h>
 
@@ -137,6 +138,8 @@ enum { SWL_HERTZ = 0, SWL_JKR_ELASTIC, SWL_JKR };
 
 typedef struct {
     const char *out;      /* output folder */
+    swo_set *set;         /* its output set (swo_out.h), opened by the caller */
+    int force;            /* --force: write into a foreign folder */
     const char *lmp, *deck;
     double d;
     int grid;
@@ -149,7 +152,9 @@ typedef struct {
     double tol_v, tol_w, tol_e, tol_vz_jkr;
 } swl_opts;
 
-/* The whole comparison: outputs summary.md and impacts.csv in o->out, the
+/* The whole comparison: outputs summary.md and impacts.csv in o->out (through
+ * o->set, committed here; the work files of LAMMPS in a folder .work-XXXXXX of
+ * its own there, removed at the end), the
  * summary and the impacts outside the tolerances on `report`. Returns 0 (all
  * within), 3 (some outside), or -1 with a message (a run failed). */
 int swl_compare_run(const swl_opts *o, FILE *report, char *err, size_t errlen);

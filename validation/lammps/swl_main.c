@@ -1,6 +1,7 @@
 /* swl_main.c - snowlammps: the rough-wall impacts of the kernel checked against
  * LAMMPS (issue 24); options, help, exit status. The work is in swl_compare.c. */
 #include "swl_lammps.h"
+#include "swo_out.h"
 
 #include <errno.h>
 #include <limits.h>
@@ -16,7 +17,7 @@ static const char *usage =
 "    snowlammps - the rough-wall impacts of the kernel checked against LAMMPS (issue 24)\n"
 "\n"
 "SYNOPSIS\n"
-"    snowlammps --out DIR [--lmp LMP] [--deck FILE] [--d D] [--grid K] [--angles LIST]\n"
+"    snowlammps --out DIR [--force] [--lmp LMP] [--deck FILE] [--d D] [--grid K] [--angles LIST]\n"
 "               [--speeds-hertz LIST] [--speeds-jkr LIST] [--cases LIST] [--cor E]\n"
 "               [--lmp-steps N] [--halve] [--no-single] [--tol-v T] [--tol-w T]\n"
 "               [--tol-e T] [--tol-vz-jkr T]\n"
@@ -53,8 +54,11 @@ static const char *usage =
 "    the closed forms.\n"
 "\n"
 "OPTIONS\n"
-"    --out DIR            output folder (made when missing; its parent must exist);\n"
-"                         its files are replaced, each whole (temporary file, rename)\n"
+"    --out DIR            output folder (made when missing; its parent must exist):\n"
+"                         see OUTPUT for the folders it takes\n"
+"    --force              write into a DIR that is not empty and not a SnowWall\n"
+"                         output folder (its impacts.csv and summary.md are\n"
+"                         replaced, nothing else is touched, no marker is added)\n"
 "    --lmp LMP            the LAMMPS binary, a path or a name on PATH (default lmp)\n"
 "    --deck FILE          LAMMPS input deck of one impact (default\n"
 "                         ../validation/lammps/impact.lmp beside this program's folder,\n"
@@ -65,10 +69,13 @@ static const char *usage =
 "    --angles LIST        impact angles from the normal [deg] (default 0,30,60; each\n"
 "                         in [0, 80]): v_n = V cos, v_t = V sin (along +x)\n"
 "    --speeds-hertz LIST  impact speeds V of the hertz case [m/s] (default 0.5,2);\n"
-"                         the first is the speed of the COR calibration\n"
+"                         the smallest is the speed of the COR calibration\n"
 "    --speeds-jkr LIST    impact speeds V of the jkr cases [m/s] (default 0.3,1);\n"
-"                         each speed in (0, 20]; every list at most 16 numbers\n"
-"    --cases LIST         hertz, jkr-elastic, jkr (default hertz,jkr)\n"
+"                         each speed in (0, 20]; every list at most 16 numbers,\n"
+"                         each once, no empty item; a list out of order is taken\n"
+"                         in ascending order, with a note on stderr\n"
+"    --cases LIST         hertz, jkr-elastic, jkr (default hertz,jkr), each once,\n"
+"                         run in the order given\n"
 "    --cor E              the constant COR of the damped cases (default 0.7; 0.3 .. 0.95)\n"
 "    --lmp-steps N        LAMMPS steps per flat-wall Hertz contact time (default 100;\n"
 "                         20 .. 2000); the kernel keeps its own `accuracy` (60)\n"
@@ -94,6 +101,14 @@ static const char *usage =
 "    after 100 flat-wall contact times.\n"
 "\n"
 "OUTPUT\n"
+"    DIR is a SnowWall output folder (it holds .snowwall-output: tool, time): made\n"
+"    when missing, or an empty folder, or one that holds the marker; a folder\n"
+"    holding anything else is refused before any work (exit 2) unless --force; a\n"
+"    symbolic link or a non-folder is refused. Each file appears whole or not at\n"
+"    all (a temporary in DIR, every write error checked, renamed at the end); a\n"
+"    folder, device, FIFO, socket or link at a file's name is refused and left.\n"
+"    Files of other names in DIR are never touched. LAMMPS works in DIR/.work-XXXXXX,\n"
+"    a folder of the run's own, removed at the end.\n"
 "    DIR/summary.md   the calibration table and one row per case, speed and angle:\n"
 "                     outcomes, contacts, the largest deviations, the step-halving\n"
 "                     changes, the energy check, the count within the tolerances;\n"
@@ -113,7 +128,7 @@ static const char *usage =
 "EXIT STATUS\n"
 "    0  done, every impact within the tolerances\n"
 "    1  a run failed (lmp missing or failing, no or a NaN result, an output not written)\n"
-"    2  usage error (the option and the value are named)\n"
+"    2  usage error (the option and the value are named), a refused --out\n"
 "    3  done, some impact outside the tolerances (listed on standard output)\n"
 "\n"
 "EXAMPLES\n"
@@ -147,26 +162,20 @@ static int num(const char *opt, const char *s, double lo, double hi, int lo_open
     return 0;
 }
 
+/* a comma list of numbers: the rule of every tool (swo_out.h) */
 static int list(const char *opt, const char *s, double lo, double hi, int lo_open, double *v, int *n)
 {
-    const size_t len = strlen(s);
-    if (len == 0 || len > 400 || s[0] == ',' || s[len - 1] == ',' || strstr(s, ",,")) {
-        usage_error("%s '%s' is not a comma list of numbers", opt, s);
+    double *x = NULL;
+    char note[600], err[600];
+    if (swo_list_numbers(opt, s, lo, hi, lo_open, SWL_MAXLIST, &x, n, note, sizeof note, err,
+                         sizeof err) != SWO_OK) {
+        fprintf(stderr, "snowlammps: %s (see snowlammps --help)\n", err);
         return -1;
     }
-    char buf[404], *save = NULL;
-    memcpy(buf, s, len + 1);
-    *n = 0;
-    for (char *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
-        if (*n == SWL_MAXLIST) {
-            usage_error("%s '%s': more than 16 numbers", opt, s);
-            return -1;
-        }
-        char what[120];
-        snprintf(what, sizeof what, "%s (in '%.60s')", opt, s);
-        if (num(what, t, lo, hi, lo_open, &v[*n]) != 0) return -1;
-        (*n)++;
-    }
+    if (note[0])
+        fprintf(stderr, "snowlammps: note: %s\n", note);
+    memcpy(v, x, (size_t)*n * sizeof *v);
+    free(x);
     return 0;
 }
 
@@ -214,6 +223,7 @@ int main(int argc, char **argv)
         }
         if (strcmp(a, "--halve") == 0) { o.halve = 1; continue; }
         if (strcmp(a, "--no-single") == 0) { o.no_single = 1; continue; }
+        if (strcmp(a, "--force") == 0) { o.force = 1; continue; }
         static const char *valued[] = { "--out", "--lmp", "--deck", "--d", "--grid", "--angles",
                                          "--speeds-hertz", "--speeds-jkr", "--cases", "--cor",
                                          "--lmp-steps", "--tol-v", "--tol-w", "--tol-e",
@@ -255,19 +265,12 @@ int main(int argc, char **argv)
         list("--speeds-jkr", o.speeds_j_s, 0, 20, 1, o.speeds_j, &o.nspeeds_j))
         return 2;
     {
-        const size_t len = strlen(cases_s);
-        if (len == 0 || len > 400 || cases_s[0] == ',' || cases_s[len - 1] == ',' || strstr(cases_s, ",,"))
-            return usage_error("--cases '%s' is not a comma list of cases%s", cases_s, "");
-        char buf[404], *save = NULL;
-        memcpy(buf, cases_s, len + 1);
-        for (char *t = strtok_r(buf, ",", &save); t; t = strtok_r(NULL, ",", &save)) {
-            int c = strcmp(t, "hertz") == 0 ? SWL_HERTZ : strcmp(t, "jkr-elastic") == 0 ? SWL_JKR_ELASTIC
-                  : strcmp(t, "jkr") == 0 ? SWL_JKR : -1;
-            if (c < 0)
-                return usage_error("--cases: unknown case '%s' (hertz, jkr-elastic, jkr)%s", t, "");
-            if (o.ncases == SWL_MAXLIST)
-                return usage_error("--cases '%s': more than 16 cases%s", cases_s, "");
-            o.cases[o.ncases++] = c;
+        static const char *const names[] = { "hertz", "jkr-elastic", "jkr", NULL };
+        char err[600];
+        if (swo_list_words("--cases", cases_s, names, SWL_MAXLIST, o.cases, &o.ncases, err,
+                           sizeof err) != SWO_OK) {
+            fprintf(stderr, "snowlammps: %s (see snowlammps --help)\n", err);
+            return 2;
         }
     }
     if (!deck[0]) default_deck(deck, sizeof deck);
@@ -276,9 +279,26 @@ int main(int argc, char **argv)
         fprintf(stderr, "snowlammps: --deck: cannot read '%s' (%s)\n", deck, strerror(errno));
         return 1;
     }
-    setenv("OMPI_MCA_pml", "ob1", 0); /* single process: skip UCX probing (halves start-up) */
+    /* the output folder (swo_out.h: made, or empty, or a SnowWall output folder;
+     * a foreign one only with --force) and its file names, checked before any work */
     static char err[SWL_ERRLEN];
+    {
+        const swo_spec spec = { "snowlammps", "--out", o.out, o.force, 0 };
+        int c = swo_alloc(&spec, &o.set, err, sizeof err);
+        if (c == SWO_OK && (c = swo_check(o.set, "impacts.csv", err, sizeof err)) == SWO_OK)
+            c = swo_check(o.set, "summary.md", err, sizeof err);
+        if (c != SWO_OK) {
+            fprintf(stderr, "snowlammps: %s\n", err);
+            swo_free(o.set);
+            return c;
+        }
+        if (swo_note(o.set))
+            fprintf(stderr, "snowlammps: note: %s\n", swo_note(o.set));
+    }
+    swo_signals_on();
+    setenv("OMPI_MCA_pml", "ob1", 0); /* single process: skip UCX probing (halves start-up) */
     const int rc = swl_compare_run(&o, stdout, err, sizeof err);
+    swo_free(o.set);   /* after a failure: its temporaries and the folder it made removed */
     if (fflush(stdout) != 0 || ferror(stdout)) {
         fprintf(stderr, "snowlammps: standard output: write error\n");
         return 1;

@@ -1,5 +1,6 @@
 /* swcs_book.c - host-neutral bookkeeping of a SnowWall host binding (swcs_book.h). */
 #include "swcs_book.h"
+#include "swo_out.h"
 
 #include <errno.h>
 #include <math.h>
@@ -241,41 +242,41 @@ size_t swcs_book_summary(const swcs_book *b, const char *prefix, char *buf, size
     return len;
 }
 
-/* open path".tmp" for writing; on success *tmp holds its name */
-static FILE *open_tmp(swcs_book *b, const char *path, char *tmp, size_t n)
+/* One CSV file through the common output writer (swo_out.h): a temporary in
+ * its folder, every write error checked, renamed over path only when path is
+ * absent or a regular file; no signal handler (this runs inside the host). */
+static FILE *open_out(swcs_book *b, const char *path, swo_set **set)
 {
+    char err[600];
+    *set = NULL;
     if (!path || !path[0]) {
         fail(b, SWW_EIO, "no output path given");
         return NULL;
     }
-    if ((size_t)snprintf(tmp, n, "%s.tmp", path) >= n) {
-        fail(b, SWW_EIO, "output path '%.60s...' is too long", path);
-        return NULL;
+    const swo_spec spec = { "Code_Saturne SnowWall binding", "output", NULL, 0, 0 };
+    FILE *f = NULL;
+    if (swo_alloc(&spec, set, err, sizeof err) == SWO_OK)
+        f = swo_open(*set, path, err, sizeof err);
+    if (!f) {
+        fail(b, SWW_EIO, "%s", err);
+        swo_free(*set);
+        *set = NULL;
     }
-    FILE *f = fopen(tmp, "w");
-    if (!f) fail(b, SWW_EIO, "cannot write '%s': %s", tmp, strerror(errno));
     return f;
 }
 
-static int close_rename(swcs_book *b, FILE *f, const char *tmp, const char *path)
+static int close_out(swcs_book *b, swo_set *set)
 {
-    const int bad = ferror(f);
-    if (fclose(f) != 0 || bad) {
-        remove(tmp);
-        return fail(b, SWW_EIO, "cannot write '%s' (disk full?)", tmp);
-    }
-    if (rename(tmp, path) != 0) {
-        const int e = errno;
-        remove(tmp);
-        return fail(b, SWW_EIO, "cannot rename '%s' to '%s': %s", tmp, path, strerror(e));
-    }
-    return SWW_OK;
+    char err[600];
+    const int rc = swo_commit(set, err, sizeof err);
+    swo_free(set);
+    return rc == SWO_OK ? SWW_OK : fail(b, SWW_EIO, "%s", err);
 }
 
 int swcs_book_write_counts(swcs_book *b, const char *path, double time, long step)
 {
-    char tmp[4096];
-    FILE *f = open_tmp(b, path, tmp, sizeof tmp);
+    swo_set *set;
+    FILE *f = open_out(b, path, &set);
     if (!f) return SWW_EIO;
     fprintf(f, "time,step,zone,type,impacts,sticks,bounces,ripoffs,escapes,outside,"
                "deposited_kg,escaped_kg\n");
@@ -286,14 +287,14 @@ int swcs_book_write_counts(swcs_book *b, const char *path, double time, long ste
                 z->name, swcs_type_name(z->type), z->impacts, z->sticks, z->bounces, z->ripoffs,
                 z->escapes, z->outside, z->mass_deposited, z->mass_escaped);
     }
-    return close_rename(b, f, tmp, path);
+    return close_out(b, set);
 }
 
 int swcs_book_write_deposit(swcs_book *b, const char *path, const long long *face_num,
                             const double *cog, const double *area, const int *face_zone)
 {
-    char tmp[4096];
-    FILE *f = open_tmp(b, path, tmp, sizeof tmp);
+    swo_set *set;
+    FILE *f = open_out(b, path, &set);
     if (!f) return SWW_EIO;
     fprintf(f, "face,zone,x,y,z,area_m2,deposit_kg,deposit_kg_m2\n");
     for (size_t i = 0; i < b->n_faces; ++i) {
@@ -305,5 +306,5 @@ int swcs_book_write_deposit(swcs_book *b, const char *path, const long long *fac
                 cog[3 * i + 1], cog[3 * i + 2], a, b->deposit[i],
                 a > 0 ? b->deposit[i] / a : 0.0);
     }
-    return close_rename(b, f, tmp, path);
+    return close_out(b, set);
 }

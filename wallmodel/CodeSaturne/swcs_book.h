@@ -101,14 +101,18 @@ size_t swcs_book_summary(const swcs_book *b, const char *prefix, char *buf, size
 /* CSV of the zone counts at one output time:
  *   time,step,zone,type,impacts,sticks,bounces,ripoffs,escapes,outside,
  *   deposited_kg,escaped_kg
- * written to path".tmp" and renamed to path. SWW_EIO naming the path and the
- * system's reason when it cannot be written. */
+ * written through the common output writer (common/swo_out.h): a temporary
+ * in path's folder, renamed to path once whole; path is replaced only when it
+ * is absent or a regular file. SWW_EIO naming the path and the reason when it
+ * cannot be written (a missing or unwritable folder, a folder, device, FIFO
+ * or link at path, a full disk): the temporary is removed, path untouched.
+ * No signal handler is installed (this runs inside the host process). */
 int swcs_book_write_counts(swcs_book *b, const char *path, double time, long step);
 
 /* CSV of the deposit per face of the snow zones at one output time:
  *   face,zone,x,y,z,area_m2,deposit_kg,deposit_kg_m2
  * face_num: the face's number to print (global numbering, NULL: the index);
- * cog: 3 coordinates per face; area: per face [m2]. Temp file, then rename. */
+ * cog: 3 coordinates per face; area: per face [m2]. Written as the counts. */
 int swcs_book_write_deposit(swcs_book *b, const char *path, const long long *face_num,
                             const double *cog, const double *area, const int *face_zone);
 
