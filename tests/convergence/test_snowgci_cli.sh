@@ -117,12 +117,23 @@ check "one table only" "$G3" "$WORK/good.csv"
 "$G" "$WORK/none.csv" >/dev/null 2>"$WORK/err"; [ $? -eq 2 ] && grep -q "none.csv: cannot open" "$WORK/err" \
     && ok "missing file named" || fail "missing file: $(cat "$WORK/err")"
 "$G" --md "$WORK/no/such/x.md" "$WORK/good.csv" >"$WORK/bout" 2>"$WORK/err"
-[ $? -eq 2 ] && grep -q "no/such/x.md: cannot create" "$WORK/err" && [ ! -s "$WORK/bout" ] \
+[ $? -eq 2 ] && grep -q "cannot write .*no/such/x.md.*No such file" "$WORK/err" && [ ! -s "$WORK/bout" ] \
     && ok "--md in a missing folder: refused, nothing printed" || fail "--md missing folder: $(cat "$WORK/err")"
 # an existing markdown file is replaced whole only on success
 echo keep >"$WORK/keep.md"
 printf '%b' "$H"'q,a,0.1,nan,0\n' >"$WORK/bad.csv"
 "$G" --md "$WORK/keep.md" "$WORK/bad.csv" >/dev/null 2>&1
 [ "$(cat "$WORK/keep.md")" = keep ] && ok "a failed run leaves the old file" || fail "old file changed"
+
+# --md onto a FIFO or a device node made here (a /dev/full-like node): refused, left as it was
+mkfifo "$WORK/fifo.md"
+"$G" --md "$WORK/fifo.md" "$WORK/good.csv" >/dev/null 2>"$WORK/err"
+[ $? -eq 2 ] && [ -p "$WORK/fifo.md" ] && grep -q "fifo.md" "$WORK/err" \
+    && ok "--md onto a FIFO refused, the FIFO kept" || fail "--md FIFO: $(cat "$WORK/err")"
+if mknod "$WORK/full.md" c 1 7 2>/dev/null; then
+    "$G" --md "$WORK/full.md" "$WORK/good.csv" >/dev/null 2>"$WORK/err"
+    [ $? -eq 2 ] && [ -c "$WORK/full.md" ] && grep -q "full.md" "$WORK/err" \
+        && ok "--md onto a device node refused, the node kept" || fail "--md device: $(cat "$WORK/err")"
+fi
 
 if [ "$FAILS" -eq 0 ]; then echo "PASS"; exit 0; else echo "$FAILS failure(s)"; exit 1; fi

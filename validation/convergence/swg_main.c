@@ -2,6 +2,7 @@
  * table of levels (doc/convergence.md). */
 #include "swg_gci.h"
 #include "swg_table.h"
+#include "swo_out.h"
 
 #include <errno.h>
 #include <math.h>
@@ -447,52 +448,25 @@ static void write_md(FILE *f, const qres *qs, size_t n, const opts *o, const cha
                     qs[i].lv[j].se);
 }
 
-/* FILE through a temporary beside it, renamed at the end; a signal while it is
-   written is held until the temporary is gone */
+/* FILE through the project's output writer (common/swo_out.h): a temporary
+   beside it, renamed at the end; never over a folder, device, FIFO or link */
 static int md_file(const opts *o, const qres *qs, size_t n)
 {
-    char tmp[4096];
-    if (snprintf(tmp, sizeof tmp, "%s.tmpXXXXXX", o->md) >= (int)sizeof tmp) {
-        fprintf(stderr, "snowgci: --md: '%.40s...' is too long\n", o->md);
-        return 2;
-    }
-    sigset_t block, old;
-    sigemptyset(&block);
-    sigaddset(&block, SIGINT);
-    sigaddset(&block, SIGTERM);
-    sigaddset(&block, SIGHUP);
-    sigprocmask(SIG_BLOCK, &block, &old);
-    const int fd = mkstemp(tmp);
-    if (fd < 0) {
-        const int e = errno;
-        sigprocmask(SIG_SETMASK, &old, NULL);
-        fprintf(stderr, "snowgci: --md %s: cannot create a file there (%s)\n", o->md, strerror(e));
-        return 2;
-    }
-    const mode_t mask = umask(0);
-    umask(mask);
-    FILE *f = fchmod(fd, 0666 & ~mask) == 0 ? fdopen(fd, "w") : NULL;
-    int ok = f != NULL;
-    if (ok) {
+    char err[600];
+    const swo_spec spec = { "snowgci", "--md", NULL, 0, 0 };
+    swo_set *set = NULL;
+    int rc = swo_alloc(&spec, &set, err, sizeof err);
+    FILE *f = rc == SWO_OK ? swo_open(set, o->md, err, sizeof err) : NULL;
+    if (rc == SWO_OK && !f)
+        rc = swo_code(set);
+    if (f) {
         write_md(f, qs, n, o, o->in);
-        ok = !ferror(f);
-        ok = (fclose(f) == 0) && ok;
-    } else {
-        close(fd);
+        rc = swo_commit(set, err, sizeof err);
     }
-    int e = errno;
-    if (ok && rename(tmp, o->md) != 0) {
-        e = errno;
-        ok = 0;
-    }
-    if (!ok)
-        unlink(tmp);
-    sigprocmask(SIG_SETMASK, &old, NULL);
-    if (!ok) {
-        fprintf(stderr, "snowgci: --md %s: writing failed (%s)\n", o->md, strerror(e));
-        return 1;
-    }
-    return 0;
+    swo_free(set);
+    if (rc != SWO_OK)
+        fprintf(stderr, "snowgci: %s\n", err);
+    return rc;
 }
 
 int main(int argc, char **argv)
