@@ -124,7 +124,10 @@ int main(int argc, char *argv[])
             (
                 mesh,
                 runTime.controlDict().subDict("replay"),
-                runTime.startTime().value()
+                runTime.startTime().value(),
+                adjustTimeStep,
+                maxDeltaT,
+                runTime.deltaTValue()
             )
         );
     }

@@ -6,6 +6,9 @@
 #include "treeBoundBox.H"
 #include "Pstream.H"
 #include "vector2D.H"
+#include "KinematicParcel.H"
+#include "particle.H"
+#include "snowMachineLimits.H"
 
 // * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * * * //
 
@@ -293,6 +296,59 @@ Foam::scalar Foam::ParcelSplitting<CloudType>::referenceMass() const
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
+void Foam::ParcelSplitting<CloudType>::checkMemory() const
+{
+    // the parcels the cloud may hold: maxParcels, or fewer when the injected
+    // parcels and the largest factor bound them (a copy keeps at least
+    // 0.75 m_ref/F: at most N (1 + 4 F/3) parcels are ever made)
+    scalar F = 1;
+    forAll(factor_, r) F = max(F, factor_[r]);
+    const scalar nInj = snowMachine::injectedParcels
+    (
+        this->owner().subModelProperties().subOrEmptyDict("injectionModels")
+    );
+    scalar nMax = maxParcels_;
+    if (nInj >= 0) nMax = min(nMax, snowMachine::parcelsBound(nInj, F));
+    // resident memory per parcel: 0.56 kB measured for the kinematic parcel
+    // (the box case, 643 782 parcels: +357 MB), scaled by this parcel
+    // type's size
+    typedef typename CloudType::parcelType parcelType;
+    const scalar perParcel = 560.0*max
+    (
+        1.0,
+        scalar(sizeof(parcelType))/scalar(sizeof(KinematicParcel<particle>))
+    );
+    const scalar mem = nMax*perParcel;
+    const scalar avail = snowMachine::memAvailable();
+    const scalar GB = 1e9;
+    Info<< "    parcelSplitting: at most " << label(nMax) << " parcels ("
+        << (nInj >= 0 && nMax < maxParcels_ ? "injected x (1 + 4F/3), F " : "maxParcels");
+    if (nInj >= 0 && nMax < maxParcels_) Info<< F;
+    Info<< "; an upper bound) x " << perParcel/1e3 << " kB = " << mem/GB
+        << " GB of memory for the cloud, ";
+    if (avail >= 0) Info<< avail/GB << " GB available" << endl;
+    else Info<< "available memory unknown (/proc/meminfo)" << endl;
+    if (avail >= 0 && mem > 0.8*avail)
+    {
+        FatalIOErrorInFunction(this->coeffDict())
+            << "parcelSplitting " << this->modelName() << ": the cloud may "
+            << "hold up to " << label(nMax) << " parcels ("
+            << (nInj >= 0
+                ? std::string("the ") + Foam::name(std::floor(nInj))
+                  + " injected split up to factor " + Foam::name(F)
+                  + ", and maxParcels " + Foam::name(maxParcels_)
+                : std::string("maxParcels ") + Foam::name(maxParcels_)
+                  + "; the injected parcels cannot be told from the "
+                    "injection models").c_str()
+            << ") x " << perParcel/1e3 << " kB = " << mem/GB << " GB, more "
+            << "than 80 % of the " << avail/GB << " GB available (MemAvailable "
+            << "of /proc/meminfo): lower maxParcels or the factors"
+            << exit(FatalIOError);
+    }
+}
+
+
+template<class CloudType>
 Foam::ParcelSplitting<CloudType>::ParcelSplitting
 (
     const dictionary& dict,
@@ -344,6 +400,7 @@ Foam::ParcelSplitting<CloudType>::ParcelSplitting
     Info<< "    parcelSplitting: at most " << maxCopies_
         << " parcels from one parcel (maxCopies), at most " << maxParcels_
         << " parcels in the cloud (maxParcels)" << endl;
+    checkMemory();
     this->getModelProperty("nSplit", nSplit_);
     this->getModelProperty("nCopies", nCopies_);
 }

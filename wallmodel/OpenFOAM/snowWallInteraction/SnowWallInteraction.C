@@ -10,6 +10,10 @@
 #include "patchInteractionData.H"
 #include "emptyPolyPatch.H"
 #include "processorPolyPatch.H"
+#include "wallPolyPatch.H"
+#include "regionModel.H"
+#include "snowMachineLimits.H"
+#include "OStringStream.H"
 #include <fstream>
 #include <initializer_list>
 #include <cctype>
@@ -611,15 +615,185 @@ void Foam::SnowWallInteraction<CloudType>::noticeCollision() const
     {
         wm = sm.subDict(cm + "Coeffs").lookupOrDefault<word>("wallModel", "?");
     }
+    // pairCollision's wall model acts on the faces of wall-type patches
+    // (InteractionLists: wallPolyPatch) only: a snow patch of another type
+    // is decided as usual
+    const polyBoundaryMesh& bm = this->owner().mesh().boundaryMesh();
+    DynamicList<word> onWall, notWall;
+    for (const label patchi : snowPatches_)
+    {
+        if (isA<wallPolyPatch>(bm[patchi])) onWall.append(bm[patchi].name());
+        else notWall.append(bm[patchi].name());
+    }
+    OStringStream rest;
+    if (notWall.size())
+    {
+        rest<< "; the snow patches " << notWall << " are not of type wall: "
+            << "the collision model does not act there, their impacts are "
+            << "decided as usual";
+    }
     WarningInFunction
         << "snowWallInteraction: the cloud's collisionModel " << cm
         << " (wallModel " << wm << ") meets the walls first: it pushes a "
         << "parcel back before the parcel's centre reaches a wall face, so "
-        << "snowWallInteraction sees few or no impacts and decides none of "
-        << "the others. For the snow model to decide every wall impact set  "
+        << "on the snow patches of type wall " << onWall
+        << " snowWallInteraction sees few or no impacts and decides none of "
+        << "the others (no stick, no deposit from the contacts the collision "
+        << "model handles)" << rest.str().c_str()
+        << ". For the snow model to decide every wall impact set  "
         << "collisionModel none;  in subModels of "
         << snowWallDetail::dictFile(sm)
         << " (doc/wallmodel.md, \"Collision models\")" << endl;
+}
+
+
+template<class CloudType>
+void Foam::SnowWallInteraction<CloudType>::checkFilm(const bool atSetup)
+{
+    const dictionary& sm = this->owner().subModelProperties();
+    const word fm(sm.lookupOrDefault<word>("surfaceFilmModel", "none"));
+    const objectRegistry& db = this->owner().mesh().time();
+    const word regionName("surfaceFilmProperties");
+    if (fm == "none")
+    {
+        filmChecked_ = true;
+        return;
+    }
+    if (!db.foundObject<regionModels::regionModel>(regionName))
+    {
+        // the film region is made after the cloud (reactingParcelFoam):
+        // checked again at the first impact or the end of the first step
+        if (!atSetup)
+        {
+            filmChecked_ = true;
+            WarningInFunction
+                << "snowWallInteraction: the cloud's surfaceFilmModel " << fm
+                << " found no film region (" << regionName << "): the snow "
+                << "patches could not be checked against the film's" << endl;
+        }
+        return;
+    }
+    filmChecked_ = true;
+    const regionModels::regionModel& film =
+        db.lookupObject<regionModels::regionModel>(regionName);
+    const polyBoundaryMesh& bm = this->owner().mesh().boundaryMesh();
+    DynamicList<word> taken, left;
+    for (const label patchi : snowPatches_)
+    {
+        if (film.isRegionPatch(patchi)) taken.append(bm[patchi].name());
+        else left.append(bm[patchi].name());
+    }
+    if (taken.empty())
+    {
+        return;
+    }
+    word it("?");
+    if (sm.isDict(fm + "Coeffs"))
+    {
+        it = sm.subDict(fm + "Coeffs").lookupOrDefault<word>("interactionType", "?");
+    }
+    const dictionary& cd = this->coeffDict();
+    if (left.empty())
+    {
+        snowWallDetail::fatalAt(cd, cd.findEntry("patches", keyType::LITERAL))
+            << "snowWallInteraction: every snow patch " << taken << " is a "
+            << "patch of the surface film (" << film.type() << ", region "
+            << film.regionMesh().name() << "): the cloud's surfaceFilmModel "
+            << fm << " (interactionType " << it << ") takes every parcel that "
+            << "hits it before the patch interaction model, so "
+            << "snowWallInteraction would decide no impact and deposit "
+            << "nothing. Give those patches type none (the film decides them) "
+            << "or set  surfaceFilmModel none;  in subModels of "
+            << snowWallDetail::dictFile(sm) << exit(FatalIOError);
+    }
+    WarningInFunction
+        << "snowWallInteraction: the snow patches " << taken << " are "
+        << "patches of the surface film (" << film.type() << ", region "
+        << film.regionMesh().name() << "): the cloud's surfaceFilmModel " << fm
+        << " (interactionType " << it << ") takes every parcel that hits them "
+        << "before the patch interaction model (absorbed, splashed or bounced "
+        << "by the film), so snowWallInteraction sees no impact there and "
+        << "counts no stick or deposit on them; the snow patches " << left
+        << " are decided as usual" << endl;
+}
+
+
+template<class CloudType>
+void Foam::SnowWallInteraction<CloudType>::estimateStickRecords
+(
+    const dictionary& cd
+) const
+{
+    label nRec = 0;
+    forAll(recordSticks_, si)
+    {
+        if (recordSticks_[si]) ++nRec;
+    }
+    if (!nRec)
+    {
+        return;
+    }
+    const dictionary& props = this->owner().particleProperties();
+    const scalar nInj = snowMachine::injectedParcels
+    (
+        this->owner().subModelProperties().subOrEmptyDict("injectionModels")
+    );
+    const scalar F =
+        snowMachine::splitFactor(props.subOrEmptyDict("cloudFunctions"));
+    // one record: time, position, origin processor and id, nParticle, d,
+    // rho at the stream's precision: at most about 128 characters; held as
+    // a std::string (plus about 32 bytes) until the next write, and twice on
+    // the master while it gathers
+    const scalar recDisk = 128, recMem = 2*(128 + 32);
+    const Time& time = this->owner().mesh().time();
+    const fileName dir(time.globalPath());
+    const scalar freeB = snowMachine::freeDisk(dir);
+    const scalar avail = snowMachine::memAvailable();
+    const scalar MB = 1e6, GB = 1e9;
+    Info<< "    snowWallInteraction: stickRecords: ";
+    if (nInj < 0)
+    {
+        Info<< "the parcels injected cannot be told from the injection "
+            << "models (manual, cell-zone or field-activated injection): "
+            << "about " << recDisk << " bytes per stick on disk, "
+            << (freeB >= 0 ? std::string(Foam::name(freeB/GB)) + " GB free" : std::string("free disk unknown")).c_str()
+            << " in " << dir << endl;
+        return;
+    }
+    const scalar nMax = snowMachine::parcelsBound(nInj, F);
+    const scalar disk = nMax*recDisk + 1024*nRec;
+    const scalar mem = nMax*recMem;
+    Info<< "at most " << std::floor(nMax) << " sticks ("
+        << std::floor(nInj) << " parcels injected";
+    if (F > 1) Info<< ", split up to factor " << F << ": x (1 + 4F/3)";
+    Info<< "; an upper bound: every parcel sticks) x " << recDisk
+        << " bytes = " << disk/MB << " MB on disk, "
+        << (freeB >= 0 ? std::string(Foam::name(freeB/GB)) + " GB free" : std::string("free disk unknown")).c_str()
+        << "; at most " << mem/MB << " MB of memory between writes, "
+        << (avail >= 0 ? std::string(Foam::name(avail/GB)) + " GB available" : std::string("available memory unknown")).c_str()
+        << endl;
+    const entry* e = cd.findEntry("stickRecords", keyType::LITERAL);
+    if (freeB >= 0 && disk > freeB)
+    {
+        snowWallDetail::fatalAt(cd, e)
+            << "snowWallInteraction: stickRecords: the records may need up to "
+            << disk/MB << " MB (" << std::floor(nMax)
+            << " sticks x " << recDisk << " bytes: every injected parcel"
+            << (F > 1 ? " and split copy" : "") << " sticking once, an upper "
+            << "bound), more than the " << freeB/MB << " MB free in " << dir
+            << ": record fewer patches, inject fewer parcels or free disk"
+            << exit(FatalIOError);
+    }
+    if (avail >= 0 && mem > 0.8*avail)
+    {
+        snowWallDetail::fatalAt(cd, e)
+            << "snowWallInteraction: stickRecords: the records held between "
+            << "writes may need up to " << mem/GB << " GB of memory ("
+            << std::floor(nMax) << " sticks x " << recMem
+            << " bytes, an upper bound), more than 80 % of the "
+            << avail/GB << " GB available (MemAvailable of /proc/meminfo): "
+            << "record fewer patches or write more often" << exit(FatalIOError);
+    }
 }
 
 
@@ -1243,6 +1417,7 @@ void Foam::SnowWallInteraction<CloudType>::setup()
         }
         Info<< " (postProcessing/lagrangian/" << this->owner().name()
             << "/snowWallSticks)" << endl;
+        estimateStickRecords(cd);
     }
     setupWallRegimes(cd);
     {
@@ -1531,10 +1706,12 @@ Foam::SnowWallInteraction<CloudType>::SnowWallInteraction
     slotOfPatch_(),
     snowPatches_(),
     depositPtr_(nullptr),
-    seriesPtr_(nullptr)
+    seriesPtr_(nullptr),
+    filmChecked_(false)
 {
     setup();
     noticeCollision();
+    checkFilm(true);
     (void)deposit();
 }
 
@@ -1567,7 +1744,8 @@ Foam::SnowWallInteraction<CloudType>::SnowWallInteraction
     slotOfPatch_(),
     snowPatches_(),
     depositPtr_(nullptr),
-    seriesPtr_(nullptr)
+    seriesPtr_(nullptr),
+    filmChecked_(pim.filmChecked_)
 {
     setup();
     nImpact_ = pim.nImpact_;
@@ -1656,6 +1834,10 @@ bool Foam::SnowWallInteraction<CloudType>::correct
     bool& keepParticle
 )
 {
+    if (!filmChecked_)
+    {
+        checkFilm(false);
+    }
     const label groupi = groupOfPatch_[pp.index()];
     if (groupi < 0)
     {
@@ -1902,6 +2084,10 @@ Foam::List<T> Foam::SnowWallInteraction<CloudType>::total
 template<class CloudType>
 void Foam::SnowWallInteraction<CloudType>::info(Ostream& os)
 {
+    if (!filmChecked_)
+    {
+        checkFilm(false);
+    }
     PatchInteractionModel<CloudType>::info(os);
 
     const labelList ni(total(nImpact_, nImpact0_));

@@ -1,0 +1,136 @@
+#!/usr/bin/env bash
+# test_replay.sh - the set-up checks of pimpleUncoupledKinematicParcelFoam -replay
+# (flowReplay.H) on the box mesh with a laminar PIMPLE flow (U, p), before any step:
+#  - a library that fits: the one-line estimate "Replay: N snapshots x M cells x K
+#    values = X GB" with N x M x K x 8 bytes = X, then the library taken and played back;
+#  - a fixed deltaT longer than interval, and adjustTimeStep with maxDeltaT unset or
+#    longer than interval: FatalIOErrors naming replay, interval and the numbers, with
+#    no time step run; maxDeltaT equal to interval accepted;
+#  - memory: a mesh whose library (100 000 snapshots of U and p) is about twice the
+#    machine's MemAvailable: refused with the estimate before the first step, in seconds.
+# About 15 s.
+set -euo pipefail
+# shellcheck source=common.sh
+. "$(dirname "$0")/common.sh"
+solver="$top/platforms/bin/pimpleUncoupledKinematicParcelFoam"
+[ -x "$solver" ] || { echo "SKIP: $solver not built (run ./Allwmake)"; exit 77; }
+
+# make_case DIR CELLS: the box with a laminar PIMPLE flow and an empty snow cloud
+make_case() {
+    cp -r "$top/tests/openfoam/box" "$1"
+    cp "$fixture" "$1/constant/regime.coeffs"
+    (
+        cd "$1"
+        sed -i "s/(4 4 4) simpleGrading/($2 $2 $2) simpleGrading/" system/blockMeshDict
+        cat > 0/U <<'EOT'
+FoamFile { version 2.0; format ascii; class volVectorField; object U; }
+dimensions [0 1 -1 0 0 0 0];
+internalField uniform (0.2 0 0);
+boundaryField
+{
+    wall  { type noSlip; }
+    top   { type fixedValue; value uniform (0.2 0 0); }
+    sides { type fixedValue; value uniform (0.2 0 0); }
+}
+EOT
+        cat > 0/p <<'EOT'
+FoamFile { version 2.0; format ascii; class volScalarField; object p; }
+dimensions [0 2 -2 0 0 0 0];
+internalField uniform 0;
+boundaryField { ".*" { type zeroGradient; } }
+EOT
+        cat > system/fvSchemes <<'EOT'
+FoamFile { version 2.0; format ascii; class dictionary; object fvSchemes; }
+ddtSchemes { default Euler; }
+gradSchemes { default Gauss linear; }
+divSchemes { default none; div(phi,U) Gauss linear; div((nuEff*dev2(T(grad(U))))) Gauss linear; }
+laplacianSchemes { default Gauss linear corrected; }
+interpolationSchemes { default linear; }
+snGradSchemes { default corrected; }
+EOT
+        cat > system/fvSolution <<'EOT'
+FoamFile { version 2.0; format ascii; class dictionary; object fvSolution; }
+solvers
+{
+    "(p|pFinal)" { solver PCG; preconditioner DIC; tolerance 1e-8; relTol 0; }
+    "(U|UFinal)" { solver PBiCGStab; preconditioner DILU; tolerance 1e-8; relTol 0; }
+}
+PIMPLE { nOuterCorrectors 1; nCorrectors 2; nNonOrthogonalCorrectors 0; pRefCell 0; pRefValue 0; }
+EOT
+        snow_cloud "" "$(
+            echo "        #include \"regime.coeffs\""
+            echo "        patches ( wall { type snow; } \"(top|sides)\" { type escape; } );")"
+        foamDictionary -entry application -set pimpleUncoupledKinematicParcelFoam system/controlDict > /dev/null
+        foamDictionary -entry functions -set '{}' system/controlDict > /dev/null
+        foamDictionary -entry endTime -set 0.04 system/controlDict > /dev/null
+        foamDictionary -entry writeInterval -set 0.04 system/controlDict > /dev/null
+        run log.blockMesh blockMesh
+    )
+}
+# set_replay DIR START PERIOD INTERVAL: the replay dictionary of system/controlDict
+set_replay() {
+    foamDictionary -entry replay -set "{ start $2; period $3; interval $4; fields (U p); }" \
+        "$1/system/controlDict" > /dev/null
+}
+# expect_refusal DIR PATTERN: a FatalIOError with PATTERN, before the first time step
+expect_refusal() {
+    local t0=$SECONDS rc=0
+    (cd "$1" && "$solver" -replay > log.run 2>&1) || rc=$?
+    if [ "$rc" != 1 ] || ! grep -q "FOAM FATAL IO ERROR" "$1/log.run"; then
+        tail -20 "$1/log.run" >&2
+        fail "$1: exit $rc without a FatalIOError, expected one with '$2'"
+    fi
+    grep -qF -- "$2" "$1/log.run" || { tail -20 "$1/log.run" >&2; fail "$1: no '$2' in the error"; }
+    ! grep -q '^Time = ' "$1/log.run" || fail "$1: time steps were run before the refusal"
+    [ $((SECONDS - t0)) -le 60 ] || fail "$1: the refusal took $((SECONDS - t0)) s"
+}
+
+# 1. a library that fits: the estimate, then taken and played back
+c="$tmp/ok"
+make_case "$c" 4
+set_replay "$c" 0 0.02 0.005
+(cd "$c" && run log.run "$solver" -replay)
+line=$(grep '^Replay: [0-9]* snapshots x' "$c/log.run") || fail "ok: no estimate line"
+echo "$line"
+echo "$line" | awk '{ n = $2; m = $5; k = $8; x = $11
+    exit !(n == 4 && m == 64 && k == 4 && x > 0.99 * n * m * k * 8 / 1e9 && x < 1.01 * n * m * k * 8 / 1e9) }' ||
+    fail "ok: the estimate is not 4 snapshots x 64 cells x 4 values x 8 bytes: $line"
+echo "$line" | grep -q 'GB available' || fail "ok: no available memory in: $line"
+grep -q 'Replay: library complete, 4 snapshots' "$c/log.run" || fail "ok: the library was not completed"
+grep -q 'the flow is played back' "$c/log.run" || fail "ok: the flow was not played back"
+
+# 2. the time step against interval
+c="$tmp/fixed"
+make_case "$c" 4
+set_replay "$c" 0 0.02 0.001          # deltaT 0.005 fixed
+expect_refusal "$c" "fixed time step deltaT 0.005 s (adjustTimeStep off) is longer than 'interval' 0.001"
+grep -q "replay" "$c/log.run" || fail "fixed: the error does not name replay"
+
+c="$tmp/adjust"
+make_case "$c" 4
+set_replay "$c" 0 0.02 0.001
+foamDictionary -entry adjustTimeStep -set yes "$c/system/controlDict" > /dev/null
+foamDictionary -entry maxCo -set 0.5 "$c/system/controlDict" > /dev/null
+expect_refusal "$c" "adjustTimeStep with maxDeltaT unlimited (not set) longer than 'interval' 0.001"
+foamDictionary -entry maxDeltaT -set 0.002 "$c/system/controlDict" > /dev/null
+expect_refusal "$c" "maxDeltaT 0.002 s longer than 'interval' 0.001"
+# maxDeltaT equal to interval: accepted (the wedge's default, 1e-3 and 1e-3)
+foamDictionary -entry maxDeltaT -set 0.001 "$c/system/controlDict" > /dev/null
+foamDictionary -entry endTime -set 0.003 "$c/system/controlDict" > /dev/null
+set_replay "$c" 0 0.002 0.001
+(cd "$c" && run log.run "$solver" -replay)
+grep -q '^Replay: 2 snapshots x 64 cells' "$c/log.run" || fail "adjust: maxDeltaT = interval not accepted"
+
+# 3. memory: 100 000 snapshots of U and p (32 bytes a cell) on a mesh whose library is
+# about twice MemAvailable: refused at once, with the estimate
+avail=$(awk '$1 == "MemAvailable:" { print $2 * 1024 }' /proc/meminfo)
+[ -n "$avail" ] || { echo "SKIP (part): /proc/meminfo has no MemAvailable"; exit 0; }
+n=$(awk -v a="$avail" 'BEGIN { n = int((2 * a / (1e5 * 32)) ^ (1 / 3)) + 1; print (n < 4) ? 4 : n }')
+c="$tmp/memory"
+make_case "$c" "$n"
+set_replay "$c" 0 100 0.001           # 100 000 snapshots
+foamDictionary -entry deltaT -set 0.001 "$c/system/controlDict" > /dev/null
+expect_refusal "$c" "replay: the library of 'period' 100 s / 'interval' 0.001 s = 100000 snapshots"
+grep -q "GB available (MemAvailable of /proc/meminfo)" "$c/log.run" || fail "memory: the error does not give the available memory"
+grep '^Replay: 100000 snapshots' "$c/log.run" || fail "memory: no estimate line before the refusal"
+echo "PASS: replay set-up checks (estimate, time step, memory at $n^3 cells)"
