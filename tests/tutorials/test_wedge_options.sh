@@ -4,9 +4,13 @@
 # anything (issue 22: -parallel 999 decomposed the case into some 18 000 files
 # before mpirun refused); so do the post-processing scripts (post/wedge-*) for a
 # missing option value or a malformed --window. Runs in a temporary copy of the case's
-# source files; needs neither OpenFOAM nor a build (the refusals come first). About 1 s.
+# source files; the option refusals need neither OpenFOAM nor a build (they come
+# first). With OpenFOAM and the build also Allrun's one-line estimate (-estimate) and
+# its refusals of a replay interval below maxDeltaT and of a replay library above the
+# available memory. About 1 s, with the estimate checks about 30 s.
 set -u
 top=${SW_TOP:?SW_TOP not set}
+export SNOWWALL_TOP="$top"   # Allrun and the post/ scripts run from a copy of the case
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
@@ -42,14 +46,31 @@ refused "-rebound needs the transient route" -steady -rebound
 refused "-replay needs the transient route" -steady -replay
 refused "-wake-source needs the transient route" -steady -wake-source
 refused "-wake-source releases the size classes in the wake: not with -sizes none" -wake-source -sizes none
-refused "-sizes needs whole diameters in um (1..1000), comma-separated, or none" -sizes nothing
+refused "Allrun: -sizes: 'nothing' in 'nothing' is not a number" -sizes nothing
+refused "-sizes needs whole diameters in um (1..1000), comma-separated, or none, got '5.5'" -sizes 5.5
 refused "-oversubscribe needs -parallel N with N > 1" -oversubscribe
 refused "-gate must be off, tangential, shear or regime, got 'on'" -gate on
-refused "-sizes needs whole diameters in um (1..1000)" -sizes 5,,10
+# list options (etc/outdir.sh's outdir_list): an empty item or a name twice refused,
+# named with the text; an unsorted -sizes taken in ascending order with a note (seen
+# before a later refusal)
+refused "Allrun: -sizes: an empty item in '5,,10'" -sizes 5,,10
+refused "Allrun: -sizes: an empty item in '5,10,'" -sizes 5,10,
+refused "Allrun: -sizes: an empty item in ',5'" -sizes ,5
+refused "Allrun: -sizes: an empty list" -sizes ''
+refused "Allrun: -dispersion: an empty item in 'nearwall,,crw'" -dispersion nearwall,,crw
+refused "Allrun: -dispersion: an empty item in 'crw,'" -dispersion crw,
+refused "Allrun: -dispersion: 'crw' is given twice in 'crw,nearwall,crw'" -dispersion crw,nearwall,crw
+refused "Allrun: -sizes: '20' is given twice in '20,5,20'" -sizes 20,5,20
+refused "-sizes needs the transient route" -steady -sizes 20,5,10
+grep -qxF "Allrun: note: -sizes: '20,5,10' taken in ascending order" "$tmp/err" ||
+    fail "Allrun -sizes 20,5,10: no note of the ascending order: $(cat "$tmp/err")"
+[ "$(grep -c . "$tmp/err")" = 2 ] || fail "Allrun -sizes 20,5,10: more than the note and the refusal: $(cat "$tmp/err")"
+refused "-sizes needs the transient route" -steady -sizes 5,10,20
+! grep -q "note:" "$tmp/err" || fail "Allrun -sizes 5,10,20: a note for a sorted list: $(cat "$tmp/err")"
 refused "unknown option '-parallell'" -parallell 2
 # hostile sweep (issue 22): two mesh levels or a diameter twice were taken without a word
 refused "-test with -fine: give one mesh level (-fine or -test)" -fine -test
-refused "-sizes: '5,10,05' names a diameter twice" -sizes 5,10,05
+refused "-sizes: '05' is given twice in '5,10,05'" -sizes 5,10,05
 # the post-processing scripts: a missing option value or a malformed --window is a
 # usage error, exit 2, named (issue 22: '--gate' alone exited 1 from the shell's own
 # ${2:?}, and '--window 1e-,2,3' passed as 1,2,3)
@@ -103,5 +124,44 @@ if [ "$ncpu" -ge 2 ]; then
     chmod +x "$tmp/fakebin/mpirun"
     PATH="$tmp/fakebin:$PATH" refused "-parallel 2: mpirun cannot start 2 processes here" -parallel 2
     grep -q "not enough slots" "$tmp/err" || fail "mpirun's own message not passed on: $(cat "$tmp/err")"
+fi
+# the estimate of the chosen options (needs OpenFOAM and the build: Allrun checks
+# them first): one line before anything is written; -estimate stops there; a
+# replayInterval shorter than maxDeltaT and a replay library above the available
+# memory are refused (exit 2) before anything is written
+if [ -x /usr/bin/simpleFoam ] && [ -x "$top/bin/snowregime" ] && [ -x "$top/bin/snowphoto" ] &&
+   [ -f "$top/platforms/lib/libsnowWallInteraction.so" ]; then
+    estimate() {  # estimate ARGS...: exit 0, one estimate line, nothing written
+        "$w/Allrun" -estimate "$@" > "$tmp/out" 2> "$tmp/err" || fail "Allrun -estimate $*: exit $? ($(cat "$tmp/err"))"
+        [ "$(grep -c '^Allrun: estimate: ' "$tmp/out")" = 1 ] || fail "Allrun -estimate $*: not one estimate line: $(cat "$tmp/out")"
+        listing | diff -q "$tmp/before" - > /dev/null || fail "Allrun -estimate $*: wrote or removed files"
+        echo "ok   Allrun -estimate $*: $(cut -c1-110 "$tmp/out")..."
+    }
+    estimate
+    # the coarse mesh's 100 568 cells (doc/wedge.md), the spray and the five classes
+    grep -q '^Allrun: estimate: 100568 cells, 6 clouds, ' "$tmp/out" || fail "Allrun -estimate: $(cat "$tmp/out")"
+    steps=$(sed 's/.*about \([0-9]*\) time steps.*/\1/' "$tmp/out")
+    estimate -halfstep
+    steps2=$(sed 's/.*about \([0-9]*\) time steps.*/\1/' "$tmp/out")
+    [ "$steps2" = $((2 * steps)) ] || fail "Allrun -estimate -halfstep: $steps2 steps, want 2 x $steps"
+    estimate -refine-wake
+    grep -q '^Allrun: estimate: 138671 cells' "$tmp/out" || fail "Allrun -estimate -refine-wake: $(cat "$tmp/out")"
+    estimate -test -sizes 10,5,20 -compare -rebound    # 1 + 3 + 1 + 3 clouds
+    grep -q ' 8 clouds, ' "$tmp/out" || fail "Allrun -estimate -test -sizes 10,5,20 -compare -rebound: $(cat "$tmp/out")"
+    sp="$w/constant/sprayProperties"
+    cp "$sp" "$tmp/sprayProperties"
+    sed -i 's/^\( *replayInterval *\)[^;]*;/\11e-6;/' "$sp"
+    refused "replayInterval 1e-06 s is shorter than the run's maxDeltaT 1e-3 s" -test
+    cp "$tmp/sprayProperties" "$sp"
+    sed -i 's/^\( *replayInterval *\)[^;]*;/\15e-4;/' "$sp"
+    estimate -halfstep                     # 5e-4 = the -halfstep maxDeltaT: accepted
+    refused "replayInterval 0.0005 s is shorter than the run's maxDeltaT 1e-3 s" -estimate
+    cp "$tmp/sprayProperties" "$sp"
+    sed -i 's/^\( *replayPeriod *\)[^;]*;/\1100;/' "$sp"     # 100 000 snapshots of 100 568 cells
+    refused "the flow and its replay library need about" -estimate
+    grep -q "100000 snapshots x 100568 cells x 7 values x 8 bytes" "$tmp/err" || fail "the memory refusal: $(cat "$tmp/err")"
+    cp "$tmp/sprayProperties" "$sp"
+else
+    echo "skip the estimate checks: OpenFOAM or the build missing"
 fi
 echo "PASS"

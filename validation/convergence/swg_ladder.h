@@ -1,0 +1,77 @@
+/* swg_ladder.h - what a resolution ladder of runs needs besides the GCI
+ * (doc/convergence.md, "Total error of a ladder"): the mean of a time series
+ * over a window with its batch-means standard error, the discretization
+ * error of every level against the extrapolated (or the finest) value, the
+ * total error sqrt(sampling^2 + discretization^2) of every run and the
+ * cheapest run under a target.
+ *
+ * Every function takes const inputs, returns 0 or an SWG_E* code (swg_gci.h)
+ * with a one-line message in err (when err is given), and never exits. */
+#ifndef SWG_LADDER_H
+#define SWG_LADDER_H
+
+#include "swg_gci.h"
+
+#include <stddef.h>
+
+/* ---- a time series over a window ----------------------------------------- */
+
+typedef struct {
+    double mean;   /* mean of the samples with t0 < t <= t1 */
+    double se;     /* its standard error by batch means: the samples in nbatch
+                      consecutive batches of (nearly) equal count, se = the sample
+                      standard deviation of the batch means / sqrt(nbatch) */
+    size_t n;      /* samples in the window */
+    int nbatch;    /* batches used */
+    double first, last; /* times of the first and the last sample in the window */
+} swg_series_stat;
+
+/* The samples (t[i], x[i]), i < n, with t strictly increasing and every value
+ * finite (|x| <= SWG_VALUE_MAX): mean and batch-means standard error over
+ * t0 < t <= t1 with nbatch batches (2 to 1000; at least 2 samples a batch).
+ * Refused: t not increasing, a value out of range, t0 >= t1, fewer than
+ * 2 nbatch samples in the window. */
+int swg_series_mean(const double *t, const double *x, size_t n, double t0, double t1, int nbatch,
+                    swg_series_stat *out, char *err, size_t errlen);
+
+/* ---- discretization error of every level --------------------------------- */
+
+/* what the levels' error is measured against */
+typedef enum {
+    SWG_REF_EXTRAPOLATED = 0, /* phi_ext21: a monotone ladder (or two resolved levels) */
+    SWG_REF_FINEST            /* phi1: no extrapolation; the finest level's error is
+                                 taken as its last change |phi2 - phi1| */
+} swg_ref_kind;
+
+typedef struct {
+    swg_result gci;    /* the finest three levels (swg_three_level), or the two
+                          (swg_two_level with the assumed order) */
+    swg_ref_kind kind;
+    double ref;        /* phi_ext21 or phi1 */
+    double ref_se;     /* its sampling standard error (se_phi_ext21 or se1) */
+} swg_disc;
+
+/* Levels l[0..n-1], finest first (h strictly increasing), n >= 2: the verdict of
+ * the finest three (or two, with the assumed order p_two) and the reference; the
+ * discretization error of every level into disc[0..n-1]:
+ *   extrapolated: disc[i] = |phi_i - phi_ext21|;
+ *   finest:       disc[i] = |phi_i - phi1| for i > 0, disc[0] = |phi2 - phi1|. */
+int swg_discretization(const swg_level *l, size_t n, double p_two, const swg_settings *s,
+                       swg_disc *d, double *disc, char *err, size_t errlen);
+
+/* ---- total error and the cheapest run -------------------------------------- */
+
+/* total = sqrt(se^2 + disc^2) (hypot); rel = total / |ref| and *has_rel 1 when
+ * ref != 0, else rel 0 and *has_rel 0. se, disc >= 0 and finite. */
+int swg_total_error(double se, double disc, double ref, double *total, double *rel, int *has_rel,
+                    char *err, size_t errlen);
+
+/* Of n runs with relative total errors rel[] (ok[i] 0: no relative error, never
+   picked) and costs cost[] (>= 0): the cheapest with rel <= target (ties: the
+   smaller error, then the first). *idx gets it; returns 1 when one was found, 0
+   when none reaches the target, -1 on bad input (a negative or non-finite cost
+   or target). */
+int swg_pick(const double *rel, const int *ok, const double *cost, size_t n, double target,
+             size_t *idx);
+
+#endif
