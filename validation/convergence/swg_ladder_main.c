@@ -2,6 +2,7 @@
  * its batch-means error (series), and the total error of every run of a
  * resolution ladder against its run time (total) (doc/convergence.md). */
 #include "swg_gci.h"
+#include "swg_csv.h"
 #include "swg_ladder.h"
 #include "swo_out.h"
 
@@ -110,7 +111,7 @@ static const char *usage =
 "    (tutorials/wedge/post/wedge-ladder gathers a ladder's runs and calls both)\n";
 
 #define LINE_LEN 4096
-#define MAX_COLS 64
+#define MAX_COLS SWG_CSV_MAX_COLS
 #define MAX_ROWS 20000 /* rows of a ladder table (the checks are quadratic in it) */
 
 static int uerr(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
@@ -125,18 +126,6 @@ static int uerr(const char *fmt, ...)
     return 2;
 }
 
-/* a finite decimal number (no hexadecimal, nan or inf) */
-static int number(const char *s, double *v)
-{
-    char *end;
-    errno = 0;
-    const double x = strtod(s, &end);
-    if (!*s || end == s || *end || errno == ERANGE || !isfinite(x) || strpbrk(s, "xXnN"))
-        return 0;
-    *v = x;
-    return 1;
-}
-
 static int pair(const char *opt, const char *v, double *a, double *b)
 {
     char buf[256];
@@ -147,7 +136,7 @@ static int pair(const char *opt, const char *v, double *a, double *b)
     if (!c)
         return uerr("%s: '%s' is not A,B", opt, v);
     *c = '\0';
-    if (!number(buf, a) || !number(c + 1, b))
+    if (!swg_csv_number(buf, a) || !swg_csv_number(c + 1, b))
         return uerr("%s: '%s' is not two finite decimal numbers A,B", opt, v);
     return 0;
 }
@@ -196,7 +185,7 @@ static int read_series(const char *fname, int k, series *s)
             col++;
             if (col == 1 || col == k) {
                 double v;
-                if (!number(tok, &v)) {
+                if (!swg_csv_number(tok, &v)) {
                     rc = uerr("%s:%d: column %d: '%s' is not a finite decimal number", fname, ln,
                               col, tok);
                     break;
@@ -281,7 +270,7 @@ static int cmd_series(int argc, char **argv)
         } else if (!strcmp(a, "--minus")) {
             minus = v;
         } else if (!strcmp(a, "--scale")) {
-            if (!number(v, &scale) || scale == 0.0 || fabs(scale) > 1e100)
+            if (!swg_csv_number(v, &scale) || scale == 0.0 || fabs(scale) > 1e100)
                 return uerr("--scale: '%s' is not a finite decimal number other than 0", v);
         } else {
             return uerr("series: unknown option '%s' (see snowladder --help)", a);
@@ -349,41 +338,6 @@ typedef struct {
     swg_disc d;
 } quantity;
 
-static char *trim(char *s)
-{
-    while (isspace((unsigned char)*s))
-        s++;
-    char *e = s + strlen(s);
-    while (e > s && isspace((unsigned char)e[-1]))
-        *--e = '\0';
-    return s;
-}
-
-static int split(char *s, char **f)
-{
-    int n = 0;
-    for (char *p = s;; n++) {
-        if (n >= MAX_COLS)
-            return -1;
-        char *c = strchr(p, ',');
-        if (c)
-            *c = '\0';
-        f[n] = trim(p);
-        if (!c)
-            return n + 1;
-        p = c + 1;
-    }
-}
-
-static char *dup(const char *s)
-{
-    const size_t n = strlen(s) + 1;
-    char *d = malloc(n);
-    if (d)
-        memcpy(d, s, n);
-    return d;
-}
-
 enum { C_Q, C_RUN, C_LEVEL, C_CELLS, C_VALUE, C_SE, C_TF, C_TC, C_DESIGN, C_STEP, C_N };
 static const char *colname[C_N] = {"quantity", "run",    "level",    "cells",  "value",
                                    "se",       "t_flow", "t_clouds", "design", "step"};
@@ -417,11 +371,11 @@ static int read_ladder(const char *fname, row **out, size_t *nout)
             rc = uerr("%s:%d: a line longer than %d characters", fname, ln, LINE_LEN - 1);
             break;
         }
-        char *p = trim(line);
+        char *p = swg_csv_trim(line);
         if (!*p || *p == '#')
             continue;
         char *fld[MAX_COLS];
-        const int nf = split(p, fld);
+        const int nf = swg_csv_split(p, fld);
         if (nf < 0) {
             rc = uerr("%s:%d: more than %d fields", fname, ln, MAX_COLS);
             break;
@@ -473,10 +427,10 @@ static int read_ladder(const char *fname, row **out, size_t *nout)
             }
         if (rc)
             break;
-        w->quantity = dup(fld[idx[C_Q]]);
-        w->run = dup(fld[idx[C_RUN]]);
-        w->level = dup(fld[idx[C_LEVEL]]);
-        w->design = dup(idx[C_DESIGN] >= 0 && *fld[idx[C_DESIGN]] ? fld[idx[C_DESIGN]] : "-");
+        w->quantity = swg_csv_dup(fld[idx[C_Q]]);
+        w->run = swg_csv_dup(fld[idx[C_RUN]]);
+        w->level = swg_csv_dup(fld[idx[C_LEVEL]]);
+        w->design = swg_csv_dup(idx[C_DESIGN] >= 0 && *fld[idx[C_DESIGN]] ? fld[idx[C_DESIGN]] : "-");
         if (!w->quantity || !w->run || !w->level || !w->design) {
             fprintf(stderr, "snowladder: out of memory\n");
             rc = 1;
@@ -486,12 +440,12 @@ static int read_ladder(const char *fname, row **out, size_t *nout)
         const int cols[] = {C_CELLS, C_VALUE, C_SE, C_TF, C_TC};
         for (int k = 0; k < 5 && !rc; k++) {
             const char *s = fld[idx[cols[k]]];
-            if (!number(s, dst[k]))
+            if (!swg_csv_number(s, dst[k]))
                 rc = uerr("%s:%d: %s '%s' is not a finite decimal number", fname, ln,
                           colname[cols[k]], s);
         }
         if (!rc && idx[C_STEP] >= 0 && *fld[idx[C_STEP]]) {
-            if (!number(fld[idx[C_STEP]], &w->step) || !(w->step > 0))
+            if (!swg_csv_number(fld[idx[C_STEP]], &w->step) || !(w->step > 0))
                 rc = uerr("%s:%d: step '%s' is not a positive decimal number", fname, ln,
                           fld[idx[C_STEP]]);
             w->has_step = 1;
@@ -842,7 +796,7 @@ static int cmd_total(int argc, char **argv)
         } else if (!strcmp(a, "--targets")) {
             targets = v;
         } else if (!strcmp(a, "--order")) {
-            if (!number(v, &x) || !(x >= 1e-3 && x <= SWG_P_LIMIT))
+            if (!swg_csv_number(v, &x) || !(x >= 1e-3 && x <= SWG_P_LIMIT))
                 return uerr("--order: '%s' is not a number in [0.001, 20]", v);
             p_two = x;
         } else if (!strcmp(a, "--p-range")) {
@@ -851,7 +805,7 @@ static int cmd_total(int argc, char **argv)
             if (!(s.p_min >= 1e-3 && s.p_min < s.p_max && s.p_max <= SWG_P_LIMIT))
                 return uerr("--p-range: '%s' is not 0.001 <= LO < HI <= 20", v);
         } else if (!strcmp(a, "--z")) {
-            if (!number(v, &x) || !(x >= 0 && x <= 10))
+            if (!swg_csv_number(v, &x) || !(x >= 0 && x <= 10))
                 return uerr("--z: '%s' is not a number in [0, 10]", v);
             s.z = x;
         } else {

@@ -1,5 +1,6 @@
 /* swg_table.c - the resolution-ladder table of snowgci (see swg_table.h). */
 #include "swg_table.h"
+#include "swg_csv.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -11,7 +12,7 @@
 
 #define LINE_MAX_LEN 4096
 #define MAX_ROWS 100000
-#define MAX_COLS 64
+#define MAX_COLS SWG_CSV_MAX_COLS
 
 static int fail(char *err, size_t errlen, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
@@ -37,54 +38,6 @@ void swg_table_free(swg_table *t)
     }
     free(t->q);
     memset(t, 0, sizeof *t);
-}
-
-static char *trim(char *s)
-{
-    while (isspace((unsigned char)*s))
-        s++;
-    char *e = s + strlen(s);
-    while (e > s && isspace((unsigned char)e[-1]))
-        *--e = '\0';
-    return s;
-}
-
-/* split s at commas into at most MAX_COLS trimmed fields; -1 when more */
-static int split(char *s, char **f)
-{
-    int n = 0;
-    for (char *p = s;; n++) {
-        if (n >= MAX_COLS)
-            return -1;
-        char *c = strchr(p, ',');
-        if (c)
-            *c = '\0';
-        f[n] = trim(p);
-        if (!c)
-            return n + 1;
-        p = c + 1;
-    }
-}
-
-/* a finite decimal number (no hexadecimal, nan or inf) */
-static int number(const char *s, double *v)
-{
-    char *end;
-    errno = 0;
-    const double x = strtod(s, &end);
-    if (!*s || end == s || *end || errno == ERANGE || !isfinite(x) || strpbrk(s, "xXnN"))
-        return 0;
-    *v = x;
-    return 1;
-}
-
-static char *dup(const char *s)
-{
-    const size_t n = strlen(s) + 1;
-    char *d = malloc(n);
-    if (d)
-        memcpy(d, s, n);
-    return d;
 }
 
 #define FAIL(...)                                                                                  \
@@ -116,10 +69,10 @@ int swg_table_read(FILE *f, const char *fname, swg_table *t, char *err, size_t e
             FAIL("%s:%d: the line is longer than %d characters", fname, line, LINE_MAX_LEN);
         }
         buf[strcspn(buf, "\r\n")] = '\0';
-        char *s = trim(buf);
+        char *s = swg_csv_trim(buf);
         if (!*s || *s == '#')
             continue;
-        const int n = split(s, fld);
+        const int n = swg_csv_split(s, fld);
         if (n < 0) {
             FAIL("%s:%d: more than %d fields", fname, line, MAX_COLS);
         }
@@ -171,7 +124,7 @@ int swg_table_read(FILE *f, const char *fname, swg_table *t, char *err, size_t e
         } nums[3] = { { sname, cs, &r.size }, { "value", col[C_V], &r.value },
                       { "se", col[C_SE], &r.se } };
         for (int k = 0; k < 3; k++)
-            if (!number(fld[nums[k].c], nums[k].v)) {
+            if (!swg_csv_number(fld[nums[k].c], nums[k].v)) {
                 FAIL("%s:%d: %s '%s' is not a finite decimal number", fname,
                             line, nums[k].name, fld[nums[k].c]);
             }
@@ -203,7 +156,7 @@ int swg_table_read(FILE *f, const char *fname, swg_table *t, char *err, size_t e
             }
             q = &t->q[t->n];
             memset(q, 0, sizeof *q);
-            if (!(q->name = dup(qn))) {
+            if (!(q->name = swg_csv_dup(qn))) {
                 FAIL("%s:%d: out of memory", fname, line);
             }
             t->n++;
@@ -222,7 +175,7 @@ int swg_table_read(FILE *f, const char *fname, swg_table *t, char *err, size_t e
             q->rows = nr;
             q->cap = cap;
         }
-        if (!(r.label = dup(ln))) {
+        if (!(r.label = swg_csv_dup(ln))) {
             FAIL("%s:%d: out of memory", fname, line);
         }
         q->rows[q->n++] = r;
