@@ -154,9 +154,9 @@ IFS=, read -r -a cl <<< "$cases"
 for c in "${cl[@]}"; do
     case "$c" in hertz|jkr-elastic|jkr) ;; *) usage "--cases: unknown case '$c' (hertz, jkr-elastic, jkr)" ;; esac
 done
+outdir_begin "$me" "$out" "$force"   # --out checked first: a refused folder is said before anything else
 command -v "$lmp" >/dev/null 2>&1 || { echo "$me: LAMMPS ('$lmp') is not installed: run etc/setup.sh --lammps (skipped)" >&2; exit 77; }
 [ -x "$sl" ] || { echo "$me: $sl missing: run ./Allwmake" >&2; exit 1; }
-outdir_begin "$me" "$out" "$force"
 t0=$(date +%s)
 rc=0
 "$sl" --out "$tmp" --lmp "$(command -v "$lmp")" --deck "$top/validation/lammps/impact.lmp" \
