@@ -45,11 +45,13 @@ fx="$work/fx"; mkdir -p "$fx"
 SR="$top/bin/snowregime"; SP="$top/bin/snowphoto"; SD="$top/bin/snowdeposit"
 W="$work/wedge"   # a copy of the wedge case's source files
 export SR SP SD W fx top
+export SNOWWALL_TOP=$top   # the wedge post scripts, run from a copy of the case, find etc/outdir.sh here
 
 n=0
 # hc SURFACE KIND PATTERN EXPECTED CMD: one case. KIND err (exit 2), fail (exit 1, an
 # output failure), fatal (OpenFOAM FatalIOError), ok (accepted, exit 0), warn (exit 0
-# with PATTERN in the output, or exit 2). PATTERN: ERE the message must hold (case
+# with PATTERN in the output, or exit 2), keep (exit 2 at a script's commit, the run's
+# results kept in the work folder that the message names: nothing else may change). PATTERN: ERE the message must hold (case
 # insensitive). CMD: bash text run in a fresh folder after $SETUP (bash text).
 SETUP=
 hc() {
@@ -72,6 +74,14 @@ hc() {
     local left; left=$( (cd "$d" && find . -printf '%p %y\n' | sort) | diff "$work/before$n" - | grep '^[<>]' | head -3 | tr '\n' ' ')
     if [ -n "${ACCEPT_RE:-}" ] && [ "$rc" != 0 ] && [ "$rc" -le 128 ] && grep -qE -- "$ACCEPT_RE" "$log"; then
         rc=0; msg="accepted: $msg"
+    fi
+    if [ "$kind" = keep ]; then
+        # refused at the commit with the run's results kept in a work folder that the
+        # message names ("the results are kept in 'DIR'"): only that folder may be new
+        local kept; kept=$(sed -n "s/.*results are kept in '\([^']*\)'.*/\1/p" "$log" | head -1)
+        [ -z "$kept" ] || left=$( (cd "$d" && find . -printf '%p %y\n' | sort) | diff "$work/before$n" - | grep '^[<>]' \
+            | grep -vF -- "./${kept#"$d"/}" | head -3 | tr '\n' ' ')
+        kind=err
     fi
     local named=1
     [ -z "$pat" ] || grep -qiE -- "$pat" "$log" || named=0
@@ -236,6 +246,9 @@ head -c 200 "$fx/photo.png" > "$fx/trunc.png"
 printf 'not an image\n' > "$fx/text.png"
 pw=$(file "$fx/photo.png" | sed -n 's/.* \([0-9]*\) x \([0-9]*\).*/\1/p'); ph=$(file "$fx/photo.png" | sed -n 's/.* \([0-9]*\) x \([0-9]*\).*/\2/p')
 C_OK="10,10,$((pw - 10)),10,$((pw - 10)),$((ph - 10)),10,$((ph - 10))"
+# a deposition.sh result table (one row) and a three-level ladder for snowgci
+printf 'mesh,model,tau_plus,a,b,dep,c,e,f,vplus,se,wood\nwf,nearwall,1,0,0,3,0,1,0,1e-3,5e-4,4.5e-4\n' > "$fx/vplus.csv"
+printf 'quantity,level,h,value,se\nCd,L1,1,0.31,0\nCd,L2,2,0.34,0\nCd,L3,4,0.40,0\n' > "$fx/gci.csv"
 export C_OK pw ph
 
 # ---------------------------------------------------------------- snowregime: command line
@@ -575,6 +588,7 @@ hc $S err 'sim' '--sim without a value' '$SP regions --sim'
 mkdir -p "$W" "$work/fake/etc"
 (cd "$top/tutorials/wedge" && git ls-files -co --exclude-standard . | tar cf - -T -) | (cd "$W" && tar xf -)
 printf '. "%s/etc/openfoam-env.sh"\n' "$top" > "$work/fake/etc/openfoam-env.sh"
+cp "$top/etc/outdir.sh" "$work/fake/etc/"   # the list and output-folder rules Allrun sources
 AR="SNOWWALL_TOP=$work/fake $W/Allrun"; export AR
 S=wedge-Allrun
 ACCEPT_RE='\(run etc/setup.sh|\(run ./Allwmake\)'
@@ -809,6 +823,105 @@ else
 fi
 
 #@CASES-END@
+# ---------------------------------------------------------------- outputs: what was there before a tool writes
+# Every output path of every tool and script against what can already be at it: a
+# folder with a user's file (refused, nothing changed; with --force written, the
+# user's file intact, no marker), the tool's own marked folder with a user's file (the
+# file survives), a symbolic link, a regular file, and, at an output file's name, a
+# FIFO or a device node made here (a /dev/full-like node, c 1 7; never a system one),
+# each left as it was. The harness's before/after listing (name and type) catches any
+# change in a refused case; the accepted ones check the user's file themselves.
+S=outputs
+FOREIGN='mkdir out && echo mine > out/notes.txt'
+OWN='mkdir out && printf "SnowWall output folder\ntool: test\n" > out/.snowwall-output && echo mine > out/notes.txt'
+KEPT='grep -qx mine out/notes.txt'
+NOMARK='! test -e out/.snowwall-output'
+# folder outputs: LABEL, the command before --out, a quick run's options, one output file
+# name (empty: the refusals only, for tools whose run takes minutes or needs LAMMPS)
+while IFS='|' read -r label pre quick fname; do
+    [ -n "$label" ] || continue
+    SETUP=$FOREIGN; hc $S err 'not empty|force' "$label --out a folder holding a user's file: refused, the file kept" "$pre --out out $quick"
+    SETUP='mkdir real && echo mine > real/notes.txt && ln -s real out'
+    hc $S err 'link' "$label --out a symbolic link to a folder: refused" "$pre --out out $quick"
+    SETUP='echo mine > out'; hc $S err "out" "$label --out a regular file: refused, the file kept" "$pre --out out $quick"
+    if [ -n "$fname" ]; then
+        SETUP=$FOREIGN; hc $S ok '' "$label --force into a user's folder: written, the user's file intact, no marker" "$pre --out out $quick --force && $KEPT && $NOMARK"
+        SETUP=$OWN; hc $S ok '' "$label into its own (marked) folder holding a user's file: the file survives" "$pre --out out $quick && $KEPT"
+        # a C tool checks its fixed names before its work; a script finds the clash at its
+        # commit and keeps the results in a named work folder (they may have taken hours)
+        k=err; case "$pre" in *.sh*|*deposition-report*|*wedge-*) k=keep ;; esac
+        SETUP="$OWN && mkfifo out/$fname"; hc $S $k "$fname" "$label: a FIFO at its output name $fname: refused, the FIFO kept" "$pre --out out $quick"
+        SETUP="$OWN && mknod out/$fname c 1 7"; hc $S $k "$fname" "$label: a device node at its output name $fname: refused, the node kept" "$pre --out out $quick"
+    fi
+done <<LIST
+snowregime map|\$SR map|--nd 4 --nv 4 --degree 1 --no-plot|map.csv
+snowregime sensitivity|\$SR sensitivity|--nd 4 --nv 4 --no-plot|
+snowregime convergence|\$SR convergence|--no-plot|
+snowlammps|\$top/bin/snowlammps|--grid 2|
+validation/rough-wall.sh|\$top/validation/rough-wall.sh|--quick|vcrit.md
+validation/contact-laws.sh|\$top/validation/contact-laws.sh||
+validation/rough-reference.sh|\$top/validation/rough-reference.sh|--quick|reference.md
+validation/deposition.sh|\$top/validation/deposition.sh|--short|
+validation/lammps-rough.sh|\$top/validation/lammps-rough.sh|--quick|
+validation/codesaturne/channel.sh|\$top/validation/codesaturne/channel.sh||
+deposition-report|\$top/validation/deposition/deposition-report \$fx/vplus.csv||vplus.md
+wedge-post|\$W/post/wedge-post --case \$W||
+wedge-compose|\$W/post/wedge-compose --results .|--mvd 20|
+LIST
+# single-file outputs: LABEL, the command with FILE where the output goes
+while IFS='|' read -r label cmd; do
+    [ -n "$label" ] || continue
+    SETUP='mknod full c 1 7'; hc $S err 'full' "$label onto a device node (c 1 7, made here): refused, the node kept" "${cmd//FILE/full}"
+    SETUP='mkfifo p'; hc $S err "'p'|p:" "$label onto a FIFO: refused, the FIFO kept" "${cmd//FILE/p}"
+    SETUP='mkdir d'; hc $S err "'d'|d:" "$label onto a folder: refused" "${cmd//FILE/d}"
+    SETUP='echo mine > real && ln -s real link'; hc $S err 'link' "$label onto a symbolic link: refused, the link and its target kept" "${cmd//FILE/link} ; r=\$?; grep -qx mine real; exit \$r"
+done <<LIST
+snowregime collide --trace-csv|\$SR collide --d 5e-5 --vn 1 --trace-csv FILE
+snowregime collide --trace-vtk|\$SR collide --d 5e-5 --vn 1 --trace-vtk FILE
+snowdeposit calibrate --out|\$SD calibrate --out FILE --particles 10 --t-warm 0 --t-run 1 --tau-plus 1
+snowphoto compare --out|\$SP compare --photo \$fx/photo.png --corners \$C_OK --sim \$fx/sim.csv --res 20 --out FILE
+snowgci --md|\$top/bin/snowgci --md FILE \$fx/gci.csv
+wedge-panels --out|\$W/post/wedge-panels --out FILE --title T \$fx/sim.csv A
+LIST
+
+# ---------------------------------------------------------------- list options: the same rule everywhere
+# An empty item or a value twice is refused naming the option; a numeric list out of
+# order is taken in ascending order with a note (the same clouds, cells or runs).
+S=lists
+while IFS='|' read -r label cmd good; do
+    [ -n "$label" ] || continue
+    hc $S err "${label##* }" "$label: an empty item refused" "${cmd//LIST/${good%%,*},,${good#*,}}"
+    hc $S err "${label##* }" "$label: a trailing comma refused" "${cmd//LIST/$good,}"
+    hc $S err "${label##* }" "$label: a value twice refused" "${cmd//LIST/${good%%,*},$good}"
+done <<LIST
+snowregime vcrit --d|\$SR vcrit --d LIST|1e-5,2e-5
+snowregime map --vt|\$SR map --out out --nd 4 --nv 4 --no-plot --vt LIST|0,0.5
+snowregime convergence --accuracy|\$SR convergence --out out --no-plot --accuracy LIST|20,40
+snowdeposit --tau-plus|\$SD channel --particles 10 --t-warm 0 --t-run 1 --tau-plus LIST|1,3
+snowlammps --angles|\$top/bin/snowlammps --out out --angles LIST|0,30
+validation/deposition.sh --tau-plus|\$top/validation/deposition.sh --out out --tau-plus LIST|1,3
+validation/deposition.sh --models|\$top/validation/deposition.sh --out out --models LIST|nearwall,crw
+validation/codesaturne/channel.sh --tau-plus|\$top/validation/codesaturne/channel.sh --out out --tau-plus LIST|1,3
+validation/lammps-rough.sh --angles|\$top/validation/lammps-rough.sh --out out --angles LIST|0,30
+wedge Allrun -sizes|eval "\$AR -sizes LIST"|5,10
+wedge Allrun -dispersion|eval "\$AR -dispersion LIST"|nearwall,crw
+LIST
+hc $S warn 'ascending' 'snowregime vcrit --d 2e-5,1e-5: taken in ascending order, said so' '$SR vcrit --d 2e-5,1e-5'
+hc $S warn 'ascending' 'snowdeposit channel --tau-plus 3,1: taken in ascending order, said so' '$SD channel --particles 10 --t-warm 0 --t-run 1 --tau-plus 3,1'
+ACCEPT_RE='\(run etc/setup.sh|\(run ./Allwmake\)'
+hc $S warn 'ascending' 'wedge Allrun -sizes 10,5: the same clouds, said so' 'eval "$AR -sizes 10,5"'
+ACCEPT_RE=
+
+# ---------------------------------------------------------------- resources: estimated and refused before any work
+S=resources
+hc $S err 'level' 'Allrun -level 9 (outside -3..3)' 'eval "$AR -level 9"'
+hc $S err 'level' 'Allrun -level x' 'eval "$AR -level x"'
+# these reach the estimate, which comes after the pre-run checks: the real repository
+hc $S err 'GB|memory' 'Allrun -level 3: the replay library alone above the memory, refused with the figures' 'SNOWWALL_TOP=$top $W/Allrun -level 3'
+SETUP='cp -r "$W" w && sed -i "s/^\( *replayInterval\) .*/\1 1e-6;/" w/constant/sprayProperties'
+hc $S err 'replayInterval|maxDeltaT' 'Allrun -test with replayInterval 1e-6 (shorter than the step): refused before the spin-up' 'SNOWWALL_TOP=$top ./w/Allrun -test'
+hc $S warn 'estimate' 'Allrun -estimate: one line of cells, memory, disk and time, nothing written' 'SNOWWALL_TOP=$top $W/Allrun -estimate'
+
 # ---------------------------------------------------------------- the table
 cat > "$work/notes.md" <<'NOTES'
 Each with a regression test in the test file of its surface; the cases below are now clean.
@@ -848,6 +961,30 @@ Found by the run of 2026-11-25 17:14 and fixed (main, after the merge of issue22
   walked with k = eps = 0 (dispersion none); refused at set-up.
 - **Unnamed**: `parcelSplitting { regions ( lower 4 ); }` ended in "attempt to read beyond
   EOF"; the list is checked item by item (a name, then its block).
+
+The outputs and resources round (2026-11-27; the `outputs` and `lists` surfaces and the
+OpenFOAM estimates are its cases):
+
+- **An output folder replaced by deletion**: `validation/rough-wall.sh --out DIR` (and
+  deposition.sh, rough-reference.sh, contact-laws.sh, lammps-rough.sh,
+  codesaturne/channel.sh, wedge-compose) removed DIR with whatever a user had in it and
+  moved its own folder there; `deposition-report` removed every `.*.dat` in `--out`. Every
+  script now goes through `etc/outdir.sh` and every C tool through `common/swo_out.c`: an
+  `--out` folder is created, empty, or marked `.snowwall-output`, else refused unless
+  `--force`; files are merged one by one after every target is checked; nothing is
+  deleted that the run did not write.
+- **A device replaced, again**: `snowdeposit calibrate --out /dev/full` (its own writer),
+  `snowphoto`, `snowlammps` and the Code_Saturne book each had their own temp-and-rename;
+  all now use the one writer, which refuses a folder, device, FIFO, socket or link at an
+  output name and checks flush, sync and close (a full disk is exit 1).
+- **List options**: `snowdeposit channel --tau-plus 1,,3` ran 1 and 3 without a word; every
+  CLI and script now refuses empty items and repeats and takes numbers in ascending order
+  with a note.
+- **Resources found hours in**: the replay library's memory and an interval shorter than
+  the time step; both are now checked before the first step (and by Allrun before any
+  work), as are the stick records', parcel splitting's and the size classes' bounds.
+- **A film patch**: a snow patch that the cloud's surface film also owns got nothing, in
+  silence; it is now reported at set-up (fatal when it is every snow patch).
 
 NOTES
 secs=$(( $(date +%s) - start ))
