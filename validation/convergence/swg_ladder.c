@@ -110,16 +110,16 @@ int swg_discretization(const swg_level *l, size_t n, double p_two, const swg_set
         d->kind = SWG_REF_EXTRAPOLATED;
         d->ref = d->gci.phi_ext21;
         d->ref_se = d->gci.se_phi_ext21;
-        for (size_t i = 0; i < n; i++)
-            disc[i] = fabs(l[i].value - d->ref);
+        const double fs = n >= 3 ? s->fs3 : s->fs2;
+        d->ref_u = (fs - 1.0) * fabs(l[0].value - d->ref);
     } else {
         d->kind = SWG_REF_FINEST;
         d->ref = l[0].value;
         d->ref_se = l[0].se;
-        for (size_t i = 1; i < n; i++)
-            disc[i] = fabs(l[i].value - l[0].value);
-        disc[0] = disc[1];
+        d->ref_u = fabs(l[1].value - l[0].value);
     }
+    for (size_t i = 0; i < n; i++)
+        disc[i] = hypot(l[i].value - d->ref, d->ref_u);
     return 0;
 }
 

@@ -49,13 +49,19 @@ typedef struct {
     swg_ref_kind kind;
     double ref;        /* phi_ext21 or phi1 */
     double ref_se;     /* its sampling standard error (se_phi_ext21 or se1) */
+    double ref_u;      /* its own discretization uncertainty: (Fs - 1) |phi1 - phi_ext21|
+                          for the extrapolated value (the GCI band beyond the
+                          extrapolation; Fs 1.25 with three levels, 3 with two), the
+                          finest level's last change |phi2 - phi1| for the finest value */
 } swg_disc;
 
 /* Levels l[0..n-1], finest first (h strictly increasing), n >= 2: the verdict of
  * the finest three (or two, with the assumed order p_two) and the reference; the
- * discretization error of every level into disc[0..n-1]:
- *   extrapolated: disc[i] = |phi_i - phi_ext21|;
- *   finest:       disc[i] = |phi_i - phi1| for i > 0, disc[0] = |phi2 - phi1|. */
+ * discretization error of every level into disc[0..n-1], its distance to the
+ * reference combined with the reference's own uncertainty ref_u:
+ *   disc[i] = sqrt((phi_i - ref)^2 + ref_u^2).
+ * So a coarse level that lands near the finest value of a ladder that does not
+ * converge is not taken as accurate: its error is at least the finest level's. */
 int swg_discretization(const swg_level *l, size_t n, double p_two, const swg_settings *s,
                        swg_disc *d, double *disc, char *err, size_t errlen);
 

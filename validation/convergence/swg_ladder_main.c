@@ -58,10 +58,12 @@ static const char *usage =
 "             the finest three levels give the verdict (snowgci's: libswgci), two\n"
 "             levels the two-level estimate with the assumed order (--order). The\n"
 "             reference is phi_ext21 when the verdict gives an order (monotone,\n"
-"             two-level), and every level's discretization error |phi_i -\n"
-"             phi_ext21|; otherwise the finest value phi1, every coarser level's\n"
-"             error |phi_i - phi1| and the finest level's its last change |phi2 -\n"
-"             phi1|. Every run's total error is sqrt(se^2 + disc^2) of its level,\n"
+"             two-level), with its own uncertainty u = (Fs - 1) |phi1 - phi_ext21|;\n"
+"             otherwise the finest value phi1, with u = |phi2 - phi1| (its last\n"
+"             change). Every level's discretization error is sqrt((phi_i - ref)^2 +\n"
+"             u^2): a coarse level that lands near the reference of a ladder that\n"
+"             does not converge is not taken as accurate. Every run's total error\n"
+"             is sqrt(se^2 + disc^2) of its level,\n"
 "             relative to |reference|, against its run time t_flow + t_clouds; per\n"
 "             target (--targets, percent, default 10,30) the cheapest run whose\n"
 "             relative total error reaches it.\n"
@@ -715,11 +717,11 @@ static void write_md(FILE *f, const char *in, const row *r, size_t n, const quan
         free(ok);
         fputc('\n', f);
     }
-    fprintf(f, "\nReference: phi_ext21 when the verdict gives an order (every level's "
-               "discretization error |phi_i - phi_ext21|), else the finest value (a coarser "
-               "level's error |phi_i - phi_1|, the finest level's its last change |phi_2 - "
-               "phi_1|). Total error sqrt(se^2 + disc^2) over |reference|; run time = flow + "
-               "clouds.\n");
+    fprintf(f, "\nReference: phi_ext21 when the verdict gives an order, with its own "
+               "uncertainty u = (Fs - 1) |phi_1 - phi_ext21|; else the finest value, with u = "
+               "|phi_2 - phi_1| (its last change). Every level's discretization error is "
+               "sqrt((phi_i - reference)^2 + u^2). Total error sqrt(se^2 + disc^2) over "
+               "|reference|; run time = flow + clouds.\n");
     fprintf(f, "\n## Total error of every run\n\n| quantity | run | design | level | run time "
                "[s] | sampling | discretization | total | relative |\n"
                "|---|---|---|---|---:|---:|---:|---:|---:|\n");
