@@ -162,6 +162,8 @@ run_case() {  # run_case N ARGS: Allrun ARGS in a fresh copy $tmp/wedgeN, then t
                     "[ \$(grep -c -E '^\| (5|10|20|40|80) \|' '$r/compose/mvd$mvd/classes.md') = 5 ] && [ \$(grep -c -E '^\| (left side|right side|centre|edges|whole face) \|' '$r/compose/mvd$mvd/regions.md') = 10 ] && grep -q '^Halves: ' '$r/compose/mvd$mvd/regions.md' && [ -s '$r/compose/mvd$mvd/rear_deposit.csv' ] && [ \"\$(head -c 4 '$r/compose/mvd$mvd/rear_deposit.png' | tail -c 3)\" = PNG ]"
             done
             check "compose/mvd20: the spray's interpolated mass median is 20.6 um" "grep -q 'interpolated.*the spray 20.6 um' '$r/compose/mvd20/classes.md'"
+            check "the first picture is the composed map of the decided spray; the main cloud's beside it" \
+                "cmp -s '$r/rear_deposit.png' '$r/compose/mvd20/rear_deposit.png' && [ \"\$(head -c 4 '$r/rear_deposit_main.png' | tail -c 3)\" = PNG ]"
             # post/wedge-resolution reads a real run's tables: the run against itself
             # compares every region with snow and finds no change
             check "wedge-resolution: the run against itself, the 3 sprays and the classes, nothing differs" \
