@@ -1,6 +1,7 @@
 /* swg_main.c - snowgci: the discretization error of a resolution ladder from a
  * table of levels (doc/convergence.md). */
 #include "swg_gci.h"
+#include "swg_csv.h"
 #include "swg_table.h"
 #include "swo_out.h"
 
@@ -140,14 +141,11 @@ static int usage_error(const char *fmt, const char *a, const char *b)
     return 2;
 }
 
+/* an option's value: the tables' strict decimal number (swg_csv_number) */
 static int number(const char *opt, const char *s, double *v)
 {
-    char *end;
-    errno = 0;
-    const double x = strtod(s, &end);
-    if (end == s || *end || errno == ERANGE || !isfinite(x) || strpbrk(s, "xXnN"))
+    if (!swg_csv_number(s, v))
         return usage_error("%s: '%s' is not a finite decimal number", opt, s);
-    *v = x;
     return 0;
 }
 
