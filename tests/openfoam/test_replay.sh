@@ -6,6 +6,7 @@
 #  - a fixed deltaT longer than interval, and adjustTimeStep with maxDeltaT unset or
 #    longer than interval: FatalIOErrors naming replay, interval and the numbers, with
 #    no time step run; maxDeltaT equal to interval accepted;
+#  - a misspelt key and a memoryFraction outside (0, 1]: named FatalIOErrors;
 #  - memory: a mesh whose library (100 000 snapshots of U and p) is about twice the
 #    machine's MemAvailable: refused with the estimate before the first step, in seconds.
 # About 15 s.
@@ -121,6 +122,18 @@ set_replay "$c" 0 0.002 0.001
 (cd "$c" && run log.run "$solver" -replay)
 grep -q '^Replay: 2 snapshots x 64 cells' "$c/log.run" || fail "adjust: maxDeltaT = interval not accepted"
 
+# a misspelt key is named, not ignored; memoryFraction outside (0, 1] refused
+c="$tmp/typo"
+make_case "$c" 4
+foamDictionary -entry replay -set "{ start 0; period 0.02; interval 0.005; fields (U p); memoryFracton 0.5; }" \
+    "$c/system/controlDict" > /dev/null
+expect_refusal "$c" "replay: unknown key 'memoryFracton'"
+for v in 0 -1 1e300; do
+    foamDictionary -entry replay -set "{ start 0; period 0.02; interval 0.005; fields (U p); memoryFraction $v; }" \
+        "$c/system/controlDict" > /dev/null
+    expect_refusal "$c" "replay: 'memoryFraction' must be in (0, 1]"
+done
+
 # 3. memory: 100 000 snapshots of U and p (32 bytes a cell) on a mesh whose library is
 # about twice MemAvailable: refused at once, with the estimate
 avail=$(awk '$1 == "MemAvailable:" { print $2 * 1024 }' /proc/meminfo)
@@ -133,4 +146,4 @@ foamDictionary -entry deltaT -set 0.001 "$c/system/controlDict" > /dev/null
 expect_refusal "$c" "replay: the library of 'period' 100 s / 'interval' 0.001 s = 100000 snapshots"
 grep -q "GB available (MemAvailable of /proc/meminfo)" "$c/log.run" || fail "memory: the error does not give the available memory"
 grep '^Replay: 100000 snapshots' "$c/log.run" || fail "memory: no estimate line before the refusal"
-echo "PASS: replay set-up checks (estimate, time step, memory at $n^3 cells)"
+echo "PASS: replay set-up checks (estimate, time step, keys, memory at $n^3 cells)"
