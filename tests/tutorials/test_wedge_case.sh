@@ -8,7 +8,14 @@
 #                        probability over v_t), the classic rebound, the five size
 #                        classes and their wake-source twins as seventeen clouds in
 #                        one run; the classes composed into the decided spray and
-#                        its envelope (about 2 min)
+#                        its envelope (about 2 min); and judged against a
+#                        synthetic resolution ladder (-ladder): two finer levels
+#                        with every quantity at one value V and no error, so the
+#                        reference is V with no uncertainty of its own whatever
+#                        the verdict, and the run's own level (0, the -test mesh)
+#                        with an error so large that the run represents it: its
+#                        discretization error must be |value - V| and its total
+#                        error sqrt(se^2 + (value - V)^2)
 #   parallel             Allrun -test -coupled -sizes none (serial), the same on 2
 #                        processes, and Allrun -test -parallel 2 -sizes none
 #                        -refine-wake -halfstep (the flow solved until its library
@@ -63,6 +70,23 @@ if git -C "$top" rev-parse >/dev/null 2>&1; then
     (cd "$top/tutorials/wedge" && git ls-files -co --exclude-standard . | sort) > "$tmp/tracked"
 else
     (cd "$top/tutorials/wedge" && ./Allclean >/dev/null && find . -type f | sed 's|^\./||' | sort) > "$tmp/tracked"
+fi
+# the synthetic ladder of the transient run: levels 1 and 2 (cells invented, finer
+# than the -test mesh's 22 608), every quantity the run gathers at V, se 0; level 0
+# (the run's own mesh) with se 1000, so that the run is the level's representative
+if [ "$mode" = transient ]; then
+    {
+        echo "# synthetic: two finer levels, every quantity at 0.5 (test_wedge_case.sh)"
+        echo "# setting gate regime"
+        echo "quantity,run,design,level,cells,step,value,se,t_flow,t_clouds"
+        for q in Cd Cp_b St capture-5um capture-10um capture-20um capture-40um capture-80um \
+                 $(for m in 20 8 56; do for g in face left right centre edges; do echo "$g-mvd$m"; done; done); do
+            echo "$q,fake/L0,default,0,22608,5e-4,0.5,1000,10,10"
+            echo "$q,fake/L1,default,1,60000,2e-4,0.5,0,100,100"
+            echo "$q,fake/L2,default,2,170000,1e-4,0.5,0,400,300"
+        done
+    } > "$tmp/ladder.csv"
+    runs[0]="${runs[0]} -ladder $tmp/ladder.csv"
 fi
 fails=0
 check() { if eval "$2"; then echo "ok   $1"; else echo "FAIL $1"; fails=$((fails+1)); fi; }
@@ -207,6 +231,25 @@ run_case() {  # run_case N ARGS: Allrun ARGS in a fresh copy $tmp/wedgeN, then t
             check "-halfstep: every step at Courant number <= 1.01" \
                 "awk '/^Courant Number/ { if (\$NF > m) m = \$NF; n++ } END { exit !(n > 10 && m <= 1.01) }' '$w/$log'"
             check "-halfstep: maxCo 1 in the controlDict" "grep -q 'maxCo 1;' '$w/system/halfStep'" ;;
+    esac
+    case "$args" in
+        *-ladder*)
+            # the known answer: reference 0.5 (V) with no own uncertainty, so for the
+            # rear face (kg / 30 min) disc = |value - V|, total = hypot(se, value - V)
+            local te="$r/ladder/total_error.csv" name; name=$(basename "$w")
+            check "-ladder: results/total_error.md judged, results/ladder/ written" \
+                "grep -q '^This run judged against the resolution ladder' '$r/total_error.md' && [ -s '$te' ] && [ -s '$r/ladder/ladder.md' ]"
+            local fv fe
+            read -r fv fe < <(awk -F'|' '/^## / { exit } $2 == " whole face " { v = $3; e = $4; gsub(/ |%/, "", v); gsub(/ |%/, "", e); print v, e }' "$r/compose/mvd20/regions.md")
+            check "-ladder: the face's value and se in total_error.csv are the run's ($fv kg, $fe %)" \
+                "awk -F, -v run='$name' -v v='$fv' -v e='$fe' '\$2 == run && \$1 == \"face-mvd20\" { d = \$7 - v; s = \$8 - v * e / 100; if (d < 0) d = -d; if (s < 0) s = -s; ok = (d <= 1e-6 * v && s <= 1e-5 * v) } END { exit !ok }' '$te'"
+            # (the CSV holds 6 significant digits: 1e-4 relative; a wrong formula is off by far more)
+            check "-ladder: every judged quantity: reference 0.5, disc = |value - 0.5|, total = hypot(se, disc), rel = total / 0.5" \
+                "awk -F, -v run='$name' 'function a(x) { return x < 0 ? -x : x } \$2 == run { n++; d = a(\$7 - 0.5); t = sqrt(\$8 ^ 2 + d ^ 2)
+                    if (a(\$12 - 0.5) > 1e-9 || a(\$9 - d) > 1e-4 * d + 1e-12 || a(\$10 - t) > 1e-4 * t + 1e-12 || a(\$11 - t / 0.5) > 1e-4 * t + 1e-12) { bad++; print \"     bad row: \" \$0 } }
+                    END { exit !(n >= 18 && !bad) }' '$te'"
+            check "-ladder: the face's total error in total_error.md" \
+                "grep -qE '^Rear face, decided spray \(MVD 20 um\): total error [0-9.]+ %' '$r/total_error.md'" ;;
     esac
     case "$args" in
         *-steady*|*-coupled*) ;;

@@ -50,6 +50,9 @@ refused "Allrun: -sizes: 'nothing' in 'nothing' is not a number" -sizes nothing
 refused "-sizes needs whole diameters in um (1..1000), comma-separated, or none, got '5.5'" -sizes 5.5
 refused "-oversubscribe needs -parallel N with N > 1" -oversubscribe
 refused "-gate must be off, tangential, shear or regime, got 'on'" -gate on
+refused "-ladder needs a file (a ladder.csv of post/wedge-ladder) or none" -ladder
+refused "-ladder $tmp/no-such.csv: not a readable file" -ladder "$tmp/no-such.csv"
+refused "-ladder $tmp: not a readable file" -ladder "$tmp"
 # list options (etc/outdir.sh's outdir_list): an empty item or a name twice refused,
 # named with the text; an unsorted -sizes taken in ascending order with a note (seen
 # before a later refusal)
@@ -146,6 +149,9 @@ if [ -x /usr/bin/simpleFoam ] && [ -x "$top/bin/snowregime" ] && [ -x "$top/bin/
     [ "$steps2" = $((2 * steps)) ] || fail "Allrun -estimate -halfstep: $steps2 steps, want 2 x $steps"
     estimate -refine-wake
     grep -q '^Allrun: estimate: 138671 cells' "$tmp/out" || fail "Allrun -estimate -refine-wake: $(cat "$tmp/out")"
+    # five splits of the 20 x 20 cells on the rear face: 100 568 + 5 x 400 (checkMesh's count)
+    estimate -rear-layers
+    grep -q '^Allrun: estimate: 102568 cells' "$tmp/out" || fail "Allrun -estimate -rear-layers: $(cat "$tmp/out")"
     estimate -test -sizes 10,5,20 -compare -rebound    # 1 + 3 + 1 + 3 clouds
     grep -q ' 8 clouds, ' "$tmp/out" || fail "Allrun -estimate -test -sizes 10,5,20 -compare -rebound: $(cat "$tmp/out")"
     sp="$w/constant/sprayProperties"
