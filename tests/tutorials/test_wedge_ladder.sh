@@ -8,8 +8,12 @@
 # (maxCo 2 reached on every level; the mean step in the window shrinking from
 # level to level), the replay interval a whole fraction of the library's period
 # and never below maxDeltaT, results/level.txt whole (wall times of the flow and
-# the clouds), the base-pressure records, and the collector's outputs (every
-# quantity on three levels, a verdict each, the total-error table and plot).
+# the clouds), the base-pressure records, the collector's outputs (every
+# quantity on three levels, a verdict each, the total-error table and plot),
+# Allrun's results/total_error.md saying why no -test level is judged against the
+# default mesh's constant/ladder.csv, and --with (a stored ladder joined with one
+# run gives that run the same total error as the ladder of all the runs; a run
+# name clash and a foreign header refused).
 #
 # It runs three cases (measured on 2 cores shared with other jobs: 136 s in
 # all at load average 2-4, 322 s at 7-8; most of it set-up and the
@@ -102,6 +106,29 @@ if [ "$fails" = 0 ]; then
     "$G" "$tmp/ladder/gci.csv" > "$tmp/gci.out" 2>&1
     check "snowgci reads gci.csv" "[ $? = 0 ] && grep -q '^quantity face-mvd20: 3 levels' '$tmp/gci.out'"
     grep -E '^\| (Cd|Cp_b|St|face-mvd20) \|' "$tmp/ladder/ladder.md"
+    # Allrun's judgement against the case's constant/ladder.csv (the default mesh's
+    # levels -1, 0, 1): no -test level is on it, each says why
+    check "level -2: total_error.md not judged, level not on the ladder" \
+        "grep -q '^Not judged: .*level -2 is not on the ladder' '$tmp/level-2/results/total_error.md'"
+    check "level 0: total_error.md not judged, another mesh (22608 cells here)" \
+        "grep -q '^Not judged: .*level 0 has 100568 cells on the ladder, 22608 here' '$tmp/level0/results/total_error.md'"
+    # --with: the two coarse levels stored, level 0 given as a run: the same total
+    # error for level 0 as the three runs gathered together
+    grep -v ',level0,' "$tmp/ladder/ladder.csv" > "$tmp/stored.csv"
+    "$top/tutorials/wedge/post/wedge-ladder" --snowladder "$L" --out "$tmp/with" --run "$tmp/level0" \
+        --with "$tmp/stored.csv" > "$tmp/with.log" 2>&1
+    check "wedge-ladder --with: exit 0" "[ $? = 0 ]"
+    check "wedge-ladder --with: level 0's total errors equal the three-run ladder's" \
+        "diff <(grep ',level0,' '$tmp/ladder/total_error.csv' | sort) <(grep ',level0,' '$tmp/with/total_error.csv' | sort)"
+    "$top/tutorials/wedge/post/wedge-ladder" --snowladder "$L" --out "$tmp/with2" --run "$tmp/level0" \
+        --with "$tmp/ladder/ladder.csv" > "$tmp/with2.log" 2>&1
+    check "wedge-ladder --with: a stored run named like a --run folder refused (exit 2), nothing written" \
+        "[ $? = 2 ] && grep -q 'run \"level0\" is also the name of a --run folder' '$tmp/with2.log' && [ ! -e '$tmp/with2' ]"
+    sed '1s/^quantity,run,/quantity,name,/' "$tmp/stored.csv" > "$tmp/bad.csv"
+    "$top/tutorials/wedge/post/wedge-ladder" --snowladder "$L" --out "$tmp/with3" --run "$tmp/level0" \
+        --with "$tmp/bad.csv" > "$tmp/with3.log" 2>&1
+    check "wedge-ladder --with: a foreign header refused (exit 2), nothing written" \
+        "[ $? = 2 ] && grep -q 'the header must be' '$tmp/with3.log' && [ ! -e '$tmp/with3' ]"
 fi
 echo "$fails failure(s)"
 [ "$fails" = 0 ]

@@ -53,6 +53,15 @@ refused "-gate must be off, tangential, shear or regime, got 'on'" -gate on
 refused "-ladder needs a file (a ladder.csv of post/wedge-ladder) or none" -ladder
 refused "-ladder $tmp/no-such.csv: not a readable file" -ladder "$tmp/no-such.csv"
 refused "-ladder $tmp: not a readable file" -ladder "$tmp"
+# a malformed ladder is refused before the run, not after it
+printf '# a comment\nquantity,run,level,cells,value,se,t_flow,t_clouds\n' > "$tmp/l1.csv"
+refused "-ladder $tmp/l1.csv: line 2: not the header of post/wedge-ladder" -ladder "$tmp/l1.csv"
+printf 'quantity,run,design,level,cells,step,value,se,t_flow,t_clouds\nCd,a,default,0,100,1e-3,0.4,0.01,1\n' > "$tmp/l2.csv"
+refused "-ladder $tmp/l2.csv: line 2: not a row of ten fields" -ladder "$tmp/l2.csv"
+printf 'quantity,run,design,level,cells,step,value,se,t_flow,t_clouds\nCd,a,default,zero,100,1e-3,0.4,0.01,1,1\n' > "$tmp/l3.csv"
+refused "-ladder $tmp/l3.csv: line 2: not a row of ten fields with a whole level" -ladder "$tmp/l3.csv"
+printf '# only comments\nquantity,run,design,level,cells,step,value,se,t_flow,t_clouds\n' > "$tmp/l4.csv"
+refused "-ladder $tmp/l4.csv: no row" -ladder "$tmp/l4.csv"
 # list options (etc/outdir.sh's outdir_list): an empty item or a name twice refused,
 # named with the text; an unsorted -sizes taken in ascending order with a note (seen
 # before a later refusal)
