@@ -124,11 +124,19 @@ if [ "$fails" = 0 ]; then
         --with "$tmp/ladder/ladder.csv" > "$tmp/with2.log" 2>&1
     check "wedge-ladder --with: a stored run named like a --run folder refused (exit 2), nothing written" \
         "[ $? = 2 ] && grep -q 'run \"level0\" is also the name of a --run folder' '$tmp/with2.log' && [ ! -e '$tmp/with2' ]"
-    sed '1s/^quantity,run,/quantity,name,/' "$tmp/stored.csv" > "$tmp/bad.csv"
+    sed 's/^quantity,run,/quantity,name,/' "$tmp/stored.csv" > "$tmp/bad.csv"
     "$top/tutorials/wedge/post/wedge-ladder" --snowladder "$L" --out "$tmp/with3" --run "$tmp/level0" \
         --with "$tmp/bad.csv" > "$tmp/with3.log" 2>&1
     check "wedge-ladder --with: a foreign header refused (exit 2), nothing written" \
         "[ $? = 2 ] && grep -q 'the header must be' '$tmp/with3.log' && [ ! -e '$tmp/with3' ]"
+    # ladder.csv names its runs' family; another family (here: rear layers) is refused
+    check "ladder.csv: the family's settings (variant test, rear_layers 0)" \
+        "grep -qx '# setting variant test' '$tmp/ladder/ladder.csv' && grep -qx '# setting rear_layers 0' '$tmp/ladder/ladder.csv'"
+    sed 's/^# setting rear_layers 0$/# setting rear_layers 1/' "$tmp/stored.csv" > "$tmp/other.csv"
+    "$top/tutorials/wedge/post/wedge-ladder" --snowladder "$L" --out "$tmp/with4" --run "$tmp/level0" \
+        --with "$tmp/other.csv" > "$tmp/with4.log" 2>&1
+    check "wedge-ladder --with: a ladder of another mesh family refused (exit 2), nothing written" \
+        "[ $? = 2 ] && grep -q 'not one mesh family' '$tmp/with4.log' && [ ! -e '$tmp/with4' ]"
 fi
 echo "$fails failure(s)"
 [ "$fails" = 0 ]
