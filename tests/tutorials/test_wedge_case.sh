@@ -17,11 +17,13 @@
 #                        discretization error must be |value - V| and its total
 #                        error sqrt(se^2 + (value - V)^2)
 #   parallel             Allrun -test -coupled -sizes none (serial), the same on 2
-#                        processes, and Allrun -test -parallel 2 -sizes none
+#                        processes, Allrun -test -parallel 2 -sizes none
 #                        -refine-wake -halfstep (the flow solved until its library
 #                        is complete, then played back; the resolution check's
 #                        mesh and time step: its cell count and Courant numbers
-#                        checked), gates off: each checked, and the nose impact
+#                        checked) and Allrun -test -parallel 2 -sizes none
+#                        -rear-layers (the rear face's cells split: the cell
+#                        count, the y+ logged), gates off: each checked, and the nose impact
 #                        counts of the two coupled runs agree within 4 Poisson
 #                        standard deviations (about 2.5 min)
 # Checked for every run whose flow is played back: the library is complete, the
@@ -49,7 +51,8 @@ mode=${WEDGE_MODE:-transient}
 case "$mode" in
     transient) runs=("-test -gate regime -compare -feedback -rough -rebound -wake-source")
                gates="off tangential shear regime feedback rough rebound sizes/d5um sizes/d10um sizes/d20um sizes/d40um sizes/d80um wake_source/d5um wake_source/d80um" ;;
-    parallel)  runs=("-test -coupled -sizes none" "-test -parallel 2 -coupled -sizes none" "-test -parallel 2 -sizes none -refine-wake -halfstep"); gates=off ;;
+    parallel)  runs=("-test -coupled -sizes none" "-test -parallel 2 -coupled -sizes none" "-test -parallel 2 -sizes none -refine-wake -halfstep"
+                     "-test -parallel 2 -sizes none -rear-layers"); gates=off ;;
     steady)    runs=("-steady -test"); gates=off ;;
     *) echo "unknown WEDGE_MODE '$mode'"; exit 2 ;;
 esac
@@ -224,6 +227,17 @@ run_case() {  # run_case N ARGS: Allrun ARGS in a fresh copy $tmp/wedgeN, then t
             # -test: nxDown 16 -> 20, nBody 12 -> 15: (8 + 12 + 20) x (15 + 2 x 7)^2 - 12 x 15^2 cells
             check "-refine-wake: the mesh of nxDown 20, nBody 15: 30 940 cells" \
                 "grep -q 'blockMesh (test, wake refined: .*nxDown 20; nBody 15;' '$tmp/allrun$n.log' && grep -q 'cells: *30940\$' '$tmp/allrun$n.log'" ;;
+    esac
+    case "$args" in
+        *-rear-layers*)
+            # -test: the 12 x 12 cells on the rear face split five times: 22 608 + 5 x 144
+            check "-rear-layers: the -test mesh with the rear face's cells split five times: 23 328 cells" \
+                "grep -q 'cells: *23328\$' '$tmp/allrun$n.log'"
+            check "-rear-layers: only the face's 144 cells split each time" \
+                "[ \"\$(grep -h '^ *cells:' '$w'/log.refineWallLayer.* | tr -d ' ' | sort -u)\" = 'cells:144' ]"
+            check "-rear-layers: the rear face's first-cell y+ logged, below 5 on average" \
+                "awk '/rear face, first-cell y\\+/ { m = \$(NF - 1); f = 1 } END { exit !(f && m > 0 && m < 5) }' '$tmp/allrun$n.log'"
+            check "-rear-layers: level.txt says so" "grep -qx 'rear_layers 1' '$r/level.txt'" ;;
     esac
     case "$args" in
         *-halfstep*)
