@@ -4,8 +4,11 @@
 # answers: the batch-means mean of a series, the difference of two series, a
 # monotone ladder of three levels with two designs (the reference, every run's
 # total error, the cheapest run per target), the collector's table (Cd, Cp_b,
-# St, regions and classes) and its plot; every bad input refused with one line,
-# a non-zero exit and nothing written; Allrun -level's refusals.
+# St, regions and classes), its plot and its mesh-family settings; --with (a run
+# judged against stored rows as in the whole ladder, a quantity the file lacks
+# left out); every bad input refused with one line (two mesh families, a name
+# clash, a foreign header, another family in --with), a non-zero exit and
+# nothing written; Allrun -level's refusals.
 set -u
 : "${SW_TOP:?SW_TOP not set (run through ctest)}"
 : "${SW_BUILD:?SW_BUILD not set (run through ctest)}"
@@ -182,9 +185,30 @@ if command -v gnuplot >/dev/null; then
     # the picks (closed form: lC 3.2 % at 50 s; lB 10.2 % at 40 s; lA 40 %)
     grep -q "^wedge-ladder: face-mvd20, the cheapest run: <= 10 %: lC (level 1, 50 s, .*<= 30 %: lB (level 0, 40 s," "$WORK/c.out" &&
         ok "collector: the cheapest runs under 10 and 30 %" || fail "collector picks: $(tail -1 "$WORK/c.out")"
-    # refusals: a -refine-wake run, a missing level.txt, a name twice, no --out
+    # ladder.csv names the runs' family; --with: the stored rows of lA and lB joined
+    # with the run lC give lC the same total errors as the three-run ladder
+    grep -qx '# setting variant test' "$WORK/lad/ladder.csv" && grep -qx '# setting refine_wake 0' "$WORK/lad/ladder.csv" &&
+        grep -qx '# setting rear_layers 0' "$WORK/lad/ladder.csv" && ok "ladder.csv: the family's settings" ||
+        fail "ladder.csv: no family settings: $(head -8 "$WORK/lad/ladder.csv")"
+    grep -v ',lC,' "$WORK/lad/ladder.csv" >"$WORK/stored.csv"
+    "$C" --snowladder "$L" --run "$WORK/runs/lC" --with "$WORK/stored.csv" --out "$WORK/with" >"$WORK/w.out" 2>"$WORK/w.err" &&
+        diff <(grep ',lC,' "$WORK/lad/total_error.csv") <(grep ',lC,' "$WORK/with/total_error.csv") >/dev/null &&
+        ok "--with: lC judged against the stored lA, lB as in the three-run ladder" || fail "--with: $(cat "$WORK/w.err")"
+    # a quantity the stored ladder lacks: left out with a note, the others judged
+    grep -v '^capture-20um,' "$WORK/stored.csv" >"$WORK/stored2.csv"
+    "$C" --snowladder "$L" --run "$WORK/runs/lC" --with "$WORK/stored2.csv" --out "$WORK/with2" >"$WORK/w2.out" 2>"$WORK/w2.err" &&
+        grep -q 'note: quantity capture-20um is not on the ladder' "$WORK/w2.err" && ! grep -q '^capture-20um,' "$WORK/with2/total_error.csv" &&
+        grep -q '^capture-10um,lC,' "$WORK/with2/total_error.csv" && ok "--with: a quantity the ladder lacks left out with a note" ||
+        fail "--with, a missing quantity: $(cat "$WORK/w2.err")"
+    refused 2 "run \"lC\" is also the name of a --run folder" "$C" --snowladder "$L" --run "$WORK/runs/lC" --with "$WORK/lad/ladder.csv" --out "$WORK/lad2"
+    sed 's/^quantity,run,/quantity,name,/' "$WORK/stored.csv" >"$WORK/bad.csv"
+    refused 2 "the header must be" "$C" --snowladder "$L" --run "$WORK/runs/lC" --with "$WORK/bad.csv" --out "$WORK/lad2"
+    sed 's/^# setting refine_wake 0$/# setting refine_wake 1/' "$WORK/stored.csv" >"$WORK/other.csv"
+    refused 2 "not one mesh family" "$C" --snowladder "$L" --run "$WORK/runs/lC" --with "$WORK/other.csv" --out "$WORK/lad2"
+    refused 2 "--with needs at least one --run" "$C" --snowladder "$L" --with "$WORK/stored.csv" --out "$WORK/lad2"
+    # refusals: runs of two mesh families (one -refine-wake), a missing level.txt, a name twice, no --out
     fab lW 0 3000 0.7 1
-    refused 2 "refine-wake" "$C" --snowladder "$L" --run "$WORK/runs/lA" --run "$WORK/runs/lW" --out "$WORK/lad2"
+    refused 2 "not the mesh family of --run $WORK/runs/lA (variant test, refine_wake 1" "$C" --snowladder "$L" --run "$WORK/runs/lA" --run "$WORK/runs/lW" --out "$WORK/lad2"
     mkdir -p "$WORK/runs/empty"
     refused 1 "no results/level.txt" "$C" --snowladder "$L" --run "$WORK/runs/lA" --run "$WORK/runs/empty" --out "$WORK/lad2"
     mkdir -p "$WORK/other" && cp -r "$WORK/runs/lA" "$WORK/other/lA"
