@@ -161,6 +161,15 @@ if [ -x /usr/bin/simpleFoam ] && [ -x "$top/bin/snowregime" ] && [ -x "$top/bin/
     # five splits of the 20 x 20 cells on the rear face: 100 568 + 5 x 400 (checkMesh's count)
     estimate -rear-layers
     grep -q '^Allrun: estimate: 102568 cells' "$tmp/out" || fail "Allrun -estimate -rear-layers: $(cat "$tmp/out")"
+    # a ladder whose numbers snowladder refuses (nan, one level only): refused before the run
+    { echo 'quantity,run,design,level,cells,step,value,se,t_flow,t_clouds'
+      echo 'Cd,a,default,0,100,1e-3,nan,0.01,1,1'; echo 'Cd,b,default,1,200,1e-3,0.4,0.01,1,1'; } > "$tmp/l5.csv"
+    refused "-ladder $tmp/l5.csv: snowladder cannot judge against it" -estimate -ladder "$tmp/l5.csv"
+    grep -q "value 'nan' is not a finite decimal number" "$tmp/err" || fail "the nan ladder: $(cat "$tmp/err")"
+    { echo 'quantity,run,design,level,cells,step,value,se,t_flow,t_clouds'; echo 'Cd,a,default,0,100,1e-3,0.4,0.01,1,1'; } > "$tmp/l6.csv"
+    refused "-ladder $tmp/l6.csv: snowladder cannot judge against it" -estimate -ladder "$tmp/l6.csv"
+    grep -q "has 1 level (need at least 2)" "$tmp/err" || fail "the one-level ladder: $(cat "$tmp/err")"
+    estimate -ladder none
     estimate -test -sizes 10,5,20 -compare -rebound    # 1 + 3 + 1 + 3 clouds
     grep -q ' 8 clouds, ' "$tmp/out" || fail "Allrun -estimate -test -sizes 10,5,20 -compare -rebound: $(cat "$tmp/out")"
     sp="$w/constant/sprayProperties"
