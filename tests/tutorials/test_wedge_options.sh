@@ -150,17 +150,28 @@ if [ -x /usr/bin/simpleFoam ] && [ -x "$top/bin/snowregime" ] && [ -x "$top/bin/
         echo "ok   Allrun -estimate $*: $(cut -c1-110 "$tmp/out")..."
     }
     estimate
-    # the coarse mesh's 100 568 cells (doc/wedge.md), the spray and the five classes
-    grep -q '^Allrun: estimate: 100568 cells, 6 clouds, ' "$tmp/out" || fail "Allrun -estimate: $(cat "$tmp/out")"
+    # the coarse mesh's 100 568 cells with five splits of the 20 x 20 cells on the
+    # rear face (the default -rear-layers): 102 568 (checkMesh's count, doc/wedge.md);
+    # the spray and the five classes
+    grep -q '^Allrun: estimate: 102568 cells, 6 clouds, ' "$tmp/out" || fail "Allrun -estimate: $(cat "$tmp/out")"
+    flow1=$(sed 's/.*(flow \([0-9.e+-]*\),.*/\1/' "$tmp/out")
     steps=$(sed 's/.*about \([0-9]*\) time steps.*/\1/' "$tmp/out")
     estimate -halfstep
     steps2=$(sed 's/.*about \([0-9]*\) time steps.*/\1/' "$tmp/out")
     [ "$steps2" = $((2 * steps)) ] || fail "Allrun -estimate -halfstep: $steps2 steps, want 2 x $steps"
+    # -refine-wake: 138 671 cells (25 x 25 on the rear face) + 5 x 625
     estimate -refine-wake
-    grep -q '^Allrun: estimate: 138671 cells' "$tmp/out" || fail "Allrun -estimate -refine-wake: $(cat "$tmp/out")"
-    # five splits of the 20 x 20 cells on the rear face: 100 568 + 5 x 400 (checkMesh's count)
+    grep -q '^Allrun: estimate: 141796 cells' "$tmp/out" || fail "Allrun -estimate -refine-wake: $(cat "$tmp/out")"
+    # the rear face on its wall function: the block mesh's 100 568 cells, the flow
+    # 1/1.64 as long (the cells' ratio aside)
+    estimate -no-rear-layers
+    grep -q '^Allrun: estimate: 100568 cells' "$tmp/out" || fail "Allrun -estimate -no-rear-layers: $(cat "$tmp/out")"
+    flow0=$(sed 's/.*(flow \([0-9.e+-]*\),.*/\1/' "$tmp/out")
+    awk -v a="$flow1" -v b="$flow0" 'BEGIN { r = a / b / (102568 / 100568); exit !(r > 1.5 && r < 1.8) }' ||
+        fail "Allrun -estimate: the flow $flow1 min with the rear layers, $flow0 min without (want about 1.64 x per cell)"
     estimate -rear-layers
     grep -q '^Allrun: estimate: 102568 cells' "$tmp/out" || fail "Allrun -estimate -rear-layers: $(cat "$tmp/out")"
+    refused "-rear-layers needs the transient route" -steady -rear-layers
     # a ladder whose numbers snowladder refuses (nan, one level only): refused before the run
     { echo 'quantity,run,design,level,cells,step,value,se,t_flow,t_clouds'
       echo 'Cd,a,default,0,100,1e-3,nan,0.01,1,1'; echo 'Cd,b,default,1,200,1e-3,0.4,0.01,1,1'; } > "$tmp/l5.csv"
@@ -181,9 +192,9 @@ if [ -x /usr/bin/simpleFoam ] && [ -x "$top/bin/snowregime" ] && [ -x "$top/bin/
     estimate -halfstep                     # 5e-4 = the -halfstep maxDeltaT: accepted
     refused "replayInterval 0.0005 s is shorter than the run's maxDeltaT 1e-3 s" -estimate
     cp "$tmp/sprayProperties" "$sp"
-    sed -i 's/^\( *replayPeriod *\)[^;]*;/\1100;/' "$sp"     # 100 000 snapshots of 100 568 cells
+    sed -i 's/^\( *replayPeriod *\)[^;]*;/\1100;/' "$sp"     # 100 000 snapshots of 102 568 cells
     refused "the flow and its replay library need about" -estimate
-    grep -q "100000 snapshots x 100568 cells x 7 values x 8 bytes" "$tmp/err" || fail "the memory refusal: $(cat "$tmp/err")"
+    grep -q "100000 snapshots x 102568 cells x 7 values x 8 bytes" "$tmp/err" || fail "the memory refusal: $(cat "$tmp/err")"
     cp "$tmp/sprayProperties" "$sp"
 else
     echo "skip the estimate checks: OpenFOAM or the build missing"
