@@ -7,6 +7,9 @@
 #    longer than interval: FatalIOErrors naming replay, interval and the numbers, with
 #    no time step run; maxDeltaT equal to interval accepted;
 #  - a misspelt key and a memoryFraction outside (0, 1]: named FatalIOErrors;
+#  - resuming a run whose library is stored (store yes): stopped after and inside
+#    the library, started again from its last write, the same flow to 1e-9 as a run
+#    never stopped; a late start without store, and a stored snapshot missing, refused;
 #  - memory: a mesh whose library (100 000 snapshots of U and p) is about twice the
 #    machine's MemAvailable: refused with the estimate before the first step, in seconds.
 # About 15 s.
@@ -133,6 +136,63 @@ for v in 0 -1 1e300; do
         "$c/system/controlDict" > /dev/null
     expect_refusal "$c" "replay: 'memoryFraction' must be in (0, 1]"
 done
+
+# 4. resuming (store yes): a run stopped at T and started again from its last written
+# time (startFrom latestTime) ends with the flow of a run that was never stopped, to
+# 1e-9: stopped after the library (0.03 s: every snapshot read back) and inside it
+# (0.01 s: three read back, the fourth taken after the restart). The box's writes
+# are ascii with 17 digits, so the restart time's fields are exact (the library is
+# binary whatever the case's format).
+# Refused before the first step: a late start without store, and a stored library
+# with a snapshot missing.
+resume_case() {  # resume_case DIR END: a stored library 0 .. 0.02 s, writes every 0.01 s to END
+    make_case "$1" 4
+    foamDictionary -entry replay -set "{ start 0; period 0.02; interval 0.005; fields (U p); store yes; }" \
+        "$1/system/controlDict" > /dev/null
+    foamDictionary -entry writePrecision -set 17 "$1/system/controlDict" > /dev/null
+    foamDictionary -entry writeInterval -set 0.01 "$1/system/controlDict" > /dev/null
+    foamDictionary -entry endTime -set "$2" "$1/system/controlDict" > /dev/null
+}
+u_ascii() {  # u_ascii DIR TIME: the internal U of TIME, one component a line
+    awk '/^internalField/ { f = 1; next } f && /^\(/ && NF == 3 { gsub(/[()]/, ""); print $1; print $2; print $3 } f && /^\)/ { exit }' "$1/$2/U"
+}
+c="$tmp/whole"
+resume_case "$c" 0.06
+(cd "$c" && run log.run "$solver" -replay)
+[ "$(wc -l < "$c/replayLibrary/times")" = 4 ] || fail "whole: replayLibrary/times does not list 4 snapshots"
+[ -f "$c/replayLibrary/3/U" ] && [ -f "$c/replayLibrary/3/p" ] || fail "whole: snapshot 3 not written"
+grep -q 'format *binary' "$c/replayLibrary/0/U" || fail "whole: snapshot 0 not binary"
+u_ascii "$c" 0.06 > "$tmp/u.whole"
+[ "$(wc -l < "$tmp/u.whole")" = 192 ] || fail "whole: U at 0.06 s has $(wc -l < "$tmp/u.whole") values, want 64 x 3"
+for stop in 0.03 0.01; do
+    c="$tmp/stop$stop"
+    resume_case "$c" "$stop"
+    (cd "$c" && run log.run1 "$solver" -replay)
+    foamDictionary -entry endTime -set 0.06 "$c/system/controlDict" > /dev/null
+    (cd "$c" && run log.run2 "$solver" -replay)
+    # the library completed by the first run (stopped after it) or the second
+    want=4 done=1; [ "$stop" = 0.03 ] || want=3 done=2
+    grep -q "^Replay: resumed at $stop s: $want of 4 snapshots read back" "$c/log.run2" ||
+        { tail -20 "$c/log.run2" >&2; fail "stop $stop: not resumed with $want snapshots read back"; }
+    grep -q 'Replay: library complete, 4 snapshots' "$c/log.run$done" || fail "stop $stop: the library was not completed in run $done"
+    head -1 <(grep '^Time = ' "$c/log.run2") | grep -q "^Time = $(awk -v s="$stop" 'BEGIN { print s + 0.005 }')\$" ||
+        fail "stop $stop: the second run does not start after $stop s"
+    u_ascii "$c" 0.06 > "$tmp/u.stop"
+    paste "$tmp/u.whole" "$tmp/u.stop" | awk '{ d = $1 - $2; if (d < 0) d = -d; if (d > m) m = d; n++ }
+        END { printf "resume at %s s: %d values, largest |U - U_whole| %.3g\n", s, n, m; exit !(n == 192 && m <= 1e-9) }' s="$stop" ||
+        fail "stop $stop: U at 0.06 s is not the uninterrupted run's"
+done
+# refusals: a late start without store; a snapshot missing from the stored library
+c="$tmp/stop0.03"
+foamDictionary -entry replay -set "{ start 0; period 0.02; interval 0.005; fields (U p); }" \
+    "$c/system/controlDict" > /dev/null
+foamDictionary -entry endTime -set 0.08 "$c/system/controlDict" > /dev/null
+expect_refusal "$c" "or resume a run whose library was stored: store yes"
+foamDictionary -entry replay -set "{ start 0; period 0.02; interval 0.005; fields (U p); store yes; }" \
+    "$c/system/controlDict" > /dev/null
+sed -i '$d' "$c/replayLibrary/times"
+expect_refusal "$c" "but 3 are there"
+grep -q "the 4 snapshots taken by then are read back from" "$c/log.run" || fail "missing snapshot: the error does not say what was due"
 
 # 3. memory: 100 000 snapshots of U and p (32 bytes a cell) on a mesh whose library is
 # about twice MemAvailable: refused at once, with the estimate

@@ -23,7 +23,12 @@
 #                        -halfstep (the flow solved until its library is complete,
 #                        then played back; the resolution check's mesh and time
 #                        step, with the default rear layers: its cell count and
-#                        Courant numbers checked), gates off (about 2.5 min)
+#                        Courant numbers checked), interrupted a few steps after
+#                        its write at 0.15 s and resumed (Allrun -resume: the
+#                        library read back, the logs and tables joined, the wall
+#                        model's totals carried on; every check below then holds
+#                        for the resumed run, the period check across the
+#                        restart), gates off (about 2.5 min)
 #   steady               Allrun -steady -test: the frozen-RANS route (about 15 s)
 # Checked for every run: the mesh, the rear face resolved by default (the cells
 # split five times, only the face's; its y+ logged, below 5; level.txt) or on its
@@ -53,7 +58,7 @@ case "$mode" in
     transient) runs=("-test -gate regime -compare -feedback -rough -rebound -wake-source")
                gates="off tangential shear regime feedback rough rebound sizes/d5um sizes/d10um sizes/d20um sizes/d40um sizes/d80um wake_source/d5um wake_source/d80um" ;;
     parallel)  runs=("-test -coupled -sizes none -no-rear-layers" "-test -parallel 2 -coupled -sizes none -no-rear-layers"
-                     "-test -parallel 2 -sizes none -refine-wake -halfstep"); gates=off ;;
+                     "-test -parallel 2 -sizes none -refine-wake -halfstep @resume"); gates=off ;;
     steady)    runs=("-steady -test"); gates=off ;;
     *) echo "unknown WEDGE_MODE '$mode'"; exit 2 ;;
 esac
@@ -99,14 +104,45 @@ val() { awk -v k="$1" '$1==k {print $3}' "$2"; }
 dict() { (. "$top/etc/openfoam-env.sh"; foamDictionary -entry "$1" -value "$2"); }
 
 run_case() {  # run_case N ARGS: Allrun ARGS in a fresh copy $tmp/wedgeN, then the checks
-    local n=$1 args=$2 w="$tmp/wedge$1"
+    # (ARGS ending in @resume: the run killed a few steps after its write at 0.15 s,
+    # then Allrun -resume; the checks below then see the resumed run)
+    local n=$1 args=$2 w="$tmp/wedge$1" resume=0
+    case "$args" in *" @resume") args=${args% @resume}; resume=1 ;; esac
     mkdir -p "$w"
     (cd "$top/tutorials/wedge" && tar cf - -T "$tmp/tracked") | (cd "$w" && tar xf -)
     local start; start=$(date +%s)
-    # shellcheck disable=SC2086
-    SNOWWALL_TOP="$top" "$w/Allrun" $args > "$tmp/allrun$n.log" 2>&1
-    local rc=$?
-    echo "Allrun $args: exit $rc in $(( $(date +%s) - start )) s"
+    local rc=0
+    if [ "$resume" = 0 ]; then
+        # shellcheck disable=SC2086
+        SNOWWALL_TOP="$top" "$w/Allrun" $args > "$tmp/allrun$n.log" 2>&1 || rc=$?
+    else
+        # shellcheck disable=SC2086
+        SNOWWALL_TOP="$top" setsid "$w/Allrun" $args > "$tmp/allrun$n.log" 2>&1 &
+        local pid=$! k
+        # killed once the solver is past 0.152 s (its write at 0.15 s whole): the
+        # process group, mpirun and the solvers with it
+        for ((k = 0; k < 3000; k++)); do
+            awk '/^Time = / { if ($3 > 0.152) f = 1 } END { exit !f }' "$w/log.pimpleUncoupledKinematicParcelFoam" 2>/dev/null && break
+            kill -0 "$pid" 2>/dev/null || break
+            sleep 0.2
+        done
+        kill -TERM -- "-$pid" 2>/dev/null; wait "$pid"; rc=$?
+        check "@resume: the run was interrupted in its solver (exit $rc), after 0.15 s" \
+            "[ $rc -ne 0 ] && [ ! -e '$w/log.Allrun.solved' ] && [ -s '$w/processor0/0.15/U' ]"
+        local part1; part1=$(grep -c '^Time = ' "$w/log.pimpleUncoupledKinematicParcelFoam")
+        echo "interrupted after $part1 time steps; Allrun -resume"
+        rc=0
+        SNOWWALL_TOP="$top" "$w/Allrun" -resume >> "$tmp/allrun$n.log" 2>&1 || rc=$?
+        check "@resume: resumed from 0.15 s, the whole library read back" \
+            "grep -q 'resume: pimpleUncoupledKinematicParcelFoam from time 0.15 ' '$tmp/allrun$n.log' && grep -q '^Replay: resumed at 0.15 s: 50 of 50 snapshots read back' '$w/log.pimpleUncoupledKinematicParcelFoam'"
+        check "@resume: the joined log's steps increase to 0.2 s, none repeated" \
+            "awk '/^Time = / { if (\$3 <= p) bad++; p = \$3 } END { exit !(bad == 0 && p == 0.2) }' '$w/log.pimpleUncoupledKinematicParcelFoam'"
+        check "@resume: the function objects' tables joined into one (forceCoeffs: one time folder, rows increasing to 0.2 s)" \
+            "[ \"\$(ls '$w/postProcessing/forceCoeffs')\" = 0 ] && awk '!/^#/ { if (\$1 <= p) bad++; p = \$1 } END { exit !(bad == 0 && p == 0.2) }' '$w/postProcessing/forceCoeffs/0/coefficient.dat'"
+        check "@resume: the wall model's totals carried on (snowWall.dat cumulative, never decreasing)" \
+            "awk '!/^#/ { if (\$2 < p) bad++; p = \$2; n++ } END { exit !(n > 100 && bad == 0) }' '$w/postProcessing/kinematicCloud:snowWall/0/snowWall.dat'"
+    fi
+    echo "Allrun $args$([ "$resume" = 0 ] || echo ', interrupted and resumed'): exit $rc in $(( $(date +%s) - start )) s"
     [ $rc = 0 ] || { tail -40 "$tmp/allrun$n.log"; fails=$((fails+1)); return; }
     local r="$w/results" sp="$w/constant/sprayProperties"
     local rate tb want

@@ -34,6 +34,13 @@ refused() {  # refused PATTERN ARGS...: exit 2, PATTERN in the message, nothing 
     listing | diff -q "$tmp/before" - > /dev/null || fail "Allrun $*: wrote or removed files: $(listing | diff "$tmp/before" - | head -5)"
     echo "ok   Allrun $*: $(head -1 "$tmp/err")"
 }
+# -resume: only alone, and only where a run wrote its options; not the steady route
+refused "-resume: no run to resume in" -resume
+refused "-resume takes no other option" -resume -test
+refused "-resume is the only option of its command line" -test -resume
+printf '%s\n' -steady -test > "$w/log.Allrun.args"; listing > "$tmp/before"
+refused "-resume: the steady route is not resumed" -resume
+rm -f "$w/log.Allrun.args"; listing > "$tmp/before"
 refused "-parallel 999: this machine has $ncpu processors (nproc); accepted: 1 to $ncpu (up to $((4 * ncpu)) with -oversubscribe)" -parallel 999
 refused "-parallel $((ncpu + 1)): this machine has $ncpu processors" -test -parallel $((ncpu + 1))
 refused "-parallel $((4 * ncpu + 1)): accepted with -oversubscribe: 1 to $((4 * ncpu))" -parallel $((4 * ncpu + 1)) -oversubscribe
