@@ -10,6 +10,8 @@
 #  - resuming a run whose library is stored (store yes): stopped after and inside
 #    the library, started again from its last write, the same flow to 1e-9 as a run
 #    never stopped; a late start without store, and a stored snapshot missing, refused;
+#  - -checkpoint: every step written when it is due, the flow unchanged; 0, -1 and
+#    nan refused;
 #  - memory: a mesh whose library (100 000 snapshots of U and p) is about twice the
 #    machine's MemAvailable: refused with the estimate before the first step, in seconds.
 # About 15 s.
@@ -193,6 +195,24 @@ foamDictionary -entry replay -set "{ start 0; period 0.02; interval 0.005; field
 sed -i '$d' "$c/replayLibrary/times"
 expect_refusal "$c" "but 3 are there"
 grep -q "the 4 snapshots taken by then are read back from" "$c/log.run" || fail "missing snapshot: the error does not say what was due"
+
+# 5. -checkpoint S: every step whose wall clock since the last write reaches S is also
+# written (here S = 1e-9 s: every step), the steps unchanged: the same U at the end
+# as the run without checkpoints; S not a positive number refused
+c="$tmp/checkpoint"
+resume_case "$c" 0.06
+(cd "$c" && run log.run "$solver" -replay -checkpoint 1e-9)
+n=$(cd "$c" && ls -d 0.0* | wc -l)
+[ "$n" = 12 ] || fail "checkpoint: $n time folders after 0, want the 12 steps of 0.005 s to 0.06 s"
+grep -q '^Checkpoint: a write whenever [0-9.e-]* s of wall clock' "$c/log.run" || fail "checkpoint: not announced"
+u_ascii "$c" 0.06 > "$tmp/u.ckpt"
+cmp -s "$tmp/u.whole" "$tmp/u.ckpt" || fail "checkpoint: U at 0.06 s is not the run's without checkpoints"
+for v in 0 -1 nan inf abc 5s; do
+    (cd "$c" && "$solver" -replay -checkpoint "$v" > log.bad 2>&1) && fail "checkpoint $v: accepted"
+    grep -q -- "-checkpoint: a positive number of seconds of wall clock, got $v" "$c/log.bad" ||
+        { tail -5 "$c/log.bad" >&2; fail "checkpoint $v: no named error"; }
+done
+echo "checkpoint: every step written, U at 0.06 s unchanged; 0, -1, nan, inf, abc, 5s refused"
 
 # 3. memory: 100 000 snapshots of U and p (32 bytes a cell) on a mesh whose library is
 # about twice MemAvailable: refused at once, with the estimate

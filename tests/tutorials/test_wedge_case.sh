@@ -2,7 +2,9 @@
 # test_wedge_case.sh - tutorials/wedge end to end on its coarsest variant, in a
 # temporary copy. WEDGE_MODE selects the run:
 #   transient (default)  Allrun -test -gate regime -compare -feedback -rough -rebound
-#                        -wake-source: the DDES route (the flow played back after
+#                        -wake-source -checkpoint 0.25 (a write every 15 s of wall
+#                        clock besides the regular ones: every check below holds
+#                        with them): the DDES route (the flow played back after
 #                        its library), the four gate settings, the build-up
 #                        feedback, the rough wall (with the regime gate: its stick
 #                        probability over v_t), the classic rebound, the five size
@@ -55,7 +57,7 @@
 set -u
 mode=${WEDGE_MODE:-transient}
 case "$mode" in
-    transient) runs=("-test -gate regime -compare -feedback -rough -rebound -wake-source")
+    transient) runs=("-test -gate regime -compare -feedback -rough -rebound -wake-source -checkpoint 0.25")
                gates="off tangential shear regime feedback rough rebound sizes/d5um sizes/d10um sizes/d20um sizes/d40um sizes/d80um wake_source/d5um wake_source/d80um" ;;
     parallel)  runs=("-test -coupled -sizes none -no-rear-layers" "-test -parallel 2 -coupled -sizes none -no-rear-layers"
                      "-test -parallel 2 -sizes none -refine-wake -halfstep @resume"); gates=off ;;
@@ -283,6 +285,13 @@ run_case() {  # run_case N ARGS: Allrun ARGS in a fresh copy $tmp/wedgeN, then t
             check "rear layers: the rear face's first-cell y+ logged, below 5 on average" \
                 "awk '/rear face, first-cell y\\+/ { m = \$(NF - 1); f = 1 } END { exit !(f && m > 0 && m < 5) }' '$tmp/allrun$n.log'"
             check "rear layers: level.txt says so" "grep -qx 'rear_layers 1' '$r/level.txt'" ;;
+    esac
+    case "$args" in
+        *-checkpoint*)
+            # -test writes at 0.05, 0.1, 0.15, 0.2 s; the checkpoints between them
+            local nt; nt=$(cd "$w" && ls -d 0.[0-9]* 2>/dev/null | wc -l)
+            check "-checkpoint: checkpoints written besides the 4 regular writes ($nt time folders after 0)" \
+                "grep -q '^Checkpoint: .* this step is written' '$w/$log' && [ $nt -gt 4 ]" ;;
     esac
     case "$args" in
         *-halfstep*)

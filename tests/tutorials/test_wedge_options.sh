@@ -34,6 +34,8 @@ refused() {  # refused PATTERN ARGS...: exit 2, PATTERN in the message, nothing 
     listing | diff -q "$tmp/before" - > /dev/null || fail "Allrun $*: wrote or removed files: $(listing | diff "$tmp/before" - | head -5)"
     echo "ok   Allrun $*: $(head -1 "$tmp/err")"
 }
+# -checkpoint: minutes, a positive number or off
+for v in 0 -5 abc 1e7 ''; do refused "-checkpoint needs a positive number of minutes (at most 1e6) or off, got '$v'" -checkpoint "$v"; done
 # -resume: only alone, and only where a run wrote its options; not the steady route
 refused "-resume: no run to resume in" -resume
 refused "-resume takes no other option" -resume -test
@@ -188,6 +190,13 @@ if [ -x /usr/bin/simpleFoam ] && [ -x "$top/bin/snowregime" ] && [ -x "$top/bin/
     refused "-ladder $tmp/l6.csv: snowladder cannot judge against it" -estimate -ladder "$tmp/l6.csv"
     grep -q "has 1 level (need at least 2)" "$tmp/err" || fail "the one-level ladder: $(cat "$tmp/err")"
     estimate -ladder none
+    estimate -checkpoint 0.5
+    estimate -checkpoint off
+    # -resume where a run wrote its options (here none: the default) but no mesh:
+    # refused before anything is written
+    : > "$w/log.Allrun.args"; listing > "$tmp/before"
+    refused "-resume: the run's mesh (constant/polyMesh, log.checkMesh) is gone: nothing to resume" -resume
+    rm -f "$w/log.Allrun.args"; listing > "$tmp/before"
     estimate -test -sizes 10,5,20 -compare -rebound    # 1 + 3 + 1 + 3 clouds
     grep -q ' 8 clouds, ' "$tmp/out" || fail "Allrun -estimate -test -sizes 10,5,20 -compare -rebound: $(cat "$tmp/out")"
     sp="$w/constant/sprayProperties"

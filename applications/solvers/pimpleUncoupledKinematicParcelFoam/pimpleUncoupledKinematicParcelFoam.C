@@ -38,9 +38,17 @@ Description
     transportProperties with nu and rhoInf (the carrier density seen by the
     cloud), constant/g and <cloud>Properties.
 
+    With -checkpoint S a time step becomes a write time (everything written
+    as at the controlDict's writes: fields, clouds, model properties, the
+    function objects' writes) whenever S seconds of wall clock have passed
+    since the last write, without changing the time steps: a run of hours
+    leaves a state to resume from (startFrom latestTime; with -replay the
+    library must be stored, flowReplay.H) at least every S seconds.
+
 Usage
     pimpleUncoupledKinematicParcelFoam [-cloud NAME | -clouds '(NAME ...)']
-                                       [-frozen | -replay] [-parallel] [-help]
+                                       [-frozen | -replay] [-checkpoint S]
+                                       [-parallel] [-help]
 
     -cloud NAME         the cloud (default kinematicCloud)
     -clouds '(A B ..)'  several clouds, evolved one after the other in every
@@ -56,6 +64,8 @@ Usage
 #include "basicKinematicCloud.H"
 #include "flowReplay.H"
 #include <chrono>
+#include <cstdlib>
+#include <string>
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -92,10 +102,43 @@ int main(int argc, char *argv[])
         " 'replay' dictionary is complete, then play it back periodically"
     );
 
+    argList::addOption
+    (
+        "checkpoint",
+        "seconds",
+        "also write when this many seconds of wall clock have passed since"
+        " the last write (a state to resume from; the steps unchanged)"
+    );
+
     #include "postProcess.H"
 
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
+
+    // -checkpoint: a positive finite number of seconds (wall clock)
+    scalar checkpoint = 0;
+    if (args.found("checkpoint"))
+    {
+        // read as text: a nan must not reach a comparison (the floating-point
+        // traps OpenFOAM sets would kill the run without a word)
+        const std::string txt(args["checkpoint"]);
+        char* end = nullptr;
+        const double v = std::strtod(txt.c_str(), &end);
+        const bool whole = !txt.empty() && end && *end == '\0';
+        if (whole && std::isfinite(v) && v > 0)
+        {
+            checkpoint = v;
+        }
+        else
+        {
+            FatalErrorInFunction
+                << "-checkpoint: a positive number of seconds of wall clock, "
+                << "got " << args["checkpoint"].c_str() << exit(FatalError);
+        }
+        Info<< "Checkpoint: a write whenever " << checkpoint << " s of wall "
+            << "clock have passed since the last one" << nl << endl;
+    }
+
     #include "createTime.H"
     #include "createMesh.H"
     #include "createPimpleControl.H"
@@ -161,6 +204,8 @@ int main(int argc, char *argv[])
         Info<< endl;
     };
 
+    auto lastWrite = wallClock::now();
+
     Info<< "\nStarting time loop\n" << endl;
 
     while (runTime.run())
@@ -168,6 +213,19 @@ int main(int argc, char *argv[])
         #include "readTimeControls.H"
         #include "CourantNo.H"
         #include "setDeltaT.H"
+
+        // a checkpoint: the coming step becomes a write time (decided alike on
+        // every process: the clocks differ)
+        if
+        (
+            checkpoint > 0
+         && returnReduce(seconds(lastWrite) >= checkpoint, orOp<bool>())
+        )
+        {
+            runTime.writeOnce();
+            Info<< "Checkpoint: " << checkpoint << " s of wall clock since "
+                << "the last write: this step is written" << nl << endl;
+        }
 
         ++runTime;
 
@@ -222,6 +280,7 @@ int main(int argc, char *argv[])
         if (runTime.write())
         {
             printTimes();
+            lastWrite = wallClock::now();
         }
 
         runTime.printExecutionTime(Info);
