@@ -36,6 +36,7 @@ refused() {  # refused PATTERN ARGS...: exit 2, PATTERN in the message, nothing 
 }
 # -checkpoint: minutes, a positive number or off
 for v in 0 -5 abc 1e7 ''; do refused "-checkpoint needs a positive number of minutes (at most 1e6) or off, got '$v'" -checkpoint "$v"; done
+refused "-checkpoint needs the transient route (not -steady)" -steady -checkpoint 5
 # -resume: only alone, and only where a run wrote its options; not the steady route
 refused "-resume: no run to resume in" -resume
 refused "-resume takes no other option" -resume -test
