@@ -185,7 +185,7 @@ run_case() {  # run_case N ARGS: Allrun ARGS in a fresh copy $tmp/wedgeN, then t
             "absle \$(awk -v a='$sm' -v b='$rear_int' 'BEGIN{print a-b}') \$(awk -v b='$rear_int' 'BEGIN{print 1e-5*b+1e-12}') && { ! awk -v b='$rear_int' 'BEGIN{exit !(b > 0)}' || grep -q ' sticks, .* origins' '$r/$g/rear_statistics.md'; }"
         check "$g: rear-face PNG" "[ \"\$(head -c 4 '$r/$g/rear_deposit.png' | tail -c 3)\" = PNG ]"
         check "$g: per-patch table lists the 6 wedge patches" "[ \$(grep -c -E '^\| (rear|nose|top|bottom|sideYneg|sideYpos) \|' '$r/$g/deposit_per_patch.md') = 6 ]"
-        # the counts by reason (issue 23): on every patch, and adding up to the impacts
+        # the counts by reason: on every patch, and adding up to the impacts
         # (wedge-post refuses a table where they do not; checked again here)
         check "$g: counts by reason on the 6 patches, adding up to the impacts" \
             "[ \$(awk -F, 'NR>1 && NF==14 && \$10!=\"-\" && \$10+\$11+\$12+\$13+\$14==\$5 && \$10==\$6' '$r/$g/deposit_per_patch.csv' | wc -l) = 6 ]"
@@ -220,7 +220,7 @@ run_case() {  # run_case N ARGS: Allrun ARGS in a fresh copy $tmp/wedgeN, then t
                     "grep -q 'wallRegimes roughABS: patches .*stick probability table [0-9]* x 11 x [0-9]*' '$w/$log' && grep -q \"tangential gate on: the rough wall's stick probability over v_t 0..25.6\" '$w/$log'" ;;
             esac
             check "rough.md: the 6 patches, flat against rough" "[ \$(grep -c -E '^\| (rear|nose|top|bottom|sideYneg|sideYpos) \|' '$r/rough.md') = 6 ]"
-            # the size classes (issue 21): composed into the decided spray and its envelope
+            # the size classes: composed into the decided spray and its envelope
             local mvd
             for mvd in 20 8 56; do
                 # regions.md: the window's 5 regions, then the halves' 5 and their verdict

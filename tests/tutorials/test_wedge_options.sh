@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # test_wedge_options.sh - tutorials/wedge/Allrun refuses bad options with exit 2 and
 # one message naming the option, the value and the accepted range, before it writes
-# anything (issue 22: -parallel 999 decomposed the case into some 18 000 files
+# anything (once, -parallel 999 decomposed the case into some 18 000 files
 # before mpirun refused); so do the post-processing scripts (post/wedge-*) for a
 # missing option value or a malformed --window. Runs in a temporary copy of the case's
 # source files; the option refusals need neither OpenFOAM nor a build (they come
@@ -90,11 +90,11 @@ grep -qxF "Allrun: note: -sizes: '20,5,10' taken in ascending order" "$tmp/err" 
 refused "-sizes needs the transient route" -steady -sizes 5,10,20
 ! grep -q "note:" "$tmp/err" || fail "Allrun -sizes 5,10,20: a note for a sorted list: $(cat "$tmp/err")"
 refused "unknown option '-parallell'" -parallell 2
-# hostile sweep (issue 22): two mesh levels or a diameter twice were taken without a word
+# found by a hostile sweep: two mesh levels or a diameter twice were taken without a word
 refused "-test with -fine: give one mesh level (-fine or -test)" -fine -test
 refused "-sizes: '05' is given twice in '5,10,05'" -sizes 5,10,05
 # the post-processing scripts: a missing option value or a malformed --window is a
-# usage error, exit 2, named (issue 22: '--gate' alone exited 1 from the shell's own
+# usage error, exit 2, named (once '--gate' alone exited 1 from the shell's own
 # ${2:?}, and '--window 1e-,2,3' passed as 1,2,3)
 post_refused() {  # post_refused PATTERN SCRIPT ARGS...
     local want=$1 script=$2; shift 2
@@ -108,8 +108,8 @@ post_refused() {  # post_refused PATTERN SCRIPT ARGS...
 post_refused "wedge-post: --gate needs a name" wedge-post --case "$w" --out "$tmp/post-out" --gate
 post_refused "wedge-post: --window '1e-,2,3' is not T0,TH,T1" wedge-post --case "$w" --out "$tmp/post-out" --window 1e-,2,3
 post_refused "wedge-post: --window '0,2,1' is not T0,TH,T1 with 0 <= T0 < TH < T1" wedge-post --case "$w" --out "$tmp/post-out" --window 0,2,1
-# a post-processing run that fails on its input leaves --out as it was (issue 22,
-# item 5): not created when it did not exist, untouched when it did
+# a post-processing run that fails on its input leaves --out as it was: not
+# created when it did not exist, untouched when it did
 "$w/post/wedge-post" --case "$w" --out "$tmp/post-out/deep" > "$tmp/out" 2> "$tmp/err"; rc=$?
 [ "$rc" = 1 ] || fail "wedge-post on a case without results: exit $rc, want 1"
 grep -q "wedge-post: missing" "$tmp/err" || fail "wedge-post without results: $(cat "$tmp/err")"
@@ -123,7 +123,7 @@ post_refused "wedge-capture: --gate needs a name" wedge-capture --results "$tmp/
 post_refused "wedge-variant: --log needs a file" wedge-variant --variant rough --log
 post_refused "wedge-compare: --rel needs a number" wedge-compare --rel
 post_refused "wedge-panels: --title needs a text" wedge-panels --title
-# a results folder without the results: exit 1 with a message (hostile sweep, issue 22:
+# a results folder without the results: exit 1 with a message (found by a hostile sweep:
 # an empty 'ls | sort' under pipefail ended wedge-capture and -compose with exit 2 and
 # wedge-dispersion with exit 1, without a word)
 post_missing() {  # post_missing PATTERN SCRIPT ARGS...
