@@ -202,7 +202,7 @@ if command -v gnuplot >/dev/null; then
         fail "--with, a missing quantity: $(cat "$WORK/w2.err")"
     refused 2 "run \"lC\" is also the name of a --run folder" "$C" --snowladder "$L" --run "$WORK/runs/lC" --with "$WORK/lad/ladder.csv" --out "$WORK/lad2"
     sed 's/^quantity,run,/quantity,name,/' "$WORK/stored.csv" >"$WORK/bad.csv"
-    refused 2 "the header must be" "$C" --snowladder "$L" --run "$WORK/runs/lC" --with "$WORK/bad.csv" --out "$WORK/lad2"
+    refused 2 "not the header of post/wedge-ladder" "$C" --snowladder "$L" --run "$WORK/runs/lC" --with "$WORK/bad.csv" --out "$WORK/lad2"
     sed 's/^# setting refine_wake 0$/# setting refine_wake 1/' "$WORK/stored.csv" >"$WORK/other.csv"
     refused 2 "not one mesh family" "$C" --snowladder "$L" --run "$WORK/runs/lC" --with "$WORK/other.csv" --out "$WORK/lad2"
     refused 2 "--with needs at least one --run" "$C" --snowladder "$L" --with "$WORK/stored.csv" --out "$WORK/lad2"
