@@ -192,6 +192,11 @@ if [ -x /usr/bin/simpleFoam ] && [ -x "$top/bin/snowregime" ] && [ -x "$top/bin/
     grep -q "has 1 level (need at least 2)" "$tmp/err" || fail "the one-level ladder: $(cat "$tmp/err")"
     estimate -ladder none
     estimate -checkpoint 0.5
+    # the steady route: its own line (the block mesh, no rear layers; one run per gate with -compare)
+    estimate -steady
+    grep -q '^Allrun: estimate: 100568 cells, 1 cloud(s), 100000 parcels injected each (steady route' "$tmp/out" || fail "Allrun -estimate -steady: $(cat "$tmp/out")"
+    estimate -steady -compare
+    grep -q ' 4 cloud(s), ' "$tmp/out" || fail "Allrun -estimate -steady -compare: $(cat "$tmp/out")"
     estimate -checkpoint off
     # -resume where a run wrote its options (here none: the default) but no mesh:
     # refused before anything is written
