@@ -10,6 +10,7 @@
 #  - resuming a run whose library is stored (store yes): stopped after and inside
 #    the library, started again from its last write, the same flow to 1e-9 as a run
 #    never stopped; a late start without store, and a stored snapshot missing, refused;
+#    a FIFO, a link or a file in the library's place refused before any step;
 #  - -checkpoint: every step written when it is due, the flow unchanged; 0, -1 and
 #    nan refused;
 #  - memory: a mesh whose library (100 000 snapshots of U and p) is about twice the
@@ -195,6 +196,31 @@ foamDictionary -entry replay -set "{ start 0; period 0.02; interval 0.005; field
 sed -i '$d' "$c/replayLibrary/times"
 expect_refusal "$c" "but 3 are there"
 grep -q "the 4 snapshots taken by then are read back from" "$c/log.run" || fail "missing snapshot: the error does not say what was due"
+
+# store yes never writes over what is not the library's: a FIFO at replayLibrary/times,
+# a link at a snapshot's field, a file where the folder goes: refused before any step,
+# the thing left as it was; a foreign file beside the library kept
+c="$tmp/targets"
+resume_case "$c" 0.02
+notlib() {  # notlib WHAT PATTERN: the solver refuses before its first step, naming it
+    local rc=0
+    (cd "$c" && "$solver" -replay > log.run 2>&1) || rc=$?
+    [ "$rc" = 1 ] && grep -q "$2" "$c/log.run" && ! grep -q '^Time = ' "$c/log.run" ||
+        { tail -5 "$c/log.run" >&2; fail "targets, $1: exit $rc, not refused before the first step"; }
+}
+mkdir -p "$c/replayLibrary"; mkfifo "$c/replayLibrary/times"
+notlib "a FIFO at times" "replayLibrary/times\" exists and is not a regular file"
+[ -p "$c/replayLibrary/times" ] || fail "targets: the FIFO was replaced"
+rm -rf "$c/replayLibrary"; mkdir -p "$c/replayLibrary/2"; ln -s /dev/null "$c/replayLibrary/2/U"
+notlib "a link at snapshot 2's U" "replayLibrary/2/U\" exists and is not a regular file"
+[ -L "$c/replayLibrary/2/U" ] || fail "targets: the link was replaced"
+rm -rf "$c/replayLibrary"; echo theirs > "$c/replayLibrary"
+notlib "a file where the folder goes" "replayLibrary\" exists and is not a folder"
+[ "$(cat "$c/replayLibrary")" = theirs ] || fail "targets: the file was replaced"
+rm -f "$c/replayLibrary"; mkdir "$c/replayLibrary"; echo theirs > "$c/replayLibrary/notes.txt"
+(cd "$c" && run log.run "$solver" -replay)
+[ "$(cat "$c/replayLibrary/notes.txt")" = theirs ] && [ -s "$c/replayLibrary/3/U" ] || fail "targets: a foreign file beside the library"
+echo "store: a FIFO, a link and a file in the library's place refused, a foreign file beside it kept"
 
 # 5. -checkpoint S: every step whose wall clock since the last write reaches S is also
 # written (here S = 1e-9 s: every step), the steps unchanged: the same U at the end
