@@ -131,6 +131,40 @@ static void statistics(void **s)
     at.k = 0.25;
     assert_int_equal(swd_stats_at(m, &at, &st), SWD_OK);
     ASSERT_REL(st.ustar, pow(0.09, 0.25) * 0.5, 1e-12);
+    /* the scale alone: u_tau, or Cmu^(1/4) k^(1/2), whichever is smaller */
+    at.u_tau = 0.3;
+    assert_int_equal(swd_set_scale(m, SWD_USTAR_SHEAR), SWD_OK);
+    assert_int_equal(swd_stats_at(m, &at, &st), SWD_ENOTREADY);
+    assert_int_equal(swd_commit(m), SWD_OK);
+    assert_int_equal(swd_stats_at(m, &at, &st), SWD_OK);
+    ASSERT_REL(st.ustar, 0.3, 1e-12);
+    ASSERT_REL(st.yplus, 1e-4 * 0.3 / nu, 1e-12);
+    assert_int_equal(swd_set_scale(m, SWD_USTAR_TURBULENCE), SWD_OK);
+    assert_int_equal(swd_commit(m), SWD_OK);
+    at.u_tau = 2.0;
+    assert_int_equal(swd_stats_at(m, &at, &st), SWD_OK);
+    ASSERT_REL(st.ustar, pow(0.09, 0.25) * 0.5, 1e-12);
+    /* no k and the turbulence scale: no wall layer, no NaN */
+    at.k = 0.0;
+    assert_int_equal(swd_stats_at(m, &at, &st), SWD_OK);
+    assert_true(st.ustar == 0.0 && st.layer == 0.0 && st.sigma[1] == 0.0);
+    /* names both ways, another value refused and the model unchanged */
+    assert_int_equal(swd_scale_of("wallShear"), SWD_USTAR_SHEAR);
+    assert_int_equal(swd_scale_of("turbulence"), SWD_USTAR_TURBULENCE);
+    assert_int_equal(swd_scale_of("max"), SWD_USTAR_MAX);
+    assert_int_equal(swd_scale_of("Max"), -1);
+    assert_int_equal(swd_scale_of(NULL), -1);
+    assert_null(swd_scale_name(3));
+    assert_int_equal(swd_set_scale(m, -1), SWD_EINVAL);
+    assert_non_null(strstr(swd_errmsg(m), "-1"));
+    assert_int_equal(swd_get_scale(m), SWD_USTAR_TURBULENCE);
+    char buf[400];
+    swd_describe(m, buf, sizeof buf);
+    assert_non_null(strstr(buf, "(not u_tau)"));
+    assert_int_equal(swd_set_scale(m, SWD_USTAR_MAX), SWD_OK);
+    assert_int_equal(swd_commit(m), SWD_OK);
+    swd_describe(m, buf, sizeof buf);
+    assert_non_null(strstr(buf, "max(u_tau, 0.09^(1/4)"));
     /* the blend is continuous at both ends */
     at.u_tau = ut;
     at.k = 3.33 * ut * ut;

@@ -26,6 +26,7 @@ static const struct {
 struct swd_model {
     double v[K_N];
     double cmu4;   /* Cmu^(1/4) */
+    int scale;     /* SWD_USTAR_* */
     /* sublayer closure: nodes ln tau+ and Vs+ (n = 0: off) */
     size_t cl_n;
     double cl_ysub;
@@ -103,6 +104,37 @@ double swd_get(const swd_model *m, const char *key)
     return i < 0 ? NAN : m->v[i];
 }
 
+static const char *const scale_names[] = { "max", "wallShear", "turbulence" };
+
+const char *swd_scale_name(int scale)
+{
+    return scale >= SWD_USTAR_MAX && scale <= SWD_USTAR_TURBULENCE ? scale_names[scale] : NULL;
+}
+
+int swd_scale_of(const char *name)
+{
+    for (int i = SWD_USTAR_MAX; name && i <= SWD_USTAR_TURBULENCE; i++)
+        if (!strcmp(name, scale_names[i]))
+            return i;
+    return -1;
+}
+
+int swd_set_scale(swd_model *m, int scale)
+{
+    if (!swd_scale_name(scale))
+        return fail(m, SWD_EINVAL,
+                    "near-wall dispersion: velocity scale %d is not one of 0 (max), 1 (wallShear), 2 (turbulence)",
+                    scale);
+    m->scale = scale;
+    m->ready = 0;
+    return SWD_OK;
+}
+
+int swd_get_scale(const swd_model *m)
+{
+    return m->scale;
+}
+
 int swd_commit(swd_model *m)
 {
     if (m->cl_n && m->cl_ysub > m->v[K_LAYER])
@@ -130,8 +162,10 @@ void swd_describe(const swd_model *m, char *buf, size_t n)
         return;
     snprintf(buf, n,
              "continuous random walk: wall-layer statistics (v' Guha 1997, u', w', T_L Kallio & Reeks 1989) up to y+ %g, "
-             "isotropic sqrt(2k/3) with T_L = %g k/eps from y+ %g, u* = max(u_tau, %g^(1/4) k^(1/2))",
-             m->v[K_LAYER], m->v[K_CT], m->v[K_BLEND], m->v[K_CMU]);
+             "isotropic sqrt(2k/3) with T_L = %g k/eps from y+ %g, u* = %s%g^(1/4) k^(1/2)%s",
+             m->v[K_LAYER], m->v[K_CT], m->v[K_BLEND],
+             m->scale == SWD_USTAR_SHEAR ? "u_tau (not " : m->scale == SWD_USTAR_MAX ? "max(u_tau, " : "",
+             m->v[K_CMU], m->scale == SWD_USTAR_TURBULENCE ? " (not u_tau)" : ")");
 }
 
 static int finite_nonneg(double x)
@@ -156,7 +190,9 @@ int swd_stats_at(const swd_model *m, const swd_local *at, swd_stats *out)
     const double s_iso = sqrt(2.0 * at->k / 3.0);
     const double tl_iso = (at->k > 0.0 && at->eps > 0.0) ? m->v[K_CT] * at->k / at->eps : INFINITY;
 
-    const double ustar = fmax(at->u_tau, m->cmu4 * sqrt(at->k));
+    const double uk = m->cmu4 * sqrt(at->k);
+    const double ustar = m->scale == SWD_USTAR_SHEAR ? at->u_tau
+                         : m->scale == SWD_USTAR_TURBULENCE ? uk : fmax(at->u_tau, uk);
     out->ustar = ustar;
     /* below 1e-30 m/s there is no turbulence to speak of (and T_L = nu / u*^2
        would overflow) */

@@ -14,7 +14,8 @@
  *   in between:                 linear blend in y+
  * with u* = max(u_tau, Cmu^(1/4) sqrt(k)) (the friction velocity; the k-based
  * scale of wall functions where the wall shear stress vanishes, at separation
- * and reattachment) and y+ = y u* / nu.
+ * and reattachment) and y+ = y u* / nu. For a sensitivity study the scale can
+ * be u_tau alone or Cmu^(1/4) sqrt(k) alone (swd_set_scale).
  *
  * The state of a particle is its normalized fluctuation w_i = u'_i / sigma_i
  * in the wall frame (0 streamwise, 1 wall-normal away from the wall, 2
@@ -86,6 +87,22 @@ int swd_set(swd_model *m, const char *key, double v);
 double swd_get(const swd_model *m, const char *key);
 /* The i-th key name (NULL past the last): for hosts that check dictionaries. */
 const char *swd_key(size_t i);
+/* The velocity scale u* of the wall layer (default SWD_USTAR_MAX):
+ *   SWD_USTAR_MAX         max(u_tau, Cmu^(1/4) sqrt(k))
+ *   SWD_USTAR_SHEAR       u_tau alone (the wall's friction velocity; 0 where
+ *                         the wall shear vanishes)
+ *   SWD_USTAR_TURBULENCE  Cmu^(1/4) sqrt(k) alone (k at the particle: the
+ *                         log layer's scale in a wall-function cell, small in
+ *                         a resolved near-wall cell, where k falls as y^2)
+ * Another value is refused (SWD_EINVAL, the model unchanged). Makes the model
+ * not ready until swd_commit, as every set does. */
+enum { SWD_USTAR_MAX = 0, SWD_USTAR_SHEAR = 1, SWD_USTAR_TURBULENCE = 2 };
+int swd_set_scale(swd_model *m, int scale);
+int swd_get_scale(const swd_model *m);
+/* The name of a scale ("max", "wallShear", "turbulence"; NULL for another
+ * value) and the scale of a name (-1 for another name). */
+const char *swd_scale_name(int scale);
+int swd_scale_of(const char *name);
 int swd_commit(swd_model *m);
 int swd_ready(const swd_model *m);
 /* One line describing the settings, into buf (always terminated). */

@@ -19,7 +19,8 @@ template<class CloudType>
 void Foam::SnowNearWall<CloudType>::readSettings(const dictionary& dict)
 {
     // every key of this dictionary is known: a misspelt one is an error
-    wordList known({"type", "patches", "closure", "depositionClosure"});
+    wordList known
+    ({"type", "patches", "closure", "depositionClosure", "velocityScale"});
     for (size_t k = 0; swd_key(k); ++k)
     {
         known.append(word(swd_key(k)));
@@ -47,6 +48,15 @@ void Foam::SnowNearWall<CloudType>::readSettings(const dictionary& dict)
                     << exit(FatalIOError);
             }
         }
+    }
+
+    // the wall layer's velocity scale u*: max (default), wallShear, turbulence
+    const word scale(dict.lookupOrDefault<word>("velocityScale", "max"));
+    if (swd_set_scale(model_, swd_scale_of(scale.c_str())) != SWD_OK)
+    {
+        FatalIOErrorInFunction(dict)
+            << "snowNearWall: velocityScale '" << scale << "' is not max,"
+            << " wallShear or turbulence" << exit(FatalIOError);
     }
 
     const bool closure = dict.lookupOrDefault<bool>("closure", true);
