@@ -2,9 +2,9 @@
 # bend.sh - inertial deposition in a 90 degree pipe bend: the CFD chain and
 # every dispersion treatment against Pui, Romay-Novas & Liu (1987)
 #
-# Usage: validation/bend.sh --out DIR [--force] [--mesh resolved|wf|both]
-#            [--stokes LIST] [--models LIST] [--parcels N] [--coeffs FILE]
-#            [--short] [--help]
+# Usage: validation/bend.sh --out DIR [--force] [--mesh LIST]
+#            [--stokes LIST] [--models LIST] [--parcels N] [--step F]
+#            [--coeffs FILE] [--short] [--help]
 #
 # A turbulent pipe flow (Re = 10 000 on the diameter, air at 20 C) through a
 # 90 degree bend of curvature ratio R0 = R_bend/a = 5.6 (a the tube radius,
@@ -33,10 +33,19 @@
 # Treatments (--models, comma-separated): stochastic
 # (stochasticDispersionRAS), gradient (gradientDispersionRAS), none (no
 # dispersion), nearwall (snowNearWall: the C core's continuous random walk
-# with the sublayer closure of --coeffs), crw (snowNearWall without the
-# closure). Meshes (--mesh): resolved (an O-grid of 8 x 8 + 4 x 8 x 20 cells a
-# section, the ring graded to a first cell of y+ about 1), wf (a wall-function mesh,
-# first cell centre at y+ about 25, as on the wedge), both (default).
+# with the sublayer closure of --coeffs), nearwall-utau and nearwall-k (the
+# same with the wall layer's velocity scale u* from the wall shear alone or
+# from the turbulence alone, velocityScale wallShear / turbulence), crw
+# (snowNearWall without the closure). Meshes (--mesh, comma-separated):
+# resolved (an O-grid of 8 x 8 + 4 x 8 x 20 cells a section, the ring graded
+# to a first cell of y+ about 1; 30, 60, 20 cells along the inlet, bend and
+# outlet), fine (the resolved mesh with 1.5 times the cells in every
+# direction: 12 x 12 + 4 x 12 x 30, 45, 90, 30; about 3.4 times the cells),
+# wf (a wall-function mesh, first cell centre at y+ about 25, as on the
+# wedge); both (default) is resolved,wf. The meshes run side by side, one
+# process each.
+# --step F: the particles' time step as a fraction of the bulk's transit time
+# of a tube radius (default 0.05; in (0, 0.5]).
 #
 # Writes into DIR, only when the run succeeds: efficiency.csv and
 # efficiency.md (eta per mesh, treatment and Stk, with the counts, the error
@@ -66,11 +75,13 @@ models=stochastic,none,crw,nearwall
 parcels=2000
 coeffs=
 force=0
+step=0.05
 while [ $# -gt 0 ]; do
     case "$1" in
         -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;;
         --out) out=${2:?"--out needs a folder"}; shift ;;
-        --mesh) meshes=${2:?"--mesh needs resolved, wf or both"}; shift ;;
+        --mesh) meshes=${2:?"--mesh needs a list of resolved, fine, wf or both"}; shift ;;
+        --step) step=${2:?"--step needs a number"}; shift ;;
         --stokes) stokes=${2:?"--stokes needs a list"}; shift ;;
         --models) models=${2:?"--models needs a list"}; shift ;;
         --parcels) parcels=${2:?"--parcels needs a number"}; shift ;;
@@ -83,12 +94,19 @@ while [ $# -gt 0 ]; do
 done
 die2() { echo "bend.sh: $*" >&2; exit 2; }
 [ -n "$out" ] || die2 "--out DIR is required (see --help)"
-case "$meshes" in resolved|wf) ;; both) meshes="resolved wf" ;; *) die2 "--mesh: '$meshes' is not resolved, wf or both" ;; esac
+[ "$meshes" = both ] && meshes=resolved,wf
 [[ "$parcels" =~ ^[1-9][0-9]{0,5}$ ]] || die2 "--parcels: '$parcels' is not a whole number in 1..999999"
 # shellcheck source=../etc/outdir.sh
 . "$top/etc/outdir.sh"
 outdir_list stokes bend.sh --stokes "$stokes" num
 outdir_list models bend.sh --models "$models" name
+outdir_list meshes bend.sh --mesh "$meshes" name
+IFS=, read -r -a meshList <<< "$meshes"
+for m in "${meshList[@]}"; do
+    case "$m" in resolved|fine|wf) ;; *) die2 "--mesh: '$m' is not resolved, fine or wf" ;; esac
+done
+awk -v t="$step" 'BEGIN { exit !(t ~ /^[0-9]*\.?[0-9]+([eE][-+]?[0-9]+)?$/ && t + 0 > 0 && t + 0 <= 0.5) }' \
+    || die2 "--step: '$step' is not a number in (0, 0.5]"
 IFS=, read -r -a stkList <<< "$stokes"
 [ "${#stkList[@]}" -ge 1 ] && [ "${#stkList[@]}" -le 12 ] || die2 "--stokes: 1 to 12 values"
 for s in "${stkList[@]}"; do
@@ -97,7 +115,8 @@ for s in "${stkList[@]}"; do
 done
 IFS=, read -r -a modelList <<< "$models"
 for m in "${modelList[@]}"; do
-    case "$m" in stochastic|gradient|none|nearwall|crw) ;; *) die2 "--models: '$m' is not stochastic, gradient, none, nearwall or crw" ;; esac
+    case "$m" in stochastic|gradient|none|nearwall|nearwall-utau|nearwall-k|crw) ;;
+        *) die2 "--models: '$m' is not stochastic, gradient, none, nearwall, nearwall-utau, nearwall-k or crw" ;; esac
 done
 [ -n "$coeffs" ] || coeffs="$top/etc/deposition.coeffs"
 [ -f "$coeffs" ] && [ -r "$coeffs" ] || die2 "--coeffs: cannot read '$coeffs'"
@@ -155,11 +174,13 @@ write_cloud() {   # case name d model
         stochastic) disp=stochasticDispersionRAS ;;
         gradient) disp=gradientDispersionRAS ;;
         none) disp=none ;;
-        nearwall|crw)
+        nearwall|nearwall-utau|nearwall-k|crw)
             disp=none
-            local inc='#include "deposition.coeffs"' cl=on
-            [ "$model" = nearwall ] || { inc=; cl=off; }
-            funcs="nearWall { type snowNearWall; patches (wallIn bend wallOut); closure $cl; $inc }"
+            local inc='#include "deposition.coeffs"' cl=on scale=max
+            [ "$model" != crw ] || { inc=; cl=off; }
+            [ "$model" != nearwall-utau ] || scale=wallShear
+            [ "$model" != nearwall-k ] || scale=turbulence
+            funcs="nearWall { type snowNearWall; patches (wallIn bend wallOut); closure $cl; velocityScale $scale; $inc }"
             ;;
     esac
     cat > "$c/constant/${name}Properties" <<EOF
@@ -267,11 +288,11 @@ run_mesh() {
     c="$tmp/$mesh/case"
     mkdir -p "$c"
     cp -r "$here/bend/system" "$here/bend/constant" "$here/bend/0.orig" "$c/"
-    if [ "$mesh" = resolved ]; then
-        nc=8; nr=20; grading=40; axial=30,60,20; kwall=fixedValue; nutwall=nutLowReWallFunction
-    else
-        nc=4; nr=4; grading=1; axial=15,30,10; kwall=kqRWallFunction; nutwall=nutkWallFunction
-    fi
+    case "$mesh" in
+        resolved) nc=8; nr=20; grading=40; axial=30,60,20; kwall=fixedValue; nutwall=nutLowReWallFunction ;;
+        fine) nc=12; nr=30; grading=40; axial=45,90,30; kwall=fixedValue; nutwall=nutLowReWallFunction ;;
+        *) nc=4; nr=4; grading=1; axial=15,30,10; kwall=kqRWallFunction; nutwall=nutkWallFunction ;;
+    esac
     cat > "$c/constant/bendParameters" <<EOF
 Ubar    $ubar;
 kWall   $kwall;
@@ -302,9 +323,9 @@ EOF
     (cd "$c" && rm -rf 0 && mv "$last" 0 && rm -rf 0/uniform 0/C* 0/wallShearStress 0/yPlus)
     cp "$coeffs" "$c/constant/deposition.coeffs"
 
-    # the clouds: steps of 1/20 of the bulk's transit time of a tube radius;
+    # the clouds: steps of --step of the bulk's transit time of a tube radius;
     # 8 flow-through times of the pipe's length
-    dt=$(awk -v a="$a" -v u="$ubar" 'BEGIN { printf "%.6g", a / u / 20 }')
+    dt=$(awk -v a="$a" -v u="$ubar" -v f="$step" 'BEGIN { printf "%.6g", a / u * f }')
     len=$(awk -v l1="$lin" -v l2="$lbend" -v l3="$lout" 'BEGIN { printf "%.6g", l1 + l2 + l3 }')
     nsteps=$(awk -v l="$len" -v u="$ubar" -v dt="$dt" 'BEGIN { printf "%d", 8 * l / u / dt + 0.5 }')
     tend=$(awk -v n="$nsteps" -v b="$dt" 'BEGIN { printf "%.10g", n * b }')
@@ -362,7 +383,7 @@ flowmd="$tmp/flow.md"
     echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 } > "$flowmd"
 pids=()
-for mesh in $meshes; do
+for mesh in "${meshList[@]}"; do
     run_mesh "$mesh" &
     pids+=($!)
 done
@@ -371,7 +392,7 @@ for pid in "${pids[@]}"; do wait "$pid" || failed=1; done
 [ "$failed" = 0 ] || { echo "bend.sh: a mesh failed (above)" >&2; exit 1; }
 t_total=$(( $(date +%s) - t_start ))
 echo "mesh,model,stokes,d_m,parcels,inlet_pipe_deposits,left_by_inlet,entered_bend,bend_tracked,bend_closure_drawn,bend_closure_expected,left_in_pipe,eta,eta_se,pui,in_inlet,in_bend,in_outlet,eta_max" > "$rows"
-for mesh in $meshes; do
+for mesh in "${meshList[@]}"; do
     cat "$tmp/rows_$mesh.csv" >> "$rows"
     cat "$tmp/flow_$mesh.md" >> "$flowmd"
     rm -f "$tmp/rows_$mesh.csv" "$tmp/flow_$mesh.md"

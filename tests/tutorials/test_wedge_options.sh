@@ -82,6 +82,7 @@ refused "Allrun: -sizes: an empty list" -sizes ''
 refused "Allrun: -dispersion: an empty item in 'nearwall,,crw'" -dispersion nearwall,,crw
 refused "Allrun: -dispersion: an empty item in 'crw,'" -dispersion crw,
 refused "Allrun: -dispersion: 'crw' is given twice in 'crw,nearwall,crw'" -dispersion crw,nearwall,crw
+refused "Allrun: -dispersion needs a comma-separated list of nearwall, nearwall-utau, nearwall-k, crw, stochastic, gradient, none; got 'nearwall,nearwall-tau'" -dispersion nearwall,nearwall-tau
 refused "Allrun: -sizes: '20' is given twice in '20,5,20'" -sizes 20,5,20
 refused "-sizes needs the transient route" -steady -sizes 20,5,10
 grep -qxF "Allrun: note: -sizes: '20,5,10' taken in ascending order" "$tmp/err" ||
@@ -198,6 +199,10 @@ if [ -x /usr/bin/simpleFoam ] && [ -x "$top/bin/snowregime" ] && [ -x "$top/bin/
     estimate -steady -compare
     grep -q ' 4 cloud(s), ' "$tmp/out" || fail "Allrun -estimate -steady -compare: $(cat "$tmp/out")"
     estimate -checkpoint off
+    # the wall layer's velocity scales as further treatments: per treatment one cloud
+    # of the spray and one per class (6 + 2 x 6 clouds)
+    estimate -dispersion nearwall,nearwall-utau,nearwall-k
+    grep -q '^Allrun: estimate: 102568 cells, 18 clouds, ' "$tmp/out" || fail "Allrun -estimate -dispersion nearwall,nearwall-utau,nearwall-k: $(cat "$tmp/out")"
     # -resume where a run wrote its options (here none: the default) but no mesh:
     # refused before anything is written
     : > "$w/log.Allrun.args"; listing > "$tmp/before"
