@@ -5,7 +5,10 @@
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include <cmocka.h>
 
 #include "swc_channel.h"
@@ -226,6 +229,82 @@ static void one_step(void **s)
     swd_free(m);
 }
 
+/* write text into a fresh temporary file; its path in buf */
+static void temp_file(char *buf, size_t n, const char *text)
+{
+    snprintf(buf, n, "/tmp/test_swd_XXXXXX");
+    const int fd = mkstemp(buf);
+    assert_true(fd >= 0);
+    FILE *f = fdopen(fd, "w");
+    assert_non_null(f);
+    fputs(text, f);
+    assert_int_equal(fclose(f), 0);
+}
+
+#define CLOSURE_HEAD "// a comment\n/* and\n another */\ndepositionClosure\n{\n    version 1; law wood;\n" \
+                     "    sublayerYPlus 10;\n    layerYPlus 100; blendYPlus 150; CT 0.3; Cmu 0.09;\n"
+
+/* A load error: SWD_EINVAL, the message holds want, the closure as it was. */
+static void load_refused(swd_model *m, const char *text, const char *want)
+{
+    char path[64];
+    temp_file(path, sizeof path, text);
+    const int was = swd_closure_on(m);
+    assert_int_equal(swd_load_closure(m, path), SWD_EINVAL);
+    if (!strstr(swd_errmsg(m), want) || !strstr(swd_errmsg(m), path))
+        fail_msg("message '%s' lacks '%s' or the path", swd_errmsg(m), want);
+    assert_int_equal(swd_closure_on(m), was);
+    unlink(path);
+}
+
+/* The closure's file as snowdeposit calibrate writes it, read by the core for
+ * hosts without a dictionary reader; every malformed variant refused with the
+ * file, line and key. */
+static void closure_file(void **s)
+{
+    (void)s;
+    swd_model *m = swd_alloc();
+    char path[64];
+    temp_file(path, sizeof path,
+              CLOSURE_HEAD "    tauPlus ( 0.1 1 10 );\n    vPlusSublayer ( 1e-6 1e-4 0 );\n"
+                           "    vPlusLaw ( 1 2 3 );\n}\n");
+    assert_int_equal(swd_load_closure(m, path), SWD_OK);
+    assert_false(swd_ready(m));
+    assert_int_equal(swd_commit(m), SWD_OK);
+    assert_true(swd_closure_on(m));
+    ASSERT_REL(swd_closure_vs(m, 1.0), 1e-4, 1e-12);
+    ASSERT_REL(swd_closure_vs(m, sqrt(0.1)), 1e-5, 1e-9);   /* ln-ln between positive nodes */
+    unlink(path);
+    load_refused(m, "depositionClosure { sublayerYPlus 10; }", "missing key 'tauPlus'");
+    load_refused(m, CLOSURE_HEAD "tauPlus ( 0.1 1 ); vPlusSublayer ( 1e-6 1e-4 0 ); }",
+                 "tauPlus has 2 values, vPlusSublayer 3");
+    load_refused(m, CLOSURE_HEAD "tauPlus ( 0.1 nan 10 ); vPlusSublayer ( 1e-6 1e-4 0 ); }",
+                 "'nan' is not a finite number");
+    load_refused(m, CLOSURE_HEAD "tauPlus ( 0.1 1 10 ) vPlusSublayer ( 1e-6 1e-4 0 ); }",
+                 "key 'tauPlus': no ';'");
+    load_refused(m, CLOSURE_HEAD "tauPlus ( 0.1 1 10 ); vPlusSublayer ( 1e-6 1e-4 0 );",
+                 "no closing '}'");
+    load_refused(m, CLOSURE_HEAD "tauPlus ( 0.1 1 10 ; vPlusSublayer ( 1e-6 1e-4 0 ); }",
+                 "inside the list");
+    load_refused(m, "closure { }", "missing sub-dictionary 'depositionClosure");
+    load_refused(m, CLOSURE_HEAD "tauPlus ( 1 0.1 10 ); vPlusSublayer ( 1e-6 1e-4 0 ); }",
+                 "tauPlus[1]");
+    /* calibrated with another walk: refused, naming the setting */
+    load_refused(m, "depositionClosure { sublayerYPlus 10; layerYPlus 80; blendYPlus 150; CT 0.3; "
+                    "Cmu 0.09; tauPlus ( 0.1 1 ); vPlusSublayer ( 0 0 ); }",
+                 "calibrated with layerYPlus 80, the model uses 100");
+    load_refused(m, "depositionClosure { sublayerYPlus 10; tauPlus ( 0.1 1 ); vPlusSublayer ( 0 0 ); }",
+                 "missing key 'layerYPlus'");
+    assert_int_equal(swd_load_closure(m, "/nonexistent/deposition.coeffs"), SWD_EINVAL);
+    assert_non_null(strstr(swd_errmsg(m), "cannot open"));
+    assert_int_equal(swd_load_closure(m, NULL), SWD_EINVAL);
+    /* the shipped calibration loads */
+    assert_int_equal(swd_load_closure(m, SW_SHIPPED_CLOSURE), SWD_OK);
+    assert_int_equal(swd_commit(m), SWD_OK);
+    assert_true(swd_closure_vs(m, 1.0) > 0);
+    swd_free(m);
+}
+
 static void closure_table(void **s)
 {
     (void)s;
@@ -305,6 +384,7 @@ int main(void)
         cmocka_unit_test(wall_layer_values), cmocka_unit_test(relaxation_and_law),
         cmocka_unit_test(settings),          cmocka_unit_test(statistics),
         cmocka_unit_test(one_step),          cmocka_unit_test(closure_table),
+        cmocka_unit_test(closure_file),
         cmocka_unit_test(channel),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

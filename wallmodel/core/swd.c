@@ -1,5 +1,6 @@
 /* swd.c - near-wall particle dispersion (see swd.h). */
 #include "swd.h"
+#include "swd_internal.h"
 #include "swp_nearwall.h"
 
 #include <math.h>
@@ -42,6 +43,12 @@ static int fail(swd_model *m, int code, const char *fmt, ...)
     vsnprintf(m->err, sizeof m->err, fmt, ap);
     va_end(ap);
     return code;
+}
+
+/* for swd_load.c: a whole message (it carries the file and line) */
+int swd_fail_message(swd_model *m, const char *msg)
+{
+    return fail(m, SWD_EINVAL, "%s", msg);
 }
 
 swd_model *swd_alloc(void)

@@ -143,6 +143,15 @@ int swd_advance(const swd_model *m, const swd_local *at, double dt, double tau_p
  * all finite; sublayer_yplus in (0, layerYPlus]. All or nothing. */
 int swd_set_closure(swd_model *m, double sublayer_yplus, const double *tau_plus,
                     const double *vs, size_t n);
+/* Read the table from the file `snowdeposit calibrate` writes (deposition.coeffs:
+ * sublayerYPlus, tauPlus and vPlusSublayer of its sub-dictionary
+ * depositionClosure), for hosts without a dictionary reader of their own. The
+ * CRW settings the file records (layerYPlus, blendYPlus, CT, Cmu) must equal the
+ * model's: the closure belongs to the walk it was calibrated with. All or
+ * nothing: on an error (the message names the file, the line and the key) the
+ * model is unchanged. Like a set, a success makes the model not ready until
+ * swd_commit. */
+int swd_load_closure(swd_model *m, const char *path);
 void swd_closure_off(swd_model *m);
 int swd_closure_on(const swd_model *m);
 /* Vs+(tau+) of the table (0 without a table; NaN for NaN). */
