@@ -243,5 +243,14 @@ expect_error notwall "zone 'sides' (type snow) is not a wall: its face [0-9]* ha
 expect_error badtype "zone wall: type 'snowy' is not one of snow, escape, none" SWCS_BOX=badtype
 expect_error twice "zone wall is given twice (first as snow, now as escape)" SWCS_BOX=twice
 expect_error unnamed "zone 'top' has the Lagrangian type CS_LAGR_BC_USER but no swcs_zone call names it" SWCS_BOX=unnamed
-echo "bad input: ok (7 named errors, exit 1, no signal)"
+# the near-wall model's set-up (swcs_nearwall)
+expect_error nw-order "call swcs_nearwall_model() from cs_user_lagr_model first" SWCS_BOX=nw-order
+expect_error nw-zone "zone 'wal' (of 'wall,wal') is not a boundary zone of the case" SWCS_BOX=nw-zone
+expect_error nw-escape "zone 'top' is not a SnowWall snow zone" SWCS_BOX=nw-escape
+expect_error nw-twice "zone 'wall' is given twice in 'wall,wall'" SWCS_BOX=nw-twice
+expect_error nw-closure "missing.coeffs: cannot open" SWCS_BOX=nw-closure
+# (the check of Code_Saturne's own dispersion, idistu, is not reached on this
+# laminar box: Code_Saturne itself refuses idistu 1 without a turbulence model)
+expect_error nw-nok "the flow has no k and epsilon or omega fields" SWCS_BOX=nw-nok
+echo "bad input: ok (13 named errors, exit 1, no signal)"
 echo PASS

@@ -31,6 +31,7 @@
 
 #include "swcs.h"
 #include "swcs_book.h"
+#include "swcs_internal.h"
 #include "sww.h"
 
 BEGIN_C_DECLS
@@ -259,6 +260,14 @@ static void fill_field(void)
 double swcs_wall_shear(cs_lnum_t face_id)
 {
     const cs_mesh_quantities_t *q = cs_glob_mesh_quantities;
+    if (_s.shear_source == 0) {
+        /* first use without the shear gate (the near-wall model): the same
+           sources in the same order */
+        if (cs_field_by_name_try("boundary_forces")) _s.shear_source = 1;
+        else if (cs_field_by_name_try("ustar")) _s.shear_source = 2;
+        else stop("the wall shear stress is needed but the solver has neither the field "
+                  "'boundary_forces' nor 'ustar'%s%s", NULL, NULL);
+    }
     if (_s.shear_source == 1) {
         const cs_field_t *f = cs_field_by_name("boundary_forces");
         const cs_real_t *fv = f->val + 3 * face_id;
@@ -280,6 +289,28 @@ double swcs_wall_shear(cs_lnum_t face_id)
         return r * us * us;
     }
     return 0;
+}
+
+/* One impact of a particle of mass `mass` with velocity u on boundary face
+ * face_id of zone `zone`, decided by the core and booked: the outcome, the
+ * rebound velocity, and (for the caller's log) the face's outward unit normal,
+ * the wall shear stress read and the random number drawn. */
+static void decide(cs_lagr_particle_set_t *particles, cs_lnum_t p_id, cs_lnum_t face_id,
+                   int zone, double mass, const double u[3], sww_outcome *out, double u_new[3],
+                   double n[3], double *tau_w, double *r)
+{
+    /* Code_Saturne's boundary normals point out of the fluid domain */
+    const cs_real_t *sn = cs_glob_mesh_quantities->b_face_normal + 3 * face_id;
+    const double sm = sqrt(sn[0] * sn[0] + sn[1] * sn[1] + sn[2] * sn[2]);
+    for (int k = 0; k < 3; ++k) n[k] = sn[k] / sm;
+    *tau_w = sww_shear_on(_s.model) ? swcs_wall_shear(face_id) : 0;
+    cs_real_t rr = 0;
+    cs_random_uniform(1, &rr);
+    *r = rr >= 0 && rr < 1 ? rr : 0;
+    const double d = cs_lagr_particles_get_real(particles, p_id, CS_LAGR_DIAMETER);
+    if (swcs_book_impact(_s.book, _s.model, zone, (size_t)face_id, d, mass, u, NULL, n, *tau_w,
+                         *r, out, u_new) != SWW_OK)
+        stop("%s%s", swcs_book_errmsg(_s.book), NULL);
 }
 
 void swcs_boundary_interaction(cs_lagr_particle_set_t    *particles,
@@ -319,22 +350,11 @@ void swcs_boundary_interaction(cs_lagr_particle_set_t    *particles,
         return;
     }
 
-    /* the outward unit normal of the face (Code_Saturne's boundary normals
-       point out of the fluid domain) */
-    const cs_real_t *sn = cs_glob_mesh_quantities->b_face_normal + 3 * face_id;
-    const double sm = sqrt(sn[0] * sn[0] + sn[1] * sn[1] + sn[2] * sn[2]);
-    const double n[3] = {sn[0] / sm, sn[1] / sm, sn[2] / sm};
-    const double tau_w = sww_shear_on(_s.model) ? swcs_wall_shear(face_id) : 0;
-    cs_real_t r = 0;
-    cs_random_uniform(1, &r);
-    if (!(r >= 0 && r < 1)) r = 0;
-    const double d = cs_lagr_particles_get_real(particles, p_id, CS_LAGR_DIAMETER);
     const double u0[3] = {u[0], u[1], u[2]};
     sww_outcome out;
-    double un[3];
-    const int rc = swcs_book_impact(b, _s.model, b_zone_id, (size_t)face_id, d, mass, u0, NULL,
-                                    n, tau_w, r, &out, un);
-    if (rc != SWW_OK) stop("%s%s", swcs_book_errmsg(b), NULL);
+    double un[3], n[3], tau_w, r;
+    decide(particles, p_id, face_id, b_zone_id, mass, u0, &out, un, n, &tau_w, &r);
+    const double d = cs_lagr_particles_get_real(particles, p_id, CS_LAGR_DIAMETER);
     if (_s.verbose) {
         const double ut = sqrt(fmax(0, (u0[0] * u0[0] + u0[1] * u0[1] + u0[2] * u0[2])
                                         - pow(u0[0] * n[0] + u0[1] * n[1] + u0[2] * n[2], 2)));
@@ -382,6 +402,28 @@ void swcs_boundary_interaction(cs_lagr_particle_set_t    *particles,
     *tracking_state = CS_LAGR_PART_TO_SYNC;
 }
 
+int swcs_is_snow_zone(int zone_id)
+{
+    freeze();
+    return swcs_book_zone_type(_s.book, zone_id) == SWCS_SNOW;
+}
+
+int swcs_closure_impact(cs_lagr_particle_set_t *particles, cs_lnum_t p_id, cs_lnum_t face_id,
+                        int zone_id, const double u_imp[3], double u_out[3])
+{
+    freeze();
+    const double w = cs_lagr_particles_get_real(particles, p_id, CS_LAGR_STAT_WEIGHT);
+    const double mass = cs_lagr_particles_get_real(particles, p_id, CS_LAGR_MASS) * w;
+    sww_outcome out;
+    double n[3], tau_w, r;
+    decide(particles, p_id, face_id, zone_id, mass, u_imp, &out, u_out, n, &tau_w, &r);
+    if (out.fate != SWW_STICK) return 0;
+    cs_lagr_particles_set_flag(particles, p_id, CS_LAGR_PART_DEPOSITED | CS_LAGR_PART_TO_DELETE);
+    particles->n_part_dep += 1;
+    particles->weight_dep += w;
+    return 1;
+}
+
 void swcs_end_of_step(void)
 {
     if (!_s.book || !_s.model) return;   /* no set-up: nothing to report */
@@ -412,6 +454,7 @@ void swcs_end_of_step(void)
     char line[4096];
     swcs_book_summary(g, "SnowWall: ", line, sizeof line);
     bft_printf("SnowWall: time step %d, t = %.9g s\n%s", ts->nt_cur, ts->t_cur, line);
+    swcs_nearwall_end_of_step(1);
 
     char path[256];
     if (cs_glob_rank_id <= 0) {

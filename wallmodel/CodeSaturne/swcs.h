@@ -71,5 +71,36 @@ void swcs_end_of_step(void);
  * solver computes "boundary_forces", else rho u*^2 from the wall's "ustar". */
 double swcs_wall_shear(cs_lnum_t face_id);
 
+/* ---- the near-wall dispersion model of the C core (swd.h; swcs_nearwall.c) --
+ * The turbulence a particle sees near the listed snow walls, from its own wall
+ * distance (doc/deposition.md), instead of Code_Saturne's Langevin model, and
+ * the sublayer closure's deposits decided by the wall model like impacts:
+ *
+ *   cs_user_lagr_model():
+ *       cs_glob_lagr_time_scheme->idistu = 0;    the mean flow as the velocity seen
+ *       swcs_nearwall_model();                   reserves 4 user variables per particle
+ *                                                (the first free ones: w and its flag)
+ *   cs_user_lagr_boundary_conditions(bc_type):   last: after the swcs_zone calls and
+ *                                                the other set-up (it closes the set-up)
+ *       swcs_nearwall("walls,floor", "deposition.coeffs");   snow zones, comma-separated;
+ *                                                the closure's file ("" or NULL: the walk only)
+ *       swcs_nearwall_scale("max");              optional, before: max, wallShear, turbulence
+ *   cs_user_lagr_ef(dt_p, taup, ..., fextla):
+ *       swcs_nearwall_force(dt_p, taup, fextla); the walk's kick as an external force
+ *
+ * The flow must have k and epsilon or omega (a RANS model). u_tau of a wall face
+ * is read as swcs_wall_shear does. Each particle's wall is the face of the zones
+ * nearest to its cell's centre (a grid search once, on each rank among its own
+ * faces); y is its distance from that face's plane. Every bad set-up stops the
+ * run through bft_error with one message: swcs_nearwall before
+ * swcs_nearwall_model, a zone that is not a snow zone or is given twice, a
+ * closure file that does not load, Code_Saturne's own dispersion on, no k. At
+ * every output step the listing gets the closure's deposits per zone and their
+ * expected number. */
+void swcs_nearwall_model(void);
+void swcs_nearwall(const char *zones, const char *closure);
+void swcs_nearwall_scale(const char *name);
+void swcs_nearwall_force(cs_real_t dt_p, const cs_real_t taup[], cs_real_3_t fextla[]);
+
 END_C_DECLS
 #endif

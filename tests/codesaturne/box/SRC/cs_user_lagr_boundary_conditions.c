@@ -43,6 +43,17 @@ cs_user_lagr_boundary_conditions(const int  bc_type[])
   swcs_shear_gate_adhesion(0.01);
   swcs_output(10);
   swcs_verbose(1);
+  /* the near-wall model's set-up errors */
+  if (!strcmp(t, "nw-order") || !strcmp(t, "nw-nok"))
+    swcs_nearwall("wall", NULL);
+  else if (!strcmp(t, "nw-zone"))
+    swcs_nearwall("wall,wal", NULL);
+  else if (!strcmp(t, "nw-escape"))
+    swcs_nearwall("top", NULL);
+  else if (!strcmp(t, "nw-twice"))
+    swcs_nearwall("wall,wall", NULL);
+  else if (!strcmp(t, "nw-closure"))
+    swcs_nearwall("wall", "missing.coeffs");
 }
 
 void

@@ -1,10 +1,12 @@
 /* The deposition channel in Code_Saturne, the particles: the walls are a
  * SnowWall snow zone with a map on which every contact sticks
  * (every-contact-sticks.coeffs: d_crit 1 m), the deposit counted by the binding;
- * the counts CSV every CH_EVERY steps (environment, default 500). */
+ * the counts CSV every CH_EVERY steps (environment, default 500); with CH_TREAT
+ * nearwall or crw the C core's near-wall model on the walls. */
 #include "cs_defs.h"
 
 #include <stdlib.h>
+#include <string.h>
 
 #include "cs_lagr.h"
 #include "cs_lagr_prototypes.h"
@@ -21,6 +23,13 @@ cs_user_lagr_boundary_conditions(const int bc_type[])
   swcs_regime("regime.coeffs");
   swcs_zone(bc_type, "walls", "snow");
   swcs_output(e ? atoi(e) : 500);
+  /* the C core's near-wall model (CH_TREAT nearwall: with the closure of
+     deposition.coeffs; crw: without) */
+  const char *t = getenv("CH_TREAT");
+  if (t && !strcmp(t, "nearwall"))
+    swcs_nearwall("walls", "deposition.coeffs");
+  else if (t && !strcmp(t, "crw"))
+    swcs_nearwall("walls", NULL);
 }
 
 void
