@@ -98,6 +98,8 @@ die2() { echo "bend.sh: $*" >&2; exit 2; }
 [[ "$parcels" =~ ^[1-9][0-9]{0,5}$ ]] || die2 "--parcels: '$parcels' is not a whole number in 1..999999"
 # shellcheck source=../etc/outdir.sh
 . "$top/etc/outdir.sh"
+# shellcheck source=deposition/common.sh
+. "$here/common.sh"
 outdir_list stokes bend.sh --stokes "$stokes" num
 outdir_list models bend.sh --models "$models" name
 outdir_list meshes bend.sh --mesh "$meshes" name
@@ -145,56 +147,13 @@ lin=$(awk -v d="$dia" 'BEGIN { printf "%.6g", 5 * d }')
 lout=$(awk -v d="$dia" 'BEGIN { printf "%.6g", 4 * d }')
 lbend=$(awk -v a="$a" -v r="$r0" 'BEGIN { printf "%.6g", r * a * atan2(1, 0) }')
 
-control() {   # case app endTime deltaT writeInterval
-    cat > "$1/system/controlDict" <<EOF
-FoamFile { version 2.0; format ascii; class dictionary; object controlDict; }
-application     $2;
-startFrom       startTime;
-startTime       0;
-stopAt          endTime;
-endTime         $3;
-deltaT          $4;
-writeControl    timeStep;
-writeInterval   $5;
-purgeWrite      0;
-writeFormat     ascii;
-writePrecision  10;
-timeFormat      general;
-timePrecision   10;
-runTimeModifiable false;
-adjustTimeStep  no;
-libs            ("libsnowWallInteraction.so");
-EOF
-}
-
 # cloud properties: one Stokes number and treatment
 write_cloud() {   # case name d model
-    local c=$1 name=$2 d=$3 model=$4 disp=stochasticDispersionRAS funcs=
-    case "$model" in
-        stochastic) disp=stochasticDispersionRAS ;;
-        gradient) disp=gradientDispersionRAS ;;
-        none) disp=none ;;
-        nearwall|nearwall-utau|nearwall-k|crw)
-            disp=none
-            local inc='#include "deposition.coeffs"' cl=on scale=max
-            [ "$model" != crw ] || { inc=; cl=off; }
-            [ "$model" != nearwall-utau ] || scale=wallShear
-            [ "$model" != nearwall-k ] || scale=turbulence
-            funcs="nearWall { type snowNearWall; patches (wallIn bend wallOut); closure $cl; velocityScale $scale; $inc }"
-            ;;
-    esac
+    local c=$1 name=$2 d=$3 model=$4
+    dep_dispersion "$model" "(wallIn bend wallOut)" || return 1
     cat > "$c/constant/${name}Properties" <<EOF
 FoamFile { version 2.0; format ascii; class dictionary; object ${name}Properties; }
-solution
-{
-    active          true;
-    coupled         false;
-    transient       yes;
-    cellValueSourceCorrection off;
-    maxCo           0.3;
-    interpolationSchemes { rho cell; U cellPoint; mu cell; k cell; epsilon cell; }
-    integrationSchemes { U analytical; }
-}
+$(dep_cloud_solution)
 constantProperties { rho0 $rhop; }
 subModels
 {
@@ -213,7 +172,7 @@ subModels
             sizeDistribution { type fixedValue; fixedValueDistribution { value $d; } }
         }
     }
-    dispersionModel $disp;
+    dispersionModel $DEP_DISP;
     patchInteractionModel localInteraction;
     localInteractionCoeffs
     {
@@ -230,7 +189,7 @@ subModels
     stochasticCollisionModel none;
     collisionModel  none;
 }
-cloudFunctions { $funcs }
+cloudFunctions { $DEP_FUNCS }
 EOF
 }
 
@@ -301,7 +260,7 @@ EOF
     "$here/bend-mesh" --radius "$a" --bend-ratio "$r0" --inlet "$lin" --outlet "$lout" \
         --centre "$nc" --ring "$nr" --grading "$grading" --axial "$axial" > "$c/system/blockMeshDict"
     cp "$c/system/fvSchemes.flow" "$c/system/fvSchemes"
-    control "$c" simpleFoam 3000 1 3000
+    dep_control "$c" simpleFoam 3000 1 3000
     echo "bend.sh: $mesh mesh: blockMesh, simpleFoam"
     t0=$(date +%s)
     (cd "$c" && blockMesh > log.blockMesh 2>&1 && rm -rf 0 && cp -r 0.orig 0 \
@@ -341,17 +300,8 @@ EOF
             echo "$name $m $s $d" >> "$c/clouds.txt"
         done
     done
-    control "$c" pimpleUncoupledKinematicParcelFoam "$tend" "$dt" "$nsteps"
-    cat > "$c/system/fvSchemes" <<'EOF'
-FoamFile { version 2.0; format ascii; class dictionary; object fvSchemes; }
-ddtSchemes      { default Euler; }
-gradSchemes     { default Gauss linear; }
-divSchemes      { default none; div(phi,U) Gauss linear; div(phi,k) Gauss linear; div(phi,omega) Gauss linear; div((nuEff*dev2(T(grad(U))))) Gauss linear; }
-laplacianSchemes { default Gauss linear corrected; }
-interpolationSchemes { default linear; }
-snGradSchemes   { default corrected; }
-wallDist        { method meshWave; }
-EOF
+    dep_control "$c" pimpleUncoupledKinematicParcelFoam "$tend" "$dt" "$nsteps"
+    dep_particle_schemes "$c"
     echo "bend.sh: $mesh mesh: ${#clouds[@]} clouds of $parcels parcels, $nsteps steps of $dt s"
     t0=$(date +%s)
     (cd "$c" && pimpleUncoupledKinematicParcelFoam -frozen -clouds "($(echo "${clouds[@]}"))" > log.particles 2>&1) \

@@ -86,6 +86,8 @@ case "$meshes" in resolved|wf) ;; both) meshes="resolved wf" ;; *) die2 "--mesh:
 [[ "$trun" =~ ^[1-9][0-9]{0,6}$ ]] || die2 "--t-run: '$trun' is not a whole number of wall units in 1..9999999"
 # shellcheck source=../etc/outdir.sh
 . "$top/etc/outdir.sh"
+# shellcheck source=deposition/common.sh
+. "$here/common.sh"
 outdir_list taus deposition.sh --tau-plus "$taus" num
 outdir_list models deposition.sh --models "$models" name
 IFS=, read -r -a tauList <<< "$taus"
@@ -149,54 +151,13 @@ boundary
 EOF
 }
 
-control() {   # case app endTime deltaT writeInterval
-    cat > "$1/system/controlDict" <<EOF
-FoamFile { version 2.0; format ascii; class dictionary; object controlDict; }
-application     $2;
-startFrom       startTime;
-startTime       0;
-stopAt          endTime;
-endTime         $3;
-deltaT          $4;
-writeControl    timeStep;
-writeInterval   $5;
-purgeWrite      0;
-writeFormat     ascii;
-writePrecision  10;
-timeFormat      general;
-timePrecision   10;
-runTimeModifiable false;
-adjustTimeStep  no;
-libs            ("libsnowWallInteraction.so");
-EOF
-}
-
 # cloud properties: one tau+ and treatment
 write_cloud() {   # case name d model
-    local c=$1 name=$2 d=$3 model=$4 disp=stochasticDispersionRAS funcs=
-    case "$model" in
-        stochastic) disp=stochasticDispersionRAS ;;
-        gradient) disp=gradientDispersionRAS ;;
-        none) disp=none ;;
-        nearwall|crw)
-            disp=none
-            local inc='#include "deposition.coeffs"' cl=on
-            [ "$model" = nearwall ] || { inc=; cl=off; }
-            funcs="nearWall { type snowNearWall; patches (walls); closure $cl; $inc }"
-            ;;
-    esac
+    local c=$1 name=$2 d=$3 model=$4
+    dep_dispersion "$model" "(walls)" || return 1
     cat > "$c/constant/${name}Properties" <<EOF
 FoamFile { version 2.0; format ascii; class dictionary; object ${name}Properties; }
-solution
-{
-    active          true;
-    coupled         false;
-    transient       yes;
-    cellValueSourceCorrection off;
-    maxCo           0.3;
-    interpolationSchemes { rho cell; U cellPoint; mu cell; k cell; epsilon cell; }
-    integrationSchemes { U analytical; }
-}
+$(dep_cloud_solution)
 constantProperties { rho0 $rhop; }
 subModels
 {
@@ -215,14 +176,14 @@ subModels
             sizeDistribution { type fixedValue; fixedValueDistribution { value $d; } }
         }
     }
-    dispersionModel $disp;
+    dispersionModel $DEP_DISP;
     patchInteractionModel localInteraction;
     localInteractionCoeffs { patches ( walls { type escape; } ); }
     surfaceFilmModel none;
     stochasticCollisionModel none;
     collisionModel  none;
 }
-cloudFunctions { $funcs }
+cloudFunctions { $DEP_FUNCS }
 EOF
 }
 
@@ -269,7 +230,7 @@ nutWall $nutwall;
 EOF
     write_mesh "$c" "$ny" "$grading"
     cp "$c/system/fvSchemes.flow" "$c/system/fvSchemes"
-    control "$c" simpleFoam 4000 1 4000
+    dep_control "$c" simpleFoam 4000 1 4000
     echo "deposition.sh: $mesh mesh: blockMesh, simpleFoam"
     t0=$(date +%s)
     (cd "$c" && blockMesh > log.blockMesh 2>&1 && rm -rf 0 && cp -r 0.orig 0 \
@@ -306,17 +267,8 @@ EOF
         done
     done
     # the particle run: steps of 2 t+, written at the end of the warm-up and the end
-    control "$c" pimpleUncoupledKinematicParcelFoam "$tend" "$dt" "$nwarm"
-    cat > "$c/system/fvSchemes" <<'EOF'
-FoamFile { version 2.0; format ascii; class dictionary; object fvSchemes; }
-ddtSchemes      { default Euler; }
-gradSchemes     { default Gauss linear; }
-divSchemes      { default none; div(phi,U) Gauss linear; div(phi,k) Gauss linear; div(phi,omega) Gauss linear; div((nuEff*dev2(T(grad(U))))) Gauss linear; }
-laplacianSchemes { default Gauss linear corrected; }
-interpolationSchemes { default linear; }
-snGradSchemes   { default corrected; }
-wallDist        { method meshWave; }
-EOF
+    dep_control "$c" pimpleUncoupledKinematicParcelFoam "$tend" "$dt" "$nwarm"
+    dep_particle_schemes "$c"
     echo "deposition.sh: $mesh mesh: u_tau $utau m/s, Re_tau $retau; ${#clouds[@]} clouds of $parcels parcels, $nsteps steps of 2 t+"
     t0=$(date +%s)
     (cd "$c" && pimpleUncoupledKinematicParcelFoam -frozen -clouds "($(echo "${clouds[@]}"))" > log.particles 2>&1) \
