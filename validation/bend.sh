@@ -304,8 +304,7 @@ EOF
     dep_particle_schemes "$c"
     echo "bend.sh: $mesh mesh: ${#clouds[@]} clouds of $parcels parcels, $nsteps steps of $dt s"
     t0=$(date +%s)
-    (cd "$c" && pimpleUncoupledKinematicParcelFoam -frozen -clouds "($(echo "${clouds[@]}"))" > log.particles 2>&1) \
-        || { echo "bend.sh: $mesh: the particle run failed (see $c/log.particles)" >&2; return 1; }
+    dep_run_particles "$c" || { echo "bend.sh: $mesh: the particle run failed (see $c/log.particles)" >&2; return 1; }
     tpart=$(( $(date +%s) - t0 ))
 
     "$here/bend-efficiency" --case "$c" --mesh "$mesh" --parcels "$parcels" \

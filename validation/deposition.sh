@@ -271,8 +271,7 @@ EOF
     dep_particle_schemes "$c"
     echo "deposition.sh: $mesh mesh: u_tau $utau m/s, Re_tau $retau; ${#clouds[@]} clouds of $parcels parcels, $nsteps steps of 2 t+"
     t0=$(date +%s)
-    (cd "$c" && pimpleUncoupledKinematicParcelFoam -frozen -clouds "($(echo "${clouds[@]}"))" > log.particles 2>&1) \
-        || { echo "deposition.sh: $mesh: the particle run failed (see $c/log.particles)" >&2; exit 1; }
+    dep_run_particles "$c" || { echo "deposition.sh: $mesh: the particle run failed (see $c/log.particles)" >&2; exit 1; }
     tpart=$(( $(date +%s) - t0 ))
 
     # per cloud: V+ from the parcels left at every step and the closure's counts

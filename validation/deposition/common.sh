@@ -16,6 +16,10 @@
 #       without the closure); PATCHES the walls of snowNearWall, e.g. "(walls)"
 #   dep_cloud_solution
 #       the solution { } entry of a cloud's properties (stdout)
+#   dep_run_particles CASE
+#       the clouds named in CASE/clouds.txt (first word of each line) carried
+#       by the frozen flow together (pimpleUncoupledKinematicParcelFoam
+#       -frozen), the log in CASE/log.particles; the solver's exit status
 
 dep_control() {   # case app endTime deltaT writeInterval
     cat > "$1/system/controlDict" <<EOF2
@@ -83,4 +87,10 @@ solution
     integrationSchemes { U analytical; }
 }
 EOF2
+}
+
+dep_run_particles() {   # case
+    local names
+    names=$(awk '{ print $1 }' "$1/clouds.txt" | tr '\n' ' ')
+    (cd "$1" && pimpleUncoupledKinematicParcelFoam -frozen -clouds "(${names% })" > log.particles 2>&1)
 }
