@@ -287,6 +287,11 @@ static void closure_file(void **s)
     load_refused(m, CLOSURE_HEAD "tauPlus ( 0.1 1 10 ; vPlusSublayer ( 1e-6 1e-4 0 ); }",
                  "inside the list");
     load_refused(m, "closure { }", "missing sub-dictionary 'depositionClosure");
+    load_refused(m, CLOSURE_HEAD "tauPlus ( 0.1 1 1000000000000000000000000000000000000000000000000000000000000000000 ); "
+                    "vPlusSublayer ( 1e-6 1e-4 0 ); }",
+                 "a value longer than 63 characters");
+    load_refused(m, "depositionClosure { sublayerYPlus 100000000000000000000000000000000000000000000000000000000000000001; }",
+                 "a value longer than 63 characters");
     load_refused(m, CLOSURE_HEAD "tauPlus ( 1 0.1 10 ); vPlusSublayer ( 1e-6 1e-4 0 ); }",
                  "tauPlus[1]");
     /* calibrated with another walk: refused, naming the setting */

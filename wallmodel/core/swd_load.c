@@ -62,17 +62,19 @@ static int skip(rd *r)
     }
 }
 
-/* a word: up to a blank or one of ( ) { } ; */
+/* a word: up to a blank or one of ( ) { } ; - its length as read (a word
+ * longer than n - 1 is cut in w and reported by its full length) */
 static size_t word(rd *r, char *w, size_t n)
 {
-    size_t k = 0;
+    size_t k = 0, len = 0;
     while (r->p < r->end && !isspace((unsigned char)*r->p) && !strchr("(){};", *r->p)) {
         if (k + 1 < n)
             w[k++] = *r->p;
         r->p++;
+        len++;
     }
     w[k] = '\0';
-    return k;
+    return len;
 }
 
 /* a strict decimal number, finite */
@@ -116,10 +118,15 @@ static int read_list(rd *r, const char *key, double **out, size_t *n)
             break;
         }
         char w[64];
-        if (!word(r, w, sizeof w)) {
+        const size_t len = word(r, w, sizeof w);
+        if (!len) {
             free(v);
             return rfail(r, r->line, "key '%s': '%c' inside the list", key,
                          (char[]){ *r->p, '\0' });
+        }
+        if (len >= sizeof w) {
+            free(v);
+            return rfail(r, r->line, "key '%s': a value longer than 63 characters ('%s...')", key, w);
         }
         if (k == SWD_MAX_LIST) {
             free(v);
@@ -151,7 +158,10 @@ static int read_dict(rd *r, int inside, int depth, closure *c, int *found)
         }
         char key[64];
         const int line = r->line;
-        if (!word(r, key, sizeof key))
+        const size_t klen = word(r, key, sizeof key);
+        if (klen >= sizeof key)
+            return rfail(r, line, "a keyword longer than 63 characters ('%s...')", key, NULL);
+        if (!klen)
             return rfail(r, line, "expected a keyword, found '%s'%s",
                          (char[]){ *r->p, '\0' }, NULL);
         if (!skip(r))
@@ -186,9 +196,12 @@ static int read_dict(rd *r, int inside, int depth, closure *c, int *found)
                     return rfail(r, line, "key '%s' appears twice%s", key, NULL);
             }
         } else {
-            char w[256];
-            if (!word(r, w, sizeof w))
+            char w[64];
+            const size_t len = word(r, w, sizeof w);
+            if (!len)
                 return rfail(r, line, "key '%s': no value%s", key, NULL);
+            if (len >= sizeof w && inside)
+                return rfail(r, line, "key '%s': a value longer than 63 characters ('%s...')", key, w);
             if (inside) {
                 double v;
                 int k = -1;
