@@ -64,6 +64,9 @@
 # --short: the test (wf mesh, Stk 0.1 and 1, none and nearwall, 600 parcels).
 # Parcels still in the pipe when the run ends (the slowest, near the wall)
 # are counted and reported; the run ends after 8 flow-through times.
+# Before any work one line estimates the parcels, memory and time of the
+# options (scaled from the measured default run); a memory estimate above what
+# the machine has available is refused (exit 2).
 # Exit status: 0 done, 1 a run failed, 2 usage error.
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
@@ -128,6 +131,30 @@ done
 [ -x "$top/platforms/bin/pimpleUncoupledKinematicParcelFoam" ] && [ -f "$top/platforms/lib/libsnowWallInteraction.so" ] \
     || { echo "bend.sh: the project's solver and wrapper are missing: run ./Allwmake" >&2; exit 1; }
 command -v gnuplot >/dev/null || { echo "bend.sh: gnuplot not found" >&2; exit 1; }
+# what the options multiply, before any work: parcels, memory and time, scaled
+# from the measured default run (2026-11-28, one process per mesh: resolved flow
+# 154 s and 20 x 2000 parcels 97 s; wf 5 s and 94 s; fine 3.4 times the
+# resolved mesh's cells; about 4 kB a cell and 1 kB a parcel)
+avail=$(awk '/^MemAvailable:/ { print $2 * 1024 }' /proc/meminfo 2>/dev/null || true)
+awk -v meshes="${meshList[*]}" -v nm="${#modelList[@]}" -v ns="${#stkList[@]}" -v np="$parcels" -v st="$step" \
+    -v avail="${avail:-0}" '
+    BEGIN {
+        n = split(meshes, m, " "); p = nm * ns * np; tmax = 0; mem = 0
+        for (i = 1; i <= n; i++) {
+            c = m[i] == "wf" ? 4400 : m[i] == "fine" ? 261360 : 77440
+            tf = m[i] == "wf" ? 5 : m[i] == "fine" ? 154 * 4.5 : 154
+            tp = (m[i] == "wf" ? 94 : m[i] == "fine" ? 97 * 3.4 : 97) * (p / 40000) * (0.05 / st)
+            if (tf + tp > tmax) tmax = tf + tp
+            mem += c * 4e3 + p * 1e3
+        }
+        printf "bend.sh: estimate: %d parcels in %d clouds per mesh (%d mesh(es) side by side); memory about %.2g GB; about %.0f min\n", \
+            p, nm * ns, n, mem / 1e9, tmax / 60 + 0.5
+        if (avail > 0 && mem > avail) {
+            printf "bend.sh: the estimated memory %.2g GB is more than the %.2g GB available: fewer --parcels, --models, --stokes or meshes\n", \
+                mem / 1e9, avail / 1e9 > "/dev/stderr"
+            exit 2
+        }
+    }' || exit 2
 outdir_begin bend.sh "$out" "$force"
 # shellcheck source=../etc/openfoam-env.sh
 . "$top/etc/openfoam-env.sh" >/dev/null

@@ -43,11 +43,19 @@ check "refused: --out onto a foreign folder (exit 2, its file kept, nothing adde
     "[ $rc -eq 2 ] && [ \"\$(ls -A '$tmp/foreign')\" = mine.txt ] && grep -qx keep '$tmp/foreign/mine.txt'"
 "$bend" --short > "$tmp/err" 2>&1
 check "refused: no --out (exit 2)" "[ $? -eq 2 ]"
+# what the options multiply, estimated before any work: too much memory refused
+# (72 M parcels a mesh: about 0.2 TB)
+"$bend" --out "$tmp/huge" --mesh resolved,fine,wf --parcels 999999 --models stochastic,gradient,none,crw,nearwall,nearwall-k \
+    --stokes 0.01,0.02,0.03,0.05,0.1,0.2,0.3,0.5,1,2,3,5 > "$tmp/err" 2>&1
+rc=$?
+check "refused: an estimate above the available memory (exit 2, nothing written)" \
+    "[ $rc -eq 2 ] && [ ! -e '$tmp/huge' ] && grep -q 'bend.sh: estimate: 71999928 parcels in 72 clouds per mesh' '$tmp/err' && grep -q 'more than the .* GB available' '$tmp/err'"
 
 "$bend" --short --out "$tmp/out" > "$tmp/log" 2>&1
 rc=$?
 cat "$tmp/log"
 check "bend.sh --short exits 0" "[ $rc -eq 0 ]"
+check "the estimate line first" "head -1 '$tmp/log' | grep -q '^bend.sh: estimate: 2400 parcels in 4 clouds per mesh (1 mesh(es) side by side)'"
 csv="$tmp/out/efficiency.csv"
 check "efficiency.csv, efficiency.md, efficiency.png, flow.md written" \
     "[ -s '$csv' ] && [ -s '$tmp/out/efficiency.md' ] && [ -s '$tmp/out/efficiency.png' ] && [ -s '$tmp/out/flow.md' ]"
