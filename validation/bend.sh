@@ -26,9 +26,10 @@
 # number that the sublayer closure of snowNearWall brought there (its
 # probabilities summed; 0 for the other treatments), N_in the parcels that
 # entered the bend (released, less those deposited on the inlet pipe's wall,
-# less those that left through the inlet); standard error
-# sqrt(eta (1 - eta) / N_in) (binomial). Pui et al.'s turbulent fit
-# (Re 6 000 and 10 000): eta = 1 - 10^(-0.963 Stk).
+# those that left through the inlet and those still in the inlet pipe at the
+# end); standard error sqrt(eta (1 - eta) / N_in) (binomial); and eta_max,
+# eta if every parcel still in the bend at the end had deposited there. Pui
+# et al.'s turbulent fit (Re 6 000 and 10 000): eta = 1 - 10^(-0.963 Stk).
 #
 # Treatments (--models, comma-separated): stochastic
 # (stochasticDispersionRAS), gradient (gradientDispersionRAS), none (no
@@ -41,8 +42,8 @@
 # to a first cell of y+ about 1; 30, 60, 20 cells along the inlet, bend and
 # outlet), fine (the resolved mesh with 1.5 times the cells in every
 # direction: 12 x 12 + 4 x 12 x 30, 45, 90, 30; about 3.4 times the cells),
-# wf (a wall-function mesh, first cell centre at y+ about 25, as on the
-# wedge); both (default) is resolved,wf. The meshes run side by side, one
+# wf (a wall-function mesh, 4 x 4 + 4 x 4 x 4 cells a section, first cell
+# centre at y+ about 20, as on the wedge); both (default) is resolved,wf. The meshes run side by side, one
 # process each.
 # --step F: the particles' time step as a fraction of the bulk's transit time
 # of a tube radius (default 0.05; in (0, 0.5]).
