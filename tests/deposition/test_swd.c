@@ -285,7 +285,7 @@ static void closure_file(void **s)
     load_refused(m, CLOSURE_HEAD "tauPlus ( 0.1 1 10 ); vPlusSublayer ( 1e-6 1e-4 0 );",
                  "no closing '}'");
     load_refused(m, CLOSURE_HEAD "tauPlus ( 0.1 1 10 ; vPlusSublayer ( 1e-6 1e-4 0 ); }",
-                 "inside the list");
+                 "key 'tauPlus': ';' inside the list");
     load_refused(m, "closure { }", "missing sub-dictionary 'depositionClosure");
     load_refused(m, CLOSURE_HEAD "tauPlus ( 0.1 1 1000000000000000000000000000000000000000000000000000000000000000000 ); "
                     "vPlusSublayer ( 1e-6 1e-4 0 ); }",

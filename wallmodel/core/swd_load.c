@@ -121,7 +121,7 @@ static int read_list(rd *r, const char *key, double **out, size_t *n)
         const size_t len = word(r, w, sizeof w);
         if (!len) {
             free(v);
-            return rfail(r, r->line, "key '%s': '%c' inside the list", key,
+            return rfail(r, r->line, "key '%s': '%s' inside the list", key,
                          (char[]){ *r->p, '\0' });
         }
         if (len >= sizeof w) {
