@@ -297,6 +297,11 @@ case_from_base "$tmp/nwClosure"
 foamDictionary -entry cloudFunctions -set "{ nw { type snowNearWall; patches (wall); depositionClosure 1; } }" \
     "$tmp/nwClosure/$cpr" > /dev/null
 expect_fatal_io "$tmp/nwClosure" "snowNearWall: depositionClosure is not a sub-dictionary"
+# snowNearWall: the wall layer's velocity scale is one of three words
+case_from_base "$tmp/nwScale"
+foamDictionary -entry cloudFunctions -set "{ nw { type snowNearWall; patches (wall); velocityScale maximum; } }" \
+    "$tmp/nwScale/$cpr" > /dev/null
+expect_fatal_io "$tmp/nwScale" "snowNearWall: velocityScale 'maximum' is not max, wallShear or turbulence"
 # snowNearWall on a laminar flow walked with k = epsilon = 0: dispersion none without a
 # word (hostile sweep case 570); refused at set-up
 case_from_base "$tmp/nwLaminar"
