@@ -66,9 +66,11 @@ void swcs_boundary_interaction(cs_lagr_particle_set_t    *particles,
 
 void swcs_end_of_step(void);
 
-/* Wall shear stress [Pa] the shear gate reads at boundary face face_id (for
- * tests and logs): |tangential part of the boundary force| / face area when the
- * solver computes "boundary_forces", else rho u*^2 from the wall's "ustar". */
+/* Wall shear stress [Pa] at boundary face face_id, as the shear gate and the
+ * near-wall model read it: |tangential part of the boundary force| / face area
+ * when the solver computes "boundary_forces", else rho u*^2 from the wall's
+ * "ustar"; the source is chosen at the first call, and a solver with neither
+ * field stops the run (bft_error naming both). */
 double swcs_wall_shear(cs_lnum_t face_id);
 
 /* ---- the near-wall dispersion model of the C core (swd.h; swcs_nearwall.c) --
