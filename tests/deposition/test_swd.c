@@ -203,6 +203,40 @@ static void statistics(void **s)
     swd_free(m);
 }
 
+/* The hosts' wall frame: en into the fluid, es along the wall's part of the
+ * flow, ez = es x en, orthonormal; a flow normal to the wall or none still
+ * gives a frame; the contact speed is u* u+(d/2 in wall units). */
+static void wall_frame(void **s)
+{
+    (void)s;
+    const double n[3] = { 0, 0, -1 }, u[3] = { 3, 4, 7 };
+    double es[3], en[3], ez[3];
+    swd_wall_frame(n, u, es, en, ez);
+    assert_true(en[0] == 0 && en[1] == 0 && en[2] == 1);
+    ASSERT_REL(es[0], 0.6, 1e-15);
+    ASSERT_REL(es[1], 0.8, 1e-15);
+    assert_true(es[2] == 0);
+    /* ez = es x en = (0.8, -0.6, 0) */
+    ASSERT_REL(ez[0], 0.8, 1e-15);
+    ASSERT_REL(ez[1], -0.6, 1e-15);
+    const double normal[3] = { 0, 0, 5 }, none[3] = { 0, 0, 0 };
+    for (int c = 0; c < 2; c++) {
+        swd_wall_frame(n, c ? none : normal, es, en, ez);
+        double ss = 0, sn = 0, zz = 0;
+        for (int k = 0; k < 3; k++) {
+            ss += es[k] * es[k];
+            sn += es[k] * en[k];
+            zz += ez[k] * ez[k];
+        }
+        ASSERT_REL(ss, 1.0, 1e-15);
+        ASSERT_REL(zz, 1.0, 1e-15);
+        assert_true(fabs(sn) < 1e-15);
+    }
+    swd_stats st;
+    st.ustar = 0.5;
+    ASSERT_REL(swd_contact_speed(&st, 1.5e-5, 2e-5), 0.5 * swp_uplus(0.5 * 2e-5 * 0.5 / 1.5e-5), 1e-15);
+}
+
 /* One step against its closed form: w <- a w + sqrt(1 - a^2) xi (+ drift) and
  * the kick sigma w (1 - exp(-dt/tau_p)). */
 static void one_step(void **s)
@@ -389,7 +423,7 @@ int main(void)
         cmocka_unit_test(wall_layer_values), cmocka_unit_test(relaxation_and_law),
         cmocka_unit_test(settings),          cmocka_unit_test(statistics),
         cmocka_unit_test(one_step),          cmocka_unit_test(closure_table),
-        cmocka_unit_test(closure_file),
+        cmocka_unit_test(closure_file),      cmocka_unit_test(wall_frame),
         cmocka_unit_test(channel),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

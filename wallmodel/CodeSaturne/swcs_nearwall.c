@@ -256,37 +256,28 @@ void swcs_nearwall_force(cs_real_t dt_p, const cs_real_t taup[], cs_real_3_t fex
         at.eps = fmax(feps ? feps->val[c] : 0.09 * fk->val[c] * fomg->val[c], 0);
         const cs_lnum_t f = _nw.near[c];
         const cs_real_t *x = cs_lagr_particles_attr(p_set, ip, CS_LAGR_COORDS);
-        double en[3], es[3], ez[3];
+        double n_out[3] = {0, -1, 0};   /* the wall's outward normal (any without a wall) */
         if (f >= 0) {
+            /* Code_Saturne's boundary normals point out of the fluid */
             const cs_real_t *sn = q->b_face_normal + 3 * f, *xf = q->b_face_cog + 3 * f;
             const double s = cs_math_3_norm(sn);
             double y = 0;   /* the distance from the face's plane into the fluid */
             for (int k = 0; k < 3; ++k) {
-                en[k] = -sn[k] / s;   /* Code_Saturne's boundary normals point out */
-                y += (x[k] - xf[k]) * en[k];
+                n_out[k] = sn[k] / s;
+                y -= (x[k] - xf[k]) * n_out[k];
             }
             at.y = fmax(y, 0);
             const double tau_w = swcs_wall_shear(f);
             const double rf = rho > 0 ? rho : ro0;
             at.u_tau = tau_w > 0 ? sqrt(tau_w / rf) : 0;
         } else {
-            en[0] = 0, en[1] = 1, en[2] = 0;
             at.y = -1;
             at.u_tau = 0;
         }
         const cs_real_t *uc = fvel->val + 3 * c;
-        const double un = cs_math_3_dot_product(uc, en);
-        for (int k = 0; k < 3; ++k) es[k] = uc[k] - un * en[k];
-        double se = cs_math_3_norm(es);
-        if (!(se > 1e-300)) {
-            /* no flow along the wall: any direction in its plane */
-            const double t[3] = {fabs(en[0]) < 0.9 ? 1 : 0, fabs(en[0]) < 0.9 ? 0 : 1, 0};
-            const double tn = cs_math_3_dot_product(t, en);
-            for (int k = 0; k < 3; ++k) es[k] = t[k] - tn * en[k];
-            se = cs_math_3_norm(es);
-        }
-        for (int k = 0; k < 3; ++k) es[k] /= se;
-        cs_math_3_cross_product(es, en, ez);
+        const double ucd[3] = {uc[0], uc[1], uc[2]};
+        double es[3], en[3], ez[3];   /* streamwise, wall-normal into the fluid, spanwise */
+        swd_wall_frame(n_out, ucd, es, en, ez);
 
         /* the particle's normalized fluctuation, kept in its user variables */
         cs_real_t *u = cs_lagr_particles_attr(p_set, ip, CS_LAGR_USER);
@@ -326,7 +317,7 @@ void swcs_nearwall_force(cs_real_t dt_p, const cs_real_t taup[], cs_real_3_t fex
         const double d = cs_lagr_particles_get_real(p_set, ip, CS_LAGR_DIAMETER);
         const double mass = cs_lagr_particles_get_real(p_set, ip, CS_LAGR_MASS);
         const double rho_p = 6 * mass / (cs_math_pi * d * d * d);
-        const double tau_st = rho_p * d * d / (18 * mu);
+        const double tau_st = swp_tau_p(rho_p, d, mu, 0);   /* Stokes */
         const double lambda = swd_deposit_rate(_nw.m, &st, at.nu, tau_st);
         if (!(lambda > 0)) continue;
         const double prob = -expm1(-lambda * dt_p);
@@ -342,7 +333,7 @@ void swcs_nearwall_force(cs_real_t dt_p, const cs_real_t taup[], cs_real_3_t fex
            sublayer carries it: u+ = y+ at y = d/2) */
         cs_real_t *v = cs_lagr_particles_attr(p_set, ip, CS_LAGR_VELOCITY);
         const double vn = -cs_math_3_dot_product(v, en);
-        const double ut = st.ustar * swp_uplus(0.5 * d * st.ustar / at.nu);
+        const double ut = swd_contact_speed(&st, at.nu, d);
         double uimp[3], uout[3];
         for (int k = 0; k < 3; ++k) uimp[k] = -fmax(vn, 0) * en[k] + ut * es[k];
         _nw.drawn[zi]++;

@@ -175,6 +175,36 @@ void swd_describe(const swd_model *m, char *buf, size_t n)
              m->v[K_CMU], m->scale == SWD_USTAR_TURBULENCE ? " (not u_tau)" : ")");
 }
 
+void swd_wall_frame(const double n_out[3], const double u[3], double es[3], double en[3],
+                    double ez[3])
+{
+    for (int k = 0; k < 3; k++)
+        en[k] = -n_out[k];
+    const double un = u[0] * en[0] + u[1] * en[1] + u[2] * en[2];
+    for (int k = 0; k < 3; k++)
+        es[k] = u[k] - un * en[k];
+    double se = sqrt(es[0] * es[0] + es[1] * es[1] + es[2] * es[2]);
+    const double mu = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    if (!(se >= 1e-15 * (mu + 1e-300)) || !(se >= 1e-300)) {
+        /* no flow along the wall: any direction in its plane */
+        const double t[3] = { fabs(en[0]) < 0.9 ? 1 : 0, fabs(en[0]) < 0.9 ? 0 : 1, 0 };
+        const double tn = t[0] * en[0] + t[1] * en[1] + t[2] * en[2];
+        for (int k = 0; k < 3; k++)
+            es[k] = t[k] - tn * en[k];
+        se = sqrt(es[0] * es[0] + es[1] * es[1] + es[2] * es[2]);
+    }
+    for (int k = 0; k < 3; k++)
+        es[k] /= se;
+    ez[0] = es[1] * en[2] - es[2] * en[1];
+    ez[1] = es[2] * en[0] - es[0] * en[2];
+    ez[2] = es[0] * en[1] - es[1] * en[0];
+}
+
+double swd_contact_speed(const swd_stats *st, double nu, double d)
+{
+    return st->ustar * swp_uplus(0.5 * d * st->ustar / nu);
+}
+
 static int finite_nonneg(double x)
 {
     return isfinite(x) && x >= 0.0;

@@ -127,6 +127,19 @@ int swd_stats_at(const swd_model *m, const swd_local *at, swd_stats *out);
 int swd_advance(const swd_model *m, const swd_local *at, double dt, double tau_p,
                 double w[3], const double xi[3], double kick[3], swd_stats *st);
 
+/* The wall frame of a particle, for the hosts: en the wall normal into the
+ * fluid (minus n_out, the wall's outward unit normal), es the unit direction of
+ * the fluid velocity u along the wall (when u has no part along it, relative to
+ * its size, any direction in the wall's plane), ez = es x en. */
+void swd_wall_frame(const double n_out[3], const double u[3], double es[3], double en[3],
+                    double ez[3]);
+
+/* The fluid's speed along the wall at the centre of a particle of diameter d
+ * touching it: u* u+(y+) of the viscous sublayer at y = d/2 (u+ = y+ there),
+ * with u* of the statistics st; the along-wall part of the impact velocity the
+ * hosts give a particle the closure brings to the wall. */
+double swd_contact_speed(const swd_stats *st, double nu, double d);
+
 /* ---- the sublayer deposition closure (optional; off until a table is set) --
  * A Gaussian CRW carries particles of tau+ below about 5 into the viscous
  * sublayer far too rarely: it misses most of the measured diffusion-impaction

@@ -463,11 +463,10 @@ void Foam::SnowNearWall<CloudType>::postMove
     at.k = max(k_[celli], scalar(0));
     at.eps = max(epsilon_[celli], scalar(0));
     const vector Uc = cloud.U()[celli];
-    vector en, es, ez;          // wall-normal (into the fluid), streamwise, spanwise
+    vector n(0, -1, 0);         // the wall's outward normal (any without a wall)
     if (f >= 0)
     {
-        const vector n = mesh.faceAreas()[f]/mag(mesh.faceAreas()[f]);
-        en = -n;
+        n = mesh.faceAreas()[f]/mag(mesh.faceAreas()[f]);
         // the distance to the face itself (its nearest point), not to its
         // plane: away from the face's edges the two are the same, beyond them
         // the plane would bring a far parcel into the wall layer
@@ -476,19 +475,14 @@ void Foam::SnowNearWall<CloudType>::postMove
     }
     else
     {
-        en = vector(0, 1, 0);
         at.y = -1;
         at.u_tau = 0;
     }
-    es = Uc - (Uc & en)*en;
-    if (mag(es) < SMALL*(mag(Uc) + VSMALL) || mag(es) < VSMALL)
-    {
-        // no flow along the wall: any direction in its plane
-        es = (mag(en.x()) < 0.9 ? vector(1, 0, 0) : vector(0, 1, 0));
-        es -= (es & en)*en;
-    }
-    es /= mag(es);
-    ez = es ^ en;
+    // the wall frame: wall-normal (into the fluid), streamwise, spanwise
+    const double nOut[3] = {n.x(), n.y(), n.z()}, uc[3] = {Uc.x(), Uc.y(), Uc.z()};
+    double fs[3], fn[3], fz[3];
+    swd_wall_frame(nOut, uc, fs, fn, fz);
+    const vector es(fs[0], fs[1], fs[2]), en(fn[0], fn[1], fn[2]), ez(fz[0], fz[1], fz[2]);
 
     Random& rnd = cloud.rndGen();
     // the parcel's normalized fluctuation (tTurb 1: drawn by this object)
@@ -560,10 +554,10 @@ void Foam::SnowNearWall<CloudType>::postMove
         // the impact: the parcel's own wall-normal velocity towards the wall,
         // and along the wall the fluid's speed at contact height (the
         // viscous sublayer carries it: u+ = y+ at y = d/2)
-        const scalar rPlus = 0.5*p.d()*st.ustar/at.nu;
+        const scalar uContact = swd_contact_speed(&st, at.nu, p.d());
         const scalar Un = -(p.U() & en);
         const vector Uimp =
-            -max(Un, scalar(0))*en + es*st.ustar*swp_uplus(rPlus);
+            -max(Un, scalar(0))*en + es*uContact;
         const vector Usave = p.U();
         p.U() = Uimp;
         bool keep = true;
@@ -577,7 +571,7 @@ void Foam::SnowNearWall<CloudType>::postMove
         {
             // bounced or ripped off: on its way with the rebound velocity
             // plus the wall's velocity along it
-            p.U() += (Usave - (Usave & en)*en) - es*st.ustar*swp_uplus(rPlus);
+            p.U() += (Usave - (Usave & en)*en) - es*uContact;
         }
     }
     else
