@@ -80,23 +80,23 @@ parcels=2000
 coeffs=
 force=0
 step=0.05
+die2() { echo "bend.sh: $*" >&2; exit 2; }
 while [ $# -gt 0 ]; do
     case "$1" in
         -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;;
-        --out) out=${2:?"--out needs a folder"}; shift ;;
-        --mesh) meshes=${2:?"--mesh needs a list of resolved, fine, wf or both"}; shift ;;
-        --step) step=${2:?"--step needs a number"}; shift ;;
-        --stokes) stokes=${2:?"--stokes needs a list"}; shift ;;
-        --models) models=${2:?"--models needs a list"}; shift ;;
-        --parcels) parcels=${2:?"--parcels needs a number"}; shift ;;
-        --coeffs) coeffs=${2:?"--coeffs needs a file"}; shift ;;
+        --out) [ -n "${2:-}" ] || die2 "--out needs a folder"; out=$2; shift ;;
+        --mesh) [ -n "${2:-}" ] || die2 "--mesh needs a list of resolved, fine, wf or both"; meshes=$2; shift ;;
+        --step) [ -n "${2:-}" ] || die2 "--step needs a number"; step=$2; shift ;;
+        --stokes) [ -n "${2:-}" ] || die2 "--stokes needs a list"; stokes=$2; shift ;;
+        --models) [ -n "${2:-}" ] || die2 "--models needs a list"; models=$2; shift ;;
+        --parcels) [ -n "${2:-}" ] || die2 "--parcels needs a number"; parcels=$2; shift ;;
+        --coeffs) [ -n "${2:-}" ] || die2 "--coeffs needs a file"; coeffs=$2; shift ;;
         --force) force=1 ;;
         --short) meshes=wf; stokes=0.1,1; models=none,nearwall; parcels=600 ;;
         *) echo "bend.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
     esac
     shift
 done
-die2() { echo "bend.sh: $*" >&2; exit 2; }
 [ -n "$out" ] || die2 "--out DIR is required (see --help)"
 [ "$meshes" = both ] && meshes=resolved,wf
 [[ "$parcels" =~ ^[1-9][0-9]{0,5}$ ]] || die2 "--parcels: '$parcels' is not a whole number in 1..999999"

@@ -62,16 +62,17 @@ twarm=2000
 coeffs=
 calibrate=0
 force=0
+die2() { echo "deposition.sh: $*" >&2; exit 2; }
 while [ $# -gt 0 ]; do
     case "$1" in
         -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;;
-        --out) out=${2:?"--out needs a folder"}; shift ;;
-        --mesh) meshes=${2:?"--mesh needs resolved, wf or both"}; shift ;;
-        --tau-plus) taus=${2:?"--tau-plus needs a list"}; shift ;;
-        --models) models=${2:?"--models needs a list"}; shift ;;
-        --parcels) parcels=${2:?"--parcels needs a number"}; shift ;;
-        --t-run) trun=${2:?"--t-run needs a number"}; shift ;;
-        --coeffs) coeffs=${2:?"--coeffs needs a file"}; shift ;;
+        --out) [ -n "${2:-}" ] || die2 "--out needs a folder"; out=$2; shift ;;
+        --mesh) [ -n "${2:-}" ] || die2 "--mesh needs resolved, wf or both"; meshes=$2; shift ;;
+        --tau-plus) [ -n "${2:-}" ] || die2 "--tau-plus needs a list"; taus=$2; shift ;;
+        --models) [ -n "${2:-}" ] || die2 "--models needs a list"; models=$2; shift ;;
+        --parcels) [ -n "${2:-}" ] || die2 "--parcels needs a number"; parcels=$2; shift ;;
+        --t-run) [ -n "${2:-}" ] || die2 "--t-run needs a number"; trun=$2; shift ;;
+        --coeffs) [ -n "${2:-}" ] || die2 "--coeffs needs a file"; coeffs=$2; shift ;;
         --calibrate) calibrate=1 ;;
         --force) force=1 ;;
         --short) meshes=wf; taus=1,10; models=nearwall; parcels=1000; trun=8000; twarm=1000 ;;
@@ -79,7 +80,6 @@ while [ $# -gt 0 ]; do
     esac
     shift
 done
-die2() { echo "deposition.sh: $*" >&2; exit 2; }
 [ -n "$out" ] || die2 "--out DIR is required (see --help)"
 case "$meshes" in resolved|wf) ;; both) meshes="resolved wf" ;; *) die2 "--mesh: '$meshes' is not resolved, wf or both" ;; esac
 [[ "$parcels" =~ ^[1-9][0-9]{0,5}$ ]] || die2 "--parcels: '$parcels' is not a whole number in 1..999999"

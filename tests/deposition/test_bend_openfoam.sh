@@ -43,6 +43,11 @@ check "refused: --out onto a foreign folder (exit 2, its file kept, nothing adde
     "[ $rc -eq 2 ] && [ \"\$(ls -A '$tmp/foreign')\" = mine.txt ] && grep -qx keep '$tmp/foreign/mine.txt'"
 "$bend" --short > "$tmp/err" 2>&1
 check "refused: no --out (exit 2)" "[ $? -eq 2 ]"
+for o in --stokes --step --mesh --out; do
+    "$bend" --out "$tmp/refused" $o > "$tmp/err" 2>&1
+    rc=$?
+    check "refused: $o without its value (exit 2, named)" "[ $rc -eq 2 ] && grep -q '^bend.sh: $o needs ' '$tmp/err'"
+done
 # what the options multiply, estimated before any work: too much memory refused
 # (72 M parcels a mesh: about 0.2 TB)
 "$bend" --out "$tmp/huge" --mesh resolved,fine,wf --parcels 999999 --models stochastic,gradient,none,crw,nearwall,nearwall-k \
