@@ -7,14 +7,15 @@
 #            [--gravity none|floor] [--coeffs FILE] [--short] [--help]
 #
 # A channel of height 10 H (H = 5 mm) with square ribs of height H on its
-# floor every 20 H and a smooth top wall, periodic along the flow and across
-# it, air at 20 C, the bulk velocity 6 m/s (Re 20 000 on the channel's
-# height) held by a mean pressure gradient; steady RANS (kOmegaSST,
-# simpleFoam, 4000 iterations; the flow table gives the pressure gradient's
-# change over the last 500 as its convergence), then frozen. Behind each rib the flow separates and reattaches
-# a few rib heights downstream: the wall shear goes to zero and changes sign,
-# the case where the near-wall treatment leaves the channel it was calibrated
-# in. The smooth top wall of the same channel is the reference.
+# floor every 20 H and a smooth top wall, periodic along the flow, two-
+# dimensional (one cell across, empty sides), air at 20 C, the bulk velocity
+# 6 m/s (Re 20 000 on the channel's height) held by a mean pressure gradient;
+# steady RANS (kOmegaSST, simpleFoam, 4000 iterations; the flow table gives
+# the pressure gradient's change over the last 500 as its convergence), then
+# frozen. Behind each rib the flow separates and reattaches a few rib heights
+# downstream: the wall shear goes to zero and changes sign, the case where the
+# near-wall treatment leaves the channel it was calibrated in. The smooth top
+# wall of the same channel is the reference.
 #
 # For every tau+ of the list and every treatment one cloud of ice spheres
 # (920 kg/m3) released uniformly over the channel; every wall contact is a
@@ -45,9 +46,9 @@
 # particles across) or floor (gravity towards the floor, as in wind-tunnel
 # measurements on horizontal floors); --tau-plus: default 0.3,1,3,10,30 (each
 # in (0, 1000], no value twice); --parcels per cloud (default 3000); --t-run
-# (default 20000); --coeffs: the closure (default etc/deposition.coeffs);
-# --short: the test (wf mesh, tau+ 10, none and nearwall, 1500 parcels,
-# window 4000).
+# (default 20000, rounded up to whole warm-up lengths); --coeffs: the
+# closure (default etc/deposition.coeffs); --short: the test (wf mesh, tau+
+# 10, none and nearwall, 1500 parcels, window 4000).
 #
 # Writes into DIR, only when the run succeeds: zones.csv (per mesh,
 # treatment, tau+ and zone: the counts, V+, its error, V+ over the top wall's),
@@ -126,7 +127,7 @@ command -v gnuplot >/dev/null || { echo "rib.sh: gnuplot not found" >&2; exit 1;
 # what the options multiply, before any work, scaled from the measured default
 # run (2026-11-28, one process per mesh; see doc/deposition.md): about 4 kB a
 # cell and 1 kB a parcel; the particle time per parcel and step
-nsteps_est=$(awk -v w="$twarm" -v r="$trun" 'BEGIN { printf "%d", (w + r) / 2 }')
+nsteps_est=$(awk -v w="$twarm" -v r="$trun" 'BEGIN { nw = int(w / 2 + 0.5); printf "%d", nw * (1 + int((r / 2 + nw - 1) / nw)) }')
 avail=$(awk '/^MemAvailable:/ { print $2 * 1024 }' /proc/meminfo 2>/dev/null || true)
 awk -v meshes="$meshes" -v nm="${#modelList[@]}" -v ns="${#tauList[@]}" -v np="$parcels" -v st="$nsteps_est" \
     -v avail="${avail:-0}" '
@@ -289,7 +290,8 @@ EOF
 
     tnu=$(awk -v u="$utop" -v nu="$nu" 'BEGIN { printf "%.10g", nu / (u * u) }')
     dt=$(awk -v t="$tnu" 'BEGIN { printf "%.6g", 2 * t }')
-    nsteps=$(awk -v w="$twarm" -v r="$trun" 'BEGIN { printf "%d", (w + r) / 2 + 0.5 }')
+    # whole warm-up lengths: the closure's counts are written at their ends
+    nsteps=$(awk -v w="$twarm" -v r="$trun" 'BEGIN { nw = int(w / 2 + 0.5); printf "%d", nw * (1 + int((r / 2 + nw - 1) / nw)) }')
     tend=$(awk -v n="$nsteps" -v b="$dt" 'BEGIN { printf "%.10g", n * b }')
     nwarm=$(awk -v w="$twarm" 'BEGIN { printf "%d", w / 2 + 0.5 }')
     write_positions "$c" "$parcels" 7
