@@ -136,10 +136,8 @@ command -v gnuplot >/dev/null || { echo "bend.sh: gnuplot not found" >&2; exit 1
 # from the measured default run (2026-11-28, one process per mesh: resolved flow
 # 154 s and 20 x 2000 parcels 97 s; wf 5 s and 94 s; fine 3.4 times the
 # resolved mesh's cells; about 4 kB a cell and 1 kB a parcel)
-avail=$(awk '/^MemAvailable:/ { print $2 * 1024 }' /proc/meminfo 2>/dev/null || true)
-awk -v meshes="${meshList[*]}" -v nm="${#modelList[@]}" -v ns="${#stkList[@]}" -v np="$parcels" -v st="$step" \
-    -v avail="${avail:-0}" '
-    BEGIN {
+read -r est_p est_mem est_min < <(awk -v meshes="${meshList[*]}" -v nm="${#modelList[@]}" -v ns="${#stkList[@]}" \
+    -v np="$parcels" -v st="$step" 'BEGIN {
         n = split(meshes, m, " "); p = nm * ns * np; tmax = 0; mem = 0
         for (i = 1; i <= n; i++) {
             c = m[i] == "wf" ? 4400 : m[i] == "fine" ? 261360 : 77440
@@ -148,14 +146,10 @@ awk -v meshes="${meshList[*]}" -v nm="${#modelList[@]}" -v ns="${#stkList[@]}" -
             if (tf + tp > tmax) tmax = tf + tp
             mem += c * 4e3 + p * 1e3
         }
-        printf "bend.sh: estimate: %d parcels in %d clouds per mesh (%d mesh(es) side by side); memory about %.2g GB; about %.0f min\n", \
-            p, nm * ns, n, mem / 1e9, tmax / 60 + 0.5
-        if (avail > 0 && mem > avail) {
-            printf "bend.sh: the estimated memory %.2g GB is more than the %.2g GB available: fewer --parcels, --models, --stokes or meshes\n", \
-                mem / 1e9, avail / 1e9 > "/dev/stderr"
-            exit 2
-        }
-    }' || exit 2
+        printf "%d %.6g %.6g\n", p, mem, tmax / 60
+    }')
+dep_estimate bend.sh "$est_p" $((${#modelList[@]} * ${#stkList[@]})) "${#meshList[@]} mesh(es) side by side" "$est_mem" "$est_min" \
+    "fewer --parcels, --models, --stokes or meshes" || exit 2
 outdir_begin bend.sh "$out" "$force"
 # shellcheck source=../etc/openfoam-env.sh
 . "$top/etc/openfoam-env.sh" >/dev/null
@@ -177,48 +171,7 @@ lbend=$(awk -v a="$a" -v r="$r0" 'BEGIN { printf "%.6g", r * a * atan2(1, 0) }')
 
 # cloud properties: one Stokes number and treatment
 write_cloud() {   # case name d model
-    local c=$1 name=$2 d=$3 model=$4
-    dep_dispersion "$model" "(wallIn bend wallOut)" || return 1
-    cat > "$c/constant/${name}Properties" <<EOF
-FoamFile { version 2.0; format ascii; class dictionary; object ${name}Properties; }
-$(dep_cloud_solution)
-constantProperties { rho0 $rhop; }
-subModels
-{
-    particleForces { sphereDrag; gravity; }
-    injectionModels
-    {
-        inlet
-        {
-            type            manualInjection;
-            massTotal       1;
-            parcelBasisType fixed;
-            nParticle       1;
-            SOI             0;
-            positionsFile   "positions";
-            U0              ($ubar 0 0);
-            sizeDistribution { type fixedValue; fixedValueDistribution { value $d; } }
-        }
-    }
-    dispersionModel $DEP_DISP;
-    patchInteractionModel localInteraction;
-    localInteractionCoeffs
-    {
-        patches
-        (
-            inlet   { type escape; }
-            outlet  { type escape; }
-            wallIn  { type escape; }
-            bend    { type escape; }
-            wallOut { type escape; }
-        );
-    }
-    surfaceFilmModel none;
-    stochasticCollisionModel none;
-    collisionModel  none;
-}
-cloudFunctions { $DEP_FUNCS }
-EOF
+    dep_write_cloud "$1" "$2" "$3" "$4" "$rhop" "($ubar 0 0)" inlet "inlet outlet wallIn bend wallOut" "(wallIn bend wallOut)"
 }
 
 # the release: N points on the inlet plane, the radius drawn from the inlet's

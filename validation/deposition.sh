@@ -153,38 +153,7 @@ EOF
 
 # cloud properties: one tau+ and treatment
 write_cloud() {   # case name d model
-    local c=$1 name=$2 d=$3 model=$4
-    dep_dispersion "$model" "(walls)" || return 1
-    cat > "$c/constant/${name}Properties" <<EOF
-FoamFile { version 2.0; format ascii; class dictionary; object ${name}Properties; }
-$(dep_cloud_solution)
-constantProperties { rho0 $rhop; }
-subModels
-{
-    particleForces { sphereDrag; gravity; }
-    injectionModels
-    {
-        uniform
-        {
-            type            manualInjection;
-            massTotal       1;
-            parcelBasisType fixed;
-            nParticle       1;
-            SOI             0;
-            positionsFile   "positions";
-            U0              ($ubar 0 0);
-            sizeDistribution { type fixedValue; fixedValueDistribution { value $d; } }
-        }
-    }
-    dispersionModel $DEP_DISP;
-    patchInteractionModel localInteraction;
-    localInteractionCoeffs { patches ( walls { type escape; } ); }
-    surfaceFilmModel none;
-    stochasticCollisionModel none;
-    collisionModel  none;
-}
-cloudFunctions { $DEP_FUNCS }
-EOF
+    dep_write_cloud "$1" "$2" "$3" "$4" "$rhop" "($ubar 0 0)" uniform walls "(walls)"
 }
 
 # parcels released uniformly over the channel (away from the walls by 1e-6 h)

@@ -128,10 +128,8 @@ command -v gnuplot >/dev/null || { echo "rib.sh: gnuplot not found" >&2; exit 1;
 # run (2026-11-28, one process per mesh; see doc/deposition.md): about 4 kB a
 # cell and 1 kB a parcel; the particle time per parcel and step
 nsteps_est=$(awk -v w="$twarm" -v r="$trun" 'BEGIN { nw = int(w / 2 + 0.5); printf "%d", nw * (1 + int((r / 2 + nw - 1) / nw)) }')
-avail=$(awk '/^MemAvailable:/ { print $2 * 1024 }' /proc/meminfo 2>/dev/null || true)
-awk -v meshes="$meshes" -v nm="${#modelList[@]}" -v ns="${#tauList[@]}" -v np="$parcels" -v st="$nsteps_est" \
-    -v avail="${avail:-0}" '
-    BEGIN {
+read -r est_p est_mem est_min < <(awk -v meshes="$meshes" -v nm="${#modelList[@]}" -v ns="${#tauList[@]}" -v np="$parcels" \
+    -v st="$nsteps_est" 'BEGIN {
         n = split(meshes, m, " "); p = nm * ns * np; tmax = 0; mem = 0
         for (i = 1; i <= n; i++) {
             c = m[i] == "wf" ? 796 : 19280
@@ -140,14 +138,10 @@ awk -v meshes="$meshes" -v nm="${#modelList[@]}" -v ns="${#tauList[@]}" -v np="$
             if (tf + tp > tmax) tmax = tf + tp
             mem += c * 4e3 + p * 1e3
         }
-        printf "rib.sh: estimate: %d parcels in %d clouds per mesh, %d steps; memory about %.2g GB; about %.0f min\n", \
-            p, nm * ns, st, mem / 1e9, tmax / 60 + 0.5
-        if (avail > 0 && mem > avail) {
-            printf "rib.sh: the estimated memory %.2g GB is more than the %.2g GB available: fewer --parcels, --models or --tau-plus\n", \
-                mem / 1e9, avail / 1e9 > "/dev/stderr"
-            exit 2
-        }
-    }' || exit 2
+        printf "%d %.6g %.6g\n", p, mem, tmax / 60
+    }')
+dep_estimate rib.sh "$est_p" $((${#modelList[@]} * ${#tauList[@]})) "$nsteps_est steps" "$est_mem" "$est_min" \
+    "fewer --parcels, --models or --tau-plus" || exit 2
 outdir_begin rib.sh "$out" "$force"
 # shellcheck source=../etc/openfoam-env.sh
 . "$top/etc/openfoam-env.sh" >/dev/null
@@ -166,48 +160,7 @@ nz=$(awk -F, '{ print NF - 1 }' <<< "$zones")
 for ((i = 0; i < nz; i++)); do walls="$walls floor_$i"; done
 
 write_cloud() {   # case name d model
-    local c=$1 name=$2 d=$3 model=$4 p
-    dep_dispersion "$model" "($walls)" || return 1
-    {
-        echo "FoamFile { version 2.0; format ascii; class dictionary; object ${name}Properties; }"
-        dep_cloud_solution
-        cat <<EOF
-constantProperties { rho0 $rhop; }
-subModels
-{
-    particleForces { sphereDrag; gravity; }
-    injectionModels
-    {
-        uniform
-        {
-            type            manualInjection;
-            massTotal       1;
-            parcelBasisType fixed;
-            nParticle       1;
-            SOI             0;
-            positionsFile   "positions";
-            U0              ($ubar 0 0);
-            sizeDistribution { type fixedValue; fixedValueDistribution { value $d; } }
-        }
-    }
-    dispersionModel $DEP_DISP;
-    patchInteractionModel localInteraction;
-    localInteractionCoeffs
-    {
-        patches
-        (
-EOF
-        for p in $walls; do echo "            $p { type escape; }"; done
-        cat <<EOF
-        );
-    }
-    surfaceFilmModel none;
-    stochasticCollisionModel none;
-    collisionModel  none;
-}
-cloudFunctions { $DEP_FUNCS }
-EOF
-    } > "$c/constant/${name}Properties"
+    dep_write_cloud "$1" "$2" "$3" "$4" "$rhop" "($ubar 0 0)" uniform "$walls" "($walls)"
 }
 
 # parcels released uniformly over the fluid (not in the rib; 1e-6 H off the

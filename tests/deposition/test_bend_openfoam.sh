@@ -60,7 +60,7 @@ check "refused: an estimate above the available memory (exit 2, nothing written)
 rc=$?
 cat "$tmp/log"
 check "bend.sh --short exits 0" "[ $rc -eq 0 ]"
-check "the estimate line first" "head -1 '$tmp/log' | grep -q '^bend.sh: estimate: 2400 parcels in 4 clouds per mesh (1 mesh(es) side by side)'"
+check "the estimate line first" "head -1 '$tmp/log' | grep -q '^bend.sh: estimate: 2400 parcels in 4 clouds per mesh, 1 mesh(es) side by side;'"
 csv="$tmp/out/efficiency.csv"
 check "efficiency.csv, efficiency.md, efficiency.png, flow.md written" \
     "[ -s '$csv' ] && [ -s '$tmp/out/efficiency.md' ] && [ -s '$tmp/out/efficiency.png' ] && [ -s '$tmp/out/flow.md' ]"

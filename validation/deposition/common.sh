@@ -16,6 +16,16 @@
 #       without the closure); PATCHES the walls of snowNearWall, e.g. "(walls)"
 #   dep_cloud_solution
 #       the solution { } entry of a cloud's properties (stdout)
+#   dep_write_cloud CASE NAME D TREATMENT RHO U0 INJECTION ESCAPE WALLS
+#       CASE/constant/NAMEProperties: ice spheres of diameter D and density RHO
+#       released once at the points of constant/positions with velocity U0
+#       ("(u v w)"), injector named INJECTION; drag and gravity; TREATMENT as
+#       dep_dispersion with WALLS (e.g. "(walls)") for snowNearWall; every
+#       patch of ESCAPE (space-separated) a localInteraction escape
+#   dep_estimate SCRIPT PARCELS CLOUDS STEPS MEMORY MINUTES HINT
+#       the estimate line of what the options multiply (stdout) and, when the
+#       MEMORY estimate [bytes] is above what the machine has available, its
+#       refusal naming HINT (stderr, status 2)
 #   dep_run_particles CASE
 #       the clouds named in CASE/clouds.txt (first word of each line) carried
 #       by the frozen flow together (pimpleUncoupledKinematicParcelFoam
@@ -93,4 +103,63 @@ dep_run_particles() {   # case
     local names
     names=$(awk '{ print $1 }' "$1/clouds.txt" | tr '\n' ' ')
     (cd "$1" && pimpleUncoupledKinematicParcelFoam -frozen -clouds "(${names% })" > log.particles 2>&1)
+}
+
+dep_write_cloud() {   # case name d treatment rho U0 injection escape walls
+    local c=$1 name=$2 d=$3 model=$4 rho=$5 u0=$6 inj=$7 esc=$8 walls=$9 p
+    dep_dispersion "$model" "$walls" || return 1
+    {
+        echo "FoamFile { version 2.0; format ascii; class dictionary; object ${name}Properties; }"
+        dep_cloud_solution
+        cat <<EOF2
+constantProperties { rho0 $rho; }
+subModels
+{
+    particleForces { sphereDrag; gravity; }
+    injectionModels
+    {
+        $inj
+        {
+            type            manualInjection;
+            massTotal       1;
+            parcelBasisType fixed;
+            nParticle       1;
+            SOI             0;
+            positionsFile   "positions";
+            U0              $u0;
+            sizeDistribution { type fixedValue; fixedValueDistribution { value $d; } }
+        }
+    }
+    dispersionModel $DEP_DISP;
+    patchInteractionModel localInteraction;
+    localInteractionCoeffs
+    {
+        patches
+        (
+EOF2
+        for p in $esc; do echo "            $p { type escape; }"; done
+        cat <<EOF2
+        );
+    }
+    surfaceFilmModel none;
+    stochasticCollisionModel none;
+    collisionModel  none;
+}
+cloudFunctions { $DEP_FUNCS }
+EOF2
+    } > "$c/constant/${name}Properties"
+}
+
+dep_estimate() {   # script parcels clouds steps memory minutes hint
+    local avail
+    avail=$(awk '/^MemAvailable:/ { print $2 * 1024 }' /proc/meminfo 2>/dev/null || true)
+    awk -v s="$1" -v p="$2" -v nc="$3" -v st="$4" -v mem="$5" -v min="$6" -v hint="$7" -v avail="${avail:-0}" 'BEGIN {
+        printf "%s: estimate: %d parcels in %d clouds per mesh, %s; memory about %.2g GB; about %.0f min\n", \
+            s, p, nc, st, mem / 1e9, min + 0.5
+        if (avail > 0 && mem > avail) {
+            printf "%s: the estimated memory %.2g GB is more than the %.2g GB available: %s\n", \
+                s, mem / 1e9, avail / 1e9, hint > "/dev/stderr"
+            exit 2
+        }
+    }'
 }
