@@ -114,24 +114,12 @@ done
 awk -v t="$step" 'BEGIN { exit !(t ~ /^[0-9]*\.?[0-9]+([eE][-+]?[0-9]+)?$/ && t + 0 > 0 && t + 0 <= 0.5) }' \
     || die2 "--step: '$step' is not a number in (0, 0.5]"
 IFS=, read -r -a stkList <<< "$stokes"
-[ "${#stkList[@]}" -ge 1 ] && [ "${#stkList[@]}" -le 12 ] || die2 "--stokes: 1 to 12 values"
-for s in "${stkList[@]}"; do
-    awk -v t="$s" 'BEGIN { exit !(t ~ /^[0-9]*\.?[0-9]+([eE][-+]?[0-9]+)?$/ && t + 0 > 0 && t + 0 <= 10) }' \
-        || die2 "--stokes: '$s' is not a number in (0, 10]"
-done
+dep_numbers bend.sh --stokes 10 "${stkList[@]}" || exit 2
 IFS=, read -r -a modelList <<< "$models"
-for m in "${modelList[@]}"; do
-    case "$m" in stochastic|gradient|none|nearwall|nearwall-utau|nearwall-k|crw) ;;
-        *) die2 "--models: '$m' is not stochastic, gradient, none, nearwall, nearwall-utau, nearwall-k or crw" ;; esac
-done
+dep_models bend.sh "stochastic gradient none nearwall nearwall-utau nearwall-k crw" "${modelList[@]}" || exit 2
 [ -n "$coeffs" ] || coeffs="$top/etc/deposition.coeffs"
 [ -f "$coeffs" ] && [ -r "$coeffs" ] || die2 "--coeffs: cannot read '$coeffs'"
-for exe in simpleFoam blockMesh postProcess; do
-    command -v "$exe" >/dev/null || { echo "bend.sh: $exe not found (OpenFOAM: etc/setup.sh)" >&2; exit 1; }
-done
-[ -x "$top/platforms/bin/pimpleUncoupledKinematicParcelFoam" ] && [ -f "$top/platforms/lib/libsnowWallInteraction.so" ] \
-    || { echo "bend.sh: the project's solver and wrapper are missing: run ./Allwmake" >&2; exit 1; }
-command -v gnuplot >/dev/null || { echo "bend.sh: gnuplot not found" >&2; exit 1; }
+dep_require bend.sh "$top" simpleFoam blockMesh postProcess || exit 1
 # what the options multiply, before any work: parcels, memory and time, scaled
 # from the measured default run (2026-11-28, one process per mesh: resolved flow
 # 154 s and 20 x 2000 parcels 97 s; wf 5 s and 94 s; fine 3.4 times the

@@ -91,25 +91,14 @@ case "$meshes" in resolved|wf) ;; both) meshes="resolved wf" ;; *) die2 "--mesh:
 outdir_list taus deposition.sh --tau-plus "$taus" num
 outdir_list models deposition.sh --models "$models" name
 IFS=, read -r -a tauList <<< "$taus"
-[ "${#tauList[@]}" -ge 1 ] && [ "${#tauList[@]}" -le 12 ] || die2 "--tau-plus: 1 to 12 values"
-for t in "${tauList[@]}"; do
-    awk -v t="$t" 'BEGIN { exit !(t ~ /^[0-9]*\.?[0-9]+([eE][-+]?[0-9]+)?$/ && t + 0 > 0 && t + 0 <= 1000) }' \
-        || die2 "--tau-plus: '$t' is not a number in (0, 1000]"
-done
+dep_numbers deposition.sh --tau-plus 1000 "${tauList[@]}" || exit 2
 IFS=, read -r -a modelList <<< "$models"
-for m in "${modelList[@]}"; do
-    case "$m" in stochastic|gradient|none|nearwall|crw) ;; *) die2 "--models: '$m' is not stochastic, gradient, none, nearwall or crw" ;; esac
-done
+dep_models deposition.sh "stochastic gradient none nearwall crw" "${modelList[@]}" || exit 2
 [ -z "$coeffs" ] || [ "$calibrate" = 0 ] || die2 "--coeffs and --calibrate exclude each other"
 [ -n "$coeffs" ] || coeffs="$top/etc/deposition.coeffs"
 [ -r "$coeffs" ] || die2 "--coeffs: cannot read '$coeffs'"
-for exe in simpleFoam blockMesh; do
-    command -v "$exe" >/dev/null || { echo "deposition.sh: $exe not found (OpenFOAM: etc/setup.sh)" >&2; exit 1; }
-done
-[ -x "$top/platforms/bin/pimpleUncoupledKinematicParcelFoam" ] && [ -f "$top/platforms/lib/libsnowWallInteraction.so" ] \
-    || { echo "deposition.sh: the project's solver and wrapper are missing: run ./Allwmake" >&2; exit 1; }
+dep_require deposition.sh "$top" simpleFoam blockMesh || exit 1
 [ -x "$top/bin/snowdeposit" ] || { echo "deposition.sh: bin/snowdeposit missing: run ./Allwmake" >&2; exit 1; }
-command -v gnuplot >/dev/null || { echo "deposition.sh: gnuplot not found" >&2; exit 1; }
 outdir_begin deposition.sh "$out" "$force"
 # shellcheck source=../etc/openfoam-env.sh
 . "$top/etc/openfoam-env.sh" >/dev/null

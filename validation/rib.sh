@@ -106,24 +106,12 @@ case "$gravity" in none|floor) ;; *) die2 "--gravity: '$gravity' is not none or 
 outdir_list taus rib.sh --tau-plus "$taus" num
 outdir_list models rib.sh --models "$models" name
 IFS=, read -r -a tauList <<< "$taus"
-[ "${#tauList[@]}" -ge 1 ] && [ "${#tauList[@]}" -le 12 ] || die2 "--tau-plus: 1 to 12 values"
-for t in "${tauList[@]}"; do
-    awk -v t="$t" 'BEGIN { exit !(t ~ /^[0-9]*\.?[0-9]+([eE][-+]?[0-9]+)?$/ && t + 0 > 0 && t + 0 <= 1000) }' \
-        || die2 "--tau-plus: '$t' is not a number in (0, 1000]"
-done
+dep_numbers rib.sh --tau-plus 1000 "${tauList[@]}" || exit 2
 IFS=, read -r -a modelList <<< "$models"
-for m in "${modelList[@]}"; do
-    case "$m" in stochastic|gradient|none|nearwall|nearwall-utau|nearwall-k|crw) ;;
-        *) die2 "--models: '$m' is not stochastic, gradient, none, nearwall, nearwall-utau, nearwall-k or crw" ;; esac
-done
+dep_models rib.sh "stochastic gradient none nearwall nearwall-utau nearwall-k crw" "${modelList[@]}" || exit 2
 [ -n "$coeffs" ] || coeffs="$top/etc/deposition.coeffs"
 [ -f "$coeffs" ] && [ -r "$coeffs" ] || die2 "--coeffs: cannot read '$coeffs'"
-for exe in simpleFoam blockMesh topoSet createPatch postProcess; do
-    command -v "$exe" >/dev/null || { echo "rib.sh: $exe not found (OpenFOAM: etc/setup.sh)" >&2; exit 1; }
-done
-[ -x "$top/platforms/bin/pimpleUncoupledKinematicParcelFoam" ] && [ -f "$top/platforms/lib/libsnowWallInteraction.so" ] \
-    || { echo "rib.sh: the project's solver and wrapper are missing: run ./Allwmake" >&2; exit 1; }
-command -v gnuplot >/dev/null || { echo "rib.sh: gnuplot not found" >&2; exit 1; }
+dep_require rib.sh "$top" simpleFoam blockMesh topoSet createPatch postProcess || exit 1
 # what the options multiply, before any work, scaled from the measured default
 # run (2026-11-28, one process per mesh; see doc/deposition.md): about 4 kB a
 # cell and 1 kB a parcel; the particle time per parcel and step

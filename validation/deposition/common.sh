@@ -22,6 +22,14 @@
 #       ("(u v w)"), injector named INJECTION; drag and gravity; TREATMENT as
 #       dep_dispersion with WALLS (e.g. "(walls)") for snowNearWall; every
 #       patch of ESCAPE (space-separated) a localInteraction escape
+#   dep_numbers SCRIPT OPTION MAX VALUES...
+#       1 to 12 VALUES, each a number in (0, MAX]; otherwise one message
+#       naming OPTION and the value (stderr, status 2)
+#   dep_models SCRIPT ALLOWED VALUES...
+#       every VALUE one of the space-separated ALLOWED (stderr, status 2)
+#   dep_require SCRIPT TOP EXE...
+#       the OpenFOAM tools EXE, the project's solver and wrapper under TOP and
+#       gnuplot are there (stderr naming what is missing, status 1)
 #   dep_estimate SCRIPT PARCELS CLOUDS STEPS MEMORY MINUTES HINT
 #       the estimate line of what the options multiply (stdout) and, when the
 #       MEMORY estimate [bytes] is above what the machine has available, its
@@ -162,4 +170,34 @@ dep_estimate() {   # script parcels clouds steps memory minutes hint
             exit 2
         }
     }'
+}
+
+dep_numbers() {   # script option max values...
+    local s=$1 o=$2 max=$3 v
+    shift 3
+    [ $# -ge 1 ] && [ $# -le 12 ] || { echo "$s: $o: 1 to 12 values" >&2; return 2; }
+    for v in "$@"; do
+        awk -v t="$v" -v m="$max" 'BEGIN { exit !(t ~ /^[0-9]*\.?[0-9]+([eE][-+]?[0-9]+)?$/ && t + 0 > 0 && t + 0 <= m + 0) }' \
+            || { echo "$s: $o: '$v' is not a number in (0, $max]" >&2; return 2; }
+    done
+}
+
+dep_models() {   # script allowed values...
+    local s=$1 allowed=$2 v
+    shift 2
+    for v in "$@"; do
+        case " $allowed " in *" $v "*) ;;
+            *) echo "$s: --models: '$v' is not one of: $allowed" >&2; return 2 ;; esac
+    done
+}
+
+dep_require() {   # script top exe...
+    local s=$1 top=$2 e
+    shift 2
+    for e in "$@"; do
+        command -v "$e" >/dev/null || { echo "$s: $e not found (OpenFOAM: etc/setup.sh)" >&2; return 1; }
+    done
+    [ -x "$top/platforms/bin/pimpleUncoupledKinematicParcelFoam" ] && [ -f "$top/platforms/lib/libsnowWallInteraction.so" ] \
+        || { echo "$s: the project's solver and wrapper are missing: run ./Allwmake" >&2; return 1; }
+    command -v gnuplot >/dev/null || { echo "$s: gnuplot not found" >&2; return 1; }
 }
