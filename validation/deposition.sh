@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # deposition.sh - turbulent deposition in a channel: the CFD chain against the
-# measured deposition velocities (issue 20, doc/deposition.md)
+# measured deposition velocities (doc/deposition.md)
 #
 # Usage: validation/deposition.sh --out DIR [--force] [--mesh resolved|wf|both]
 #            [--tau-plus LIST] [--models LIST] [--parcels N] [--t-run T]

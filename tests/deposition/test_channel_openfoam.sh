@@ -3,7 +3,7 @@
 # --short): the channel on the wall-function mesh, the snowNearWall treatment
 # with the shipped closure, tau+ 1 and 10, 1000 parcels, a window of 8000 wall
 # units (about 20 s). Checks: V+ within a factor 3 of Wood's correlation at both
-# tau+ (the band; the statistical error at these counts is about 15 %),
+# tau+ (the benchmark's band; the statistical error at these counts is about 15 %),
 # V+ at tau+ 10 from tracked deposits (the closure gives nothing there) and at
 # tau+ 1 from the closure; the table and plot are written; nothing is left
 # beside --out. Skipped (77) without OpenFOAM, the project's solver and wrapper,

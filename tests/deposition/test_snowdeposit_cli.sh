@@ -47,13 +47,13 @@ check "--out" "$SD" calibrate
 check "--out" "$SD" channel --out "$WORK/y"
 check "no/such" "$SD" calibrate --out "$WORK/no/such/file"
 check "--t-run" "$SD" channel --t-run 1e300
-# hostile sweep (issue 22): an option of the other command was dropped without a word
-# (channel --law ran the default channel for minutes), and --set named no key
+# an option of the other command is refused, not dropped without a word (channel
+# --law would run the default channel for minutes), and --set names its key
 check "--law is an option of calibrate, not of channel" "$SD" channel --law wood
 check "--closure is an option of channel, not of calibrate" "$SD" calibrate --out "$WORK/x" --closure wood
 check "--set CT: 'nan' is not a finite decimal number" "$SD" channel --set CT=nan
-# hostile sweep (issue 22): 1e8 particles over t+ 1e9 started a run of centuries without
-# a word; the work is estimated before it starts and refused over the limit
+# the work is estimated before it starts and refused over the limit (1e8 particles
+# over t+ 1e9 would be a run of centuries)
 check "at least 5e+16 particle steps" "$SD" channel --particles 1e8 --t-run 1e9 --tau-plus 1
 check "--force" "$SD" calibrate --out "$WORK/x" --particles 1e6
 # --particles 0: one "(see snowdeposit --help)", the range named

@@ -390,7 +390,7 @@ int main(int argc, char **argv)
         swd_free(m);
         return usage_error("--out is an option of calibrate, not of channel%s%s", "", "");
     }
-    /* an option of the other command is refused, not dropped (hostile sweep, issue 22) */
+    /* an option of the other command is refused, not dropped */
     if (!cal && o.law_given) {
         swd_free(m);
         return usage_error("--law is an option of calibrate, not of channel (channel --closure %s "
@@ -417,8 +417,8 @@ int main(int argc, char **argv)
             return c;
         }
     }
-    /* the work, estimated from below before any of it (hostile sweep, issue 22: 1e8
-       particles over t+ 1e9 started a run of centuries without a word) */
+    /* the work, estimated from below before any of it: a run of centuries
+       (1e8 particles over t+ 1e9) is refused, not started without a word */
     {
         const double runs = cal ? 2.0 : (o.closure ? 3.0 : 1.0);
         const double steps = (double)o.p.n * (o.p.t_warm + o.p.t_run) / o.p.dt_max
