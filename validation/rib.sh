@@ -113,16 +113,17 @@ dep_models rib.sh "stochastic gradient none nearwall nearwall-utau nearwall-k cr
 [ -f "$coeffs" ] && [ -r "$coeffs" ] || die2 "--coeffs: cannot read '$coeffs'"
 dep_require rib.sh "$top" simpleFoam blockMesh topoSet createPatch postProcess || exit 1
 # what the options multiply, before any work, scaled from the measured default
-# run (2026-11-28, one process per mesh; see doc/deposition.md): about 4 kB a
-# cell and 1 kB a parcel; the particle time per parcel and step
+# run (2026-11-28, one process per mesh, 1908 s: the resolved flow 258 s and
+# 3.3 us per parcel and step, the wf flow 4 s and 1.7 us): about 4 kB a cell
+# and 1 kB a parcel
 nsteps_est=$(awk -v w="$twarm" -v r="$trun" 'BEGIN { nw = int(w / 2 + 0.5); printf "%d", nw * (1 + int((r / 2 + nw - 1) / nw)) }')
 read -r est_p est_mem est_min < <(awk -v meshes="$meshes" -v nm="${#modelList[@]}" -v ns="${#tauList[@]}" -v np="$parcels" \
     -v st="$nsteps_est" 'BEGIN {
         n = split(meshes, m, " "); p = nm * ns * np; tmax = 0; mem = 0
         for (i = 1; i <= n; i++) {
             c = m[i] == "wf" ? 796 : 19280
-            tf = m[i] == "wf" ? 5 : 150
-            tp = (m[i] == "wf" ? 1.0e-6 : 1.5e-6) * p * st
+            tf = m[i] == "wf" ? 5 : 260
+            tp = (m[i] == "wf" ? 1.7e-6 : 3.3e-6) * p * st
             if (tf + tp > tmax) tmax = tf + tp
             mem += c * 4e3 + p * 1e3
         }
