@@ -164,6 +164,7 @@ dep_estimate() {   # script parcels clouds steps memory minutes hint
     awk -v s="$1" -v p="$2" -v nc="$3" -v st="$4" -v mem="$5" -v min="$6" -v hint="$7" -v avail="${avail:-0}" 'BEGIN {
         printf "%s: estimate: %d parcels in %d clouds per mesh, %s; memory about %.2g GB; about %.0f min\n", \
             s, p, nc, st, mem / 1e9, min + 0.5
+        fflush()
         if (avail > 0 && mem > avail) {
             printf "%s: the estimated memory %.2g GB is more than the %.2g GB available: %s\n", \
                 s, mem / 1e9, avail / 1e9, hint > "/dev/stderr"
