@@ -59,7 +59,7 @@
 # what it holds; any other existing DIR is refused (exit 2) unless --force;
 # nothing in DIR is ever deleted.
 # --stokes: default 0.01,0.03,0.1,0.3,1 (no empty item, no value twice, each
-# in (0, 10]; used in ascending order); --models: default
+# in [0.001, 10]; used in ascending order); --models: default
 # stochastic,none,crw,nearwall (no empty item, no name twice); --parcels per
 # cloud (default 2000); --coeffs: the closure (default etc/deposition.coeffs);
 # --short: the test (wf mesh, Stk 0.1 and 1, none and nearwall, 600 parcels).
@@ -114,7 +114,7 @@ done
 awk -v t="$step" 'BEGIN { exit !(t ~ /^[0-9]*\.?[0-9]+([eE][-+]?[0-9]+)?$/ && t + 0 > 0 && t + 0 <= 0.5) }' \
     || die2 "--step: '$step' is not a number in (0, 0.5]"
 IFS=, read -r -a stkList <<< "$stokes"
-dep_numbers bend.sh --stokes 10 "${stkList[@]}" || exit 2
+dep_numbers bend.sh --stokes 0.001 10 "${stkList[@]}" || exit 2
 IFS=, read -r -a modelList <<< "$models"
 dep_models bend.sh "stochastic gradient none nearwall nearwall-utau nearwall-k crw" "${modelList[@]}" || exit 2
 [ -n "$coeffs" ] || coeffs="$top/etc/deposition.coeffs"

@@ -40,9 +40,9 @@
 # refused (exit 2) unless --force: then the files are written into it (regular
 # files of the same names replaced), nothing deleted, no .snowwall-output
 # added. Nothing is ever deleted from DIR.
-# --tau-plus: default 0.3,1,3,10,30 (no empty item, no value twice; used in
-# ascending order, with a note when given otherwise); --models: no empty item,
-# no name twice; --parcels per cloud (default 2000);
+# --tau-plus: default 0.3,1,3,10,30 (each in [0.01, 1000], no empty item, no
+# value twice; used in ascending order, with a note when given otherwise);
+# --models: no empty item, no name twice; --parcels per cloud (default 2000);
 # --t-run: the window in wall units t+ = t u_tau^2/nu (default 20000, after a
 # warm-up of 2000); --coeffs: the closure (default etc/deposition.coeffs, the
 # shipped calibration); --calibrate: calibrate it anew first (bin/snowdeposit
@@ -91,7 +91,7 @@ case "$meshes" in resolved|wf) ;; both) meshes="resolved wf" ;; *) die2 "--mesh:
 outdir_list taus deposition.sh --tau-plus "$taus" num
 outdir_list models deposition.sh --models "$models" name
 IFS=, read -r -a tauList <<< "$taus"
-dep_numbers deposition.sh --tau-plus 1000 "${tauList[@]}" || exit 2
+dep_numbers deposition.sh --tau-plus 0.01 1000 "${tauList[@]}" || exit 2
 IFS=, read -r -a modelList <<< "$models"
 dep_models deposition.sh "stochastic gradient none nearwall crw" "${modelList[@]}" || exit 2
 [ -z "$coeffs" ] || [ "$calibrate" = 0 ] || die2 "--coeffs and --calibrate exclude each other"

@@ -45,7 +45,7 @@
 # --gravity: none (default: the walls vertical, turbulence alone carries the
 # particles across) or floor (gravity towards the floor, as in wind-tunnel
 # measurements on horizontal floors); --tau-plus: default 0.3,1,3,10,30 (each
-# in (0, 1000], no value twice); --parcels per cloud (default 3000); --t-run
+# in [0.01, 1000], no value twice); --parcels per cloud (default 3000); --t-run
 # (default 20000, rounded up to whole warm-up lengths); --coeffs: the
 # closure (default etc/deposition.coeffs); --short: the test (wf mesh, tau+
 # 10, none and nearwall, 1500 parcels, window 4000).
@@ -106,7 +106,7 @@ case "$gravity" in none|floor) ;; *) die2 "--gravity: '$gravity' is not none or 
 outdir_list taus rib.sh --tau-plus "$taus" num
 outdir_list models rib.sh --models "$models" name
 IFS=, read -r -a tauList <<< "$taus"
-dep_numbers rib.sh --tau-plus 1000 "${tauList[@]}" || exit 2
+dep_numbers rib.sh --tau-plus 0.01 1000 "${tauList[@]}" || exit 2
 IFS=, read -r -a modelList <<< "$models"
 dep_models rib.sh "stochastic gradient none nearwall nearwall-utau nearwall-k crw" "${modelList[@]}" || exit 2
 [ -n "$coeffs" ] || coeffs="$top/etc/deposition.coeffs"

@@ -28,7 +28,7 @@ bend="$top/validation/bend.sh"
 
 # refusals: exit 2 before any work, nothing written
 mkdir "$tmp/foreign" && echo keep > "$tmp/foreign/mine.txt"
-for args in "--stokes 0" "--stokes nan" "--stokes 0.1,,1" "--stokes 0.1,0.1" "--stokes 11" \
+for args in "--stokes 0" "--stokes 1e-300" "--stokes nan" "--stokes 0.1,,1" "--stokes 0.1,0.1" "--stokes 11" \
             "--models foo" "--models none,none" "--parcels 0" "--parcels 1e3" "--mesh coarse" "--mesh wf,wf" "--step 0" "--step 1" \
             "--coeffs $tmp/none.coeffs"; do
     # shellcheck disable=SC2086

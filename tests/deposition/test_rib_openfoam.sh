@@ -31,7 +31,7 @@ rib="$top/validation/rib.sh"
 
 # refusals: exit 2 before any work, nothing written
 mkdir "$tmp/foreign" && echo keep > "$tmp/foreign/mine.txt"
-for args in "--tau-plus 0" "--tau-plus nan" "--tau-plus 1,,3" "--tau-plus 1,1" "--tau-plus 2000" \
+for args in "--tau-plus 0" "--tau-plus 1e-300" "--tau-plus nan" "--tau-plus 1,,3" "--tau-plus 1,1" "--tau-plus 2000" \
             "--models foo" "--models none,none" "--parcels 0" "--parcels 1e3" "--mesh coarse" \
             "--gravity up" "--t-run 0" "--t-run 1e4" "--coeffs $tmp/none.coeffs"; do
     # shellcheck disable=SC2086

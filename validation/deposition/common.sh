@@ -22,8 +22,8 @@
 #       ("(u v w)"), injector named INJECTION; drag and gravity; TREATMENT as
 #       dep_dispersion with WALLS (e.g. "(walls)") for snowNearWall; every
 #       patch of ESCAPE (space-separated) a localInteraction escape
-#   dep_numbers SCRIPT OPTION MAX VALUES...
-#       1 to 12 VALUES, each a number in (0, MAX]; otherwise one message
+#   dep_numbers SCRIPT OPTION MIN MAX VALUES...
+#       1 to 12 VALUES, each a number in [MIN, MAX]; otherwise one message
 #       naming OPTION and the value (stderr, status 2)
 #   dep_models SCRIPT ALLOWED VALUES...
 #       every VALUE one of the space-separated ALLOWED (stderr, status 2)
@@ -173,13 +173,13 @@ dep_estimate() {   # script parcels clouds steps memory minutes hint
     }'
 }
 
-dep_numbers() {   # script option max values...
-    local s=$1 o=$2 max=$3 v
-    shift 3
+dep_numbers() {   # script option min max values...
+    local s=$1 o=$2 min=$3 max=$4 v
+    shift 4
     [ $# -ge 1 ] && [ $# -le 12 ] || { echo "$s: $o: 1 to 12 values" >&2; return 2; }
     for v in "$@"; do
-        awk -v t="$v" -v m="$max" 'BEGIN { exit !(t ~ /^[0-9]*\.?[0-9]+([eE][-+]?[0-9]+)?$/ && t + 0 > 0 && t + 0 <= m + 0) }' \
-            || { echo "$s: $o: '$v' is not a number in (0, $max]" >&2; return 2; }
+        awk -v t="$v" -v lo="$min" -v m="$max" 'BEGIN { exit !(t ~ /^[0-9]*\.?[0-9]+([eE][-+]?[0-9]+)?$/ && t + 0 >= lo + 0 && t + 0 <= m + 0) }' \
+            || { echo "$s: $o: '$v' is not a number in [$min, $max]" >&2; return 2; }
     done
 }
 
