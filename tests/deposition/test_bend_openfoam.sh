@@ -13,17 +13,8 @@
 # fewer than 15 % of all; the table, plot and flow page are written; bad
 # options are refused before any work (exit 2, nothing written).
 # Skipped (77) without OpenFOAM, the project's solver and wrapper or gnuplot.
-set -u
-top=${SW_TOP:?SW_TOP not set}
-. "$top/etc/openfoam-env.sh" 2>/dev/null
-command -v simpleFoam >/dev/null || { echo "OpenFOAM not found: skipped"; exit 77; }
-command -v pimpleUncoupledKinematicParcelFoam >/dev/null || { echo "solver not built: skipped"; exit 77; }
-[ -f "$FOAM_USER_LIBBIN/libsnowWallInteraction.so" ] || { echo "wrapper not built: skipped"; exit 77; }
-command -v gnuplot >/dev/null || { echo "gnuplot missing: skipped"; exit 77; }
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fails=0
-check() { if eval "$2"; then echo "ok   $1"; else echo "FAIL $1"; fails=$((fails+1)); fi; }
+# shellcheck source=openfoam_test.sh
+. "$(dirname "$0")/openfoam_test.sh"
 bend="$top/validation/bend.sh"
 
 # refusals: exit 2 before any work, nothing written

@@ -8,18 +8,9 @@
 # tau+ 1 from the closure; the table and plot are written; nothing is left
 # beside --out. Skipped (77) without OpenFOAM, the project's solver and wrapper,
 # bin/snowdeposit or gnuplot.
-set -u
-top=${SW_TOP:?SW_TOP not set}
-. "$top/etc/openfoam-env.sh" 2>/dev/null
-command -v simpleFoam >/dev/null || { echo "OpenFOAM not found: skipped"; exit 77; }
-command -v pimpleUncoupledKinematicParcelFoam >/dev/null || { echo "solver not built: skipped"; exit 77; }
-[ -f "$FOAM_USER_LIBBIN/libsnowWallInteraction.so" ] || { echo "wrapper not built: skipped"; exit 77; }
+# shellcheck source=openfoam_test.sh
+. "$(dirname "$0")/openfoam_test.sh"
 [ -x "$top/bin/snowdeposit" ] || { echo "bin/snowdeposit missing: skipped"; exit 77; }
-command -v gnuplot >/dev/null || { echo "gnuplot missing: skipped"; exit 77; }
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fails=0
-check() { if eval "$2"; then echo "ok   $1"; else echo "FAIL $1"; fails=$((fails+1)); fi; }
 
 "$top/validation/deposition.sh" --short --out "$tmp/out" > "$tmp/log" 2>&1
 rc=$?
