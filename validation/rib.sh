@@ -44,7 +44,8 @@
 # side by side, one process each).
 # --gravity: none (default: the walls vertical, turbulence alone carries the
 # particles across) or floor (gravity towards the floor, as in wind-tunnel
-# measurements on horizontal floors); --tau-plus: default 0.3,1,3,10,30 (each
+# measurements on horizontal floors; with snowNearWall it shows an open
+# defect of the walk, doc/deposition.md); --tau-plus: default 0.3,1,3,10,30 (each
 # in [0.01, 1000], no value twice); --parcels per cloud (default 3000); --t-run
 # (default 20000, rounded up to whole warm-up lengths); --coeffs: the
 # closure (default etc/deposition.coeffs); --short: the test (wf mesh, tau+
@@ -52,10 +53,13 @@
 #
 # Writes into DIR, only when the run succeeds: zones.csv (per mesh,
 # treatment, tau+ and zone: the counts, V+, its error, V+ over the top wall's),
-# rib.md (the tables) and rib.png (V+ of the floor zones against x/H per tau+,
-# and against tau+ per zone), flow.md (u_top, the ribbed wall's u* from the
-# momentum balance, the reattachment length, the run times), deposition.coeffs
-# and the cases (<mesh>/case). The rules of --out are those of every SnowWall
+# wakes.csv and rib.md (the tables; the near wake 0-4 H against the far wake
+# 9-14 H, the whole ribbed wall against the top wall), rib.png (V+ of the floor
+# over the top wall's against x/H per tau+, the reattachment marked; near wake,
+# far wake and top wall against tau+ with Wood's correlation), flow.md (u_top,
+# the ribbed wall's u* from the momentum balance, the reattachment length, the
+# convergence, the run times), <mesh>/wall.csv (the zones' mean wall shear and
+# y+, the reattachment), deposition.coeffs and the cases (<mesh>/case). The rules of --out are those of every SnowWall
 # script (etc/outdir.sh): DIR missing is created; an empty folder or an
 # earlier SnowWall output folder gets the files beside what it holds; any
 # other existing DIR is refused (exit 2) unless --force; nothing in DIR is
