@@ -59,11 +59,11 @@
 # far wake and top wall against tau+ with Wood's correlation), flow.md (u_top,
 # the ribbed wall's u* from the momentum balance, the reattachment length, the
 # convergence, the run times), <mesh>/wall.csv (the zones' mean wall shear and
-# y+, the reattachment), deposition.coeffs and the cases (<mesh>/case). The rules of --out are those of every SnowWall
-# script (etc/outdir.sh): DIR missing is created; an empty folder or an
-# earlier SnowWall output folder gets the files beside what it holds; any
-# other existing DIR is refused (exit 2) unless --force; nothing in DIR is
-# ever deleted. Before any work one line estimates the parcels, memory and
+# y+, the reattachment), deposition.coeffs and the cases (<mesh>/case).
+# The rules of --out are those of every SnowWall script (etc/outdir.sh): DIR
+# missing is created; an empty folder or an earlier SnowWall output folder
+# gets the files beside what it holds; any other existing DIR is refused
+# (exit 2) unless --force; nothing in DIR is ever deleted. Before any work one line estimates the parcels, memory and
 # time; a memory estimate above what the machine has available is refused.
 # Exit status: 0 done, 1 a run failed, 2 usage error.
 set -euo pipefail
