@@ -45,9 +45,9 @@
 # --gravity: none (default: the walls vertical, turbulence alone carries the
 # particles across) or floor (gravity towards the floor, as in wind-tunnel
 # measurements on horizontal floors; with snowNearWall it shows an open
-# defect of the walk, doc/deposition.md); --tau-plus: default 0.3,1,3,10,30 (each
-# in [0.01, 1000], no value twice); --parcels per cloud (default 3000); --t-run
-# (default 20000, rounded up to whole warm-up lengths); --coeffs: the
+# defect of the walk, doc/deposition.md); --tau-plus: default 0.3,1,3,10,30
+# (each in [0.01, 1000], no value twice); --parcels per cloud (default 3000);
+# --t-run (default 20000, rounded up to whole warm-up lengths); --coeffs: the
 # closure (default etc/deposition.coeffs); --short: the test (wf mesh, tau+
 # 10, none and nearwall, 1500 parcels, window 4000).
 #
@@ -63,8 +63,9 @@
 # The rules of --out are those of every SnowWall script (etc/outdir.sh): DIR
 # missing is created; an empty folder or an earlier SnowWall output folder
 # gets the files beside what it holds; any other existing DIR is refused
-# (exit 2) unless --force; nothing in DIR is ever deleted. Before any work one line estimates the parcels, memory and
-# time; a memory estimate above what the machine has available is refused.
+# (exit 2) unless --force; nothing in DIR is ever deleted. Before any work
+# one line estimates the parcels, memory and time; a memory estimate above
+# what the machine has available is refused.
 # Exit status: 0 done, 1 a run failed, 2 usage error.
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
