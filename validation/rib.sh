@@ -176,17 +176,27 @@ write_positions() {   # case n seed
 # the particle run, its log filtered as it is written: the parcel counts of
 # every step, the fates of every zone at the end of the warm-up (step NWARM)
 # and at the last step only (the full log would hold some 40 lines per cloud
-# and step)
+# and step); from a fatal error on, every line
 run_particles() {   # case nwarm
     local names
     names=$(awk '{ print $1 }' "$1/clouds.txt" | tr '\n' ' ')
     (cd "$1" && set -o pipefail && pimpleUncoupledKinematicParcelFoam -frozen -clouds "(${names% })" 2>&1 | awk -v nwarm="$2" '
+        fatal { print; next }
+        /FOAM FATAL|FOAM exiting|^--> / { fatal = 1; print; next }
         /^Time = / { step++; nb = 0; print; next }
         /^Cloud: / { print; buf[++nb] = $0; next }
         /Current number of parcels/ { print; next }
         /Parcel fate: patch |- escape / { if (step == nwarm) print; else buf[++nb] = $0; next }
-        /^End|FOAM FATAL|ERROR|rror/ { print }
-        END { print "# the last step"; for (i = 1; i <= nb; i++) print buf[i] }' > log.particles)
+        /^End|[Ee]rror|[Ww]arning/ { print }
+        END { if (!fatal) { print "# the last step"; for (i = 1; i <= nb; i++) print buf[i] } }' > log.particles)
+}
+
+# a failed step: its log's fatal error (or its last lines) on stderr; the work
+# folder goes with the failed run unless KEEP_TMP is set
+show_fail() {   # what log
+    echo "rib.sh: $1 failed; its log ($2, kept with KEEP_TMP=1) ends:" >&2
+    if grep -q 'FOAM FATAL' "$2" 2>/dev/null; then sed -n '/FOAM FATAL/,$p' "$2" | head -25 >&2
+    else tail -15 "$2" >&2 2>/dev/null || true; fi
 }
 
 run_mesh() {
@@ -214,7 +224,7 @@ EOF
     t0=$(date +%s)
     (cd "$c" && blockMesh > log.blockMesh 2>&1 && topoSet > log.topoSet 2>&1 \
         && createPatch -overwrite > log.createPatch 2>&1 && rm -rf 0 && cp -r 0.orig 0 \
-        && simpleFoam > log.simpleFoam 2>&1) || { echo "rib.sh: $mesh: the flow failed (see $c/log.*)" >&2; return 1; }
+        && simpleFoam > log.simpleFoam 2>&1) || { show_fail "$mesh: the flow" "$(ls -t "$c"/log.* | head -1)"; return 1; }
     tflow=$(( $(date +%s) - t0 ))
     last=$(cd "$c" && foamListTimes -latestTime 2>/dev/null | tail -1)
     cells=$(awk '/nCells:/ { print $2 }' "$c/log.blockMesh")
@@ -259,7 +269,7 @@ EOF
     dep_particle_schemes "$c"
     echo "rib.sh: $mesh mesh: u_top $utop m/s, ribbed wall u* $urib m/s, reattachment $xr H; $nclouds clouds of $parcels parcels, $nsteps steps of 2 t+"
     t0=$(date +%s)
-    run_particles "$c" "$nwarm" || { echo "rib.sh: $mesh: the particle run failed (see $c/log.particles)" >&2; return 1; }
+    run_particles "$c" "$nwarm" || { show_fail "$mesh: the particle run" "$c/log.particles"; return 1; }
     tpart=$(( $(date +%s) - t0 ))
     "$here/rib-deposit" --case "$c" --mesh "$mesh" --h "$h" --utop "$utop" --dt "$dt" --nwarm "$nwarm" \
         --zones "$zones" > "$tmp/rows_$mesh.csv" \
