@@ -170,7 +170,7 @@ write_cloud() {   # case name d model
 write_positions() {   # case n seed nc
     local c=$1
     (cd "$c" && postProcess -func writeCellCentres -latestTime > log.cellCentres 2>&1) \
-        || { echo "bend.sh: writeCellCentres failed (see $c/log.cellCentres)" >&2; return 1; }
+        || { dep_show_fail bend.sh writeCellCentres "$c/log.cellCentres"; return 1; }
     local last
     last=$(cd "$c" && foamListTimes -latestTime 2>/dev/null | tail -1)
     awk -v n="$2" -v s="$3" -v a="$a" -v x0="-$lin" -v nc="$4" '
@@ -233,16 +233,16 @@ EOF
     echo "bend.sh: $mesh mesh: blockMesh, simpleFoam"
     t0=$(date +%s)
     (cd "$c" && blockMesh > log.blockMesh 2>&1 && rm -rf 0 && cp -r 0.orig 0 \
-        && simpleFoam > log.simpleFoam 2>&1) || { echo "bend.sh: $mesh: the flow failed (see $c/log.*)" >&2; return 1; }
+        && simpleFoam > log.simpleFoam 2>&1) || { dep_show_fail bend.sh "$mesh: the flow" "$(ls -t "$c"/log.* | head -1)"; return 1; }
     tflow=$(( $(date +%s) - t0 ))
     last=$(cd "$c" && foamListTimes -latestTime 2>/dev/null | tail -1)
     iters=$(awk '/^Time = / { n = $3 } END { print n }' "$c/log.simpleFoam")
     cells=$(awk '/nCells:/ { print $2 }' "$c/log.blockMesh")
     # the inlet pipe's mean wall shear (kinematic) and the first cell's y+
     (cd "$c" && simpleFoam -postProcess -latestTime -funcs '(wallShearStress yPlus)' > log.wall 2>&1) \
-        || { echo "bend.sh: $mesh: wallShearStress failed (see $c/log.wall)" >&2; return 1; }
+        || { dep_show_fail bend.sh "$mesh: wallShearStress" "$c/log.wall"; return 1; }
     (cd "$c" && postProcess -latestTime -func 'patchAverage(name=wallIn,wallShearStress)' > log.tauw 2>&1) \
-        || { echo "bend.sh: $mesh: the wall shear average failed (see $c/log.tauw)" >&2; return 1; }
+        || { dep_show_fail bend.sh "$mesh: the wall shear average" "$c/log.tauw"; return 1; }
     tauw=$(awk '/areaAverage\(wallIn\) of wallShearStress/ { gsub(/[()]/, ""); print sqrt($(NF-2)^2 + $(NF-1)^2 + $NF^2) }' "$c/log.tauw" | tail -1)
     [ -n "$tauw" ] || { echo "bend.sh: $mesh: no wall shear in $c/log.tauw" >&2; return 1; }
     yplus=$(awk '/patch wallIn y\+ : min/ || (/y\+ : min/ && /wallIn/) { for (i = 1; i <= NF; i++) if ($i == "average") a = $(i + 2) } END { print a }' "$c/log.wall")
@@ -273,7 +273,7 @@ EOF
     dep_particle_schemes "$c"
     echo "bend.sh: $mesh mesh: ${#clouds[@]} clouds of $parcels parcels, $nsteps steps of $dt s"
     t0=$(date +%s)
-    dep_run_particles "$c" || { echo "bend.sh: $mesh: the particle run failed (see $c/log.particles)" >&2; return 1; }
+    dep_run_particles "$c" || { dep_show_fail bend.sh "$mesh: the particle run" "$c/log.particles"; return 1; }
     tpart=$(( $(date +%s) - t0 ))
 
     "$here/bend-efficiency" --case "$c" --mesh "$mesh" --parcels "$parcels" \

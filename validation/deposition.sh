@@ -192,7 +192,7 @@ EOF
     echo "deposition.sh: $mesh mesh: blockMesh, simpleFoam"
     t0=$(date +%s)
     (cd "$c" && blockMesh > log.blockMesh 2>&1 && rm -rf 0 && cp -r 0.orig 0 \
-        && simpleFoam > log.simpleFoam 2>&1) || { echo "deposition.sh: $mesh: the flow failed (see $c/log.*)" >&2; exit 1; }
+        && simpleFoam > log.simpleFoam 2>&1) || { dep_show_fail deposition.sh "$mesh: the flow" "$(ls -t "$c"/log.* | head -1)"; exit 1; }
     tflow=$(( $(date +%s) - t0 ))
     last=$(cd "$c" && foamListTimes -latestTime 2>/dev/null | tail -1)
     # u_tau from the mean pressure gradient: u_tau^2 = h dp/dx (kinematic)
@@ -229,7 +229,7 @@ EOF
     dep_particle_schemes "$c"
     echo "deposition.sh: $mesh mesh: u_tau $utau m/s, Re_tau $retau; ${#clouds[@]} clouds of $parcels parcels, $nsteps steps of 2 t+"
     t0=$(date +%s)
-    dep_run_particles "$c" || { echo "deposition.sh: $mesh: the particle run failed (see $c/log.particles)" >&2; exit 1; }
+    dep_run_particles "$c" || { dep_show_fail deposition.sh "$mesh: the particle run" "$c/log.particles"; exit 1; }
     tpart=$(( $(date +%s) - t0 ))
 
     # per cloud: V+ from the parcels left at every step and the closure's counts

@@ -191,14 +191,6 @@ run_particles() {   # case nwarm
         END { if (!fatal) { print "# the last step"; for (i = 1; i <= nb; i++) print buf[i] } }' > log.particles)
 }
 
-# a failed step: its log's fatal error (or its last lines) on stderr; the work
-# folder goes with the failed run unless KEEP_TMP is set
-show_fail() {   # what log
-    echo "rib.sh: $1 failed; its log ($2, kept with KEEP_TMP=1) ends:" >&2
-    if grep -q 'FOAM FATAL' "$2" 2>/dev/null; then sed -n '/FOAM FATAL/,$p' "$2" | head -25 >&2
-    else tail -15 "$2" >&2 2>/dev/null || true; fi
-}
-
 run_mesh() {
     local mesh=$1
     c="$tmp/$mesh/case"
@@ -224,7 +216,7 @@ EOF
     t0=$(date +%s)
     (cd "$c" && blockMesh > log.blockMesh 2>&1 && topoSet > log.topoSet 2>&1 \
         && createPatch -overwrite > log.createPatch 2>&1 && rm -rf 0 && cp -r 0.orig 0 \
-        && simpleFoam > log.simpleFoam 2>&1) || { show_fail "$mesh: the flow" "$(ls -t "$c"/log.* | head -1)"; return 1; }
+        && simpleFoam > log.simpleFoam 2>&1) || { dep_show_fail rib.sh "$mesh: the flow" "$(ls -t "$c"/log.* | head -1)"; return 1; }
     tflow=$(( $(date +%s) - t0 ))
     last=$(cd "$c" && foamListTimes -latestTime 2>/dev/null | tail -1)
     cells=$(awk '/nCells:/ { print $2 }' "$c/log.blockMesh")
@@ -235,7 +227,7 @@ EOF
         END { printf "%s %.2g\n", g[last], (last - 500 in g) ? (g[last] - g[last - 500]) / g[last] : 1 }' "$c/log.simpleFoam")
     # the wall shear per zone and the reattachment length
     (cd "$c" && simpleFoam -postProcess -latestTime -funcs '(wallShearStress yPlus)' > log.wall 2>&1) \
-        || { echo "rib.sh: $mesh: wallShearStress failed (see $c/log.wall)" >&2; return 1; }
+        || { dep_show_fail rib.sh "$mesh: wallShearStress" "$c/log.wall"; return 1; }
     "$here/rib-wall" --case "$c" --time "$last" --h "$h" --zones "$zones" > "$tmp/wall_$mesh.csv" \
         || { echo "rib.sh: $mesh: reading the wall shear failed" >&2; return 1; }
     utop=$(awk -F, '$1 == "top" { printf "%.6g", sqrt($4 < 0 ? -$4 : $4) }' "$tmp/wall_$mesh.csv")
@@ -269,7 +261,7 @@ EOF
     dep_particle_schemes "$c"
     echo "rib.sh: $mesh mesh: u_top $utop m/s, ribbed wall u* $urib m/s, reattachment $xr H; $nclouds clouds of $parcels parcels, $nsteps steps of 2 t+"
     t0=$(date +%s)
-    run_particles "$c" "$nwarm" || { show_fail "$mesh: the particle run" "$c/log.particles"; return 1; }
+    run_particles "$c" "$nwarm" || { dep_show_fail rib.sh "$mesh: the particle run" "$c/log.particles"; return 1; }
     tpart=$(( $(date +%s) - t0 ))
     "$here/rib-deposit" --case "$c" --mesh "$mesh" --h "$h" --utop "$utop" --dt "$dt" --nwarm "$nwarm" \
         --zones "$zones" > "$tmp/rows_$mesh.csv" \

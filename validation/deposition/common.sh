@@ -30,6 +30,10 @@
 #   dep_require SCRIPT TOP EXE...
 #       the OpenFOAM tools EXE, the project's solver and wrapper under TOP and
 #       gnuplot are there (stderr naming what is missing, status 1)
+#   dep_show_fail SCRIPT WHAT LOG
+#       "SCRIPT: WHAT failed" and the end of LOG on stderr: from its fatal
+#       error on, or its last lines (the work folder, and LOG with it, goes
+#       with a failed run unless KEEP_TMP is set)
 #   dep_estimate SCRIPT PARCELS CLOUDS STEPS MEMORY MINUTES HINT
 #       the estimate line of what the options multiply (stdout) and, when the
 #       MEMORY estimate [bytes] is above what the machine has available, its
@@ -201,4 +205,10 @@ dep_require() {   # script top exe...
     [ -x "$top/platforms/bin/pimpleUncoupledKinematicParcelFoam" ] && [ -f "$top/platforms/lib/libsnowWallInteraction.so" ] \
         || { echo "$s: the project's solver and wrapper are missing: run ./Allwmake" >&2; return 1; }
     command -v gnuplot >/dev/null || { echo "$s: gnuplot not found" >&2; return 1; }
+}
+
+dep_show_fail() {   # script what log
+    echo "$1: $2 failed; its log ($3, kept with KEEP_TMP=1) ends:" >&2
+    if grep -q 'FOAM FATAL' "$3" 2>/dev/null; then sed -n '/FOAM FATAL/,$p' "$3" | head -25 >&2
+    else tail -15 "$3" >&2 2>/dev/null || true; fi
 }
