@@ -120,6 +120,7 @@ dep_models bend.sh "stochastic gradient none nearwall nearwall-utau nearwall-k c
 [ -n "$coeffs" ] || coeffs="$top/etc/deposition.coeffs"
 [ -f "$coeffs" ] && [ -r "$coeffs" ] || die2 "--coeffs: cannot read '$coeffs'"
 dep_require bend.sh "$top" simpleFoam blockMesh postProcess || exit 1
+dep_check_coeffs bend.sh "$top" "$coeffs" || exit $?
 # what the options multiply, before any work: parcels, memory and time, scaled
 # from the measured default run (2026-11-28, one process per mesh: resolved flow
 # 154 s and 20 x 2000 parcels 97 s; wf 5 s and 94 s; fine 3.4 times the

@@ -99,6 +99,7 @@ dep_models deposition.sh "stochastic gradient none nearwall crw" "${modelList[@]
 [ -r "$coeffs" ] || die2 "--coeffs: cannot read '$coeffs'"
 dep_require deposition.sh "$top" simpleFoam blockMesh || exit 1
 [ -x "$top/bin/snowdeposit" ] || { echo "deposition.sh: bin/snowdeposit missing: run ./Allwmake" >&2; exit 1; }
+[ "$calibrate" = 1 ] || dep_check_coeffs deposition.sh "$top" "$coeffs" || exit $?
 outdir_begin deposition.sh "$out" "$force"
 # shellcheck source=../etc/openfoam-env.sh
 . "$top/etc/openfoam-env.sh" >/dev/null

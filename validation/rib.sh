@@ -117,6 +117,7 @@ dep_models rib.sh "stochastic gradient none nearwall nearwall-utau nearwall-k cr
 [ -n "$coeffs" ] || coeffs="$top/etc/deposition.coeffs"
 [ -f "$coeffs" ] && [ -r "$coeffs" ] || die2 "--coeffs: cannot read '$coeffs'"
 dep_require rib.sh "$top" simpleFoam blockMesh topoSet createPatch postProcess || exit 1
+dep_check_coeffs rib.sh "$top" "$coeffs" || exit $?
 # what the options multiply, before any work, scaled from the measured default
 # run (2026-11-28, one process per mesh, 1908 s: the resolved flow 258 s and
 # 3.3 us per parcel and step, the wf flow 4 s and 1.7 us): about 4 kB a cell

@@ -19,9 +19,10 @@ bend="$top/validation/bend.sh"
 
 # refusals: exit 2 before any work, nothing written
 mkdir "$tmp/foreign" && echo keep > "$tmp/foreign/mine.txt"
+printf 'depositionClosure { bogus 1; }\n' > "$tmp/bad.coeffs"
 for args in "--stokes 0" "--stokes 1e-300" "--stokes nan" "--stokes 0.1,,1" "--stokes 0.1,0.1" "--stokes 11" \
             "--models foo" "--models none,none" "--parcels 0" "--parcels 1e3" "--mesh coarse" "--mesh wf,wf" "--step 0" "--step 1" \
-            "--coeffs $tmp/none.coeffs"; do
+            "--coeffs $tmp/none.coeffs" "--coeffs $tmp/bad.coeffs"; do
     # shellcheck disable=SC2086
     "$bend" --out "$tmp/refused" $args > "$tmp/err" 2>&1
     rc=$?
@@ -76,5 +77,5 @@ check "the entered parcels: released less the inlet pipe's deposits, the inlet's
     "awk -F, 'NR > 1 && \$8 != \$5 - \$6 - \$7 - \$16 { bad = 1 } END { exit bad + 0 }' '$csv'"
 check "the parcels still in the pipe sorted by section, the bound at or above eta" \
     "awk -F, 'NR > 1 && (\$16 + \$17 + \$18 != \$12 || \$19 < \$13) { bad = 1 } END { exit bad + 0 }' '$csv'"
-check "nothing left beside --out" "[ -z \"\$(ls -A '$tmp' | grep -v '^out$\\|^log$\\|^err$\\|^foreign$')\" ]"
+check "nothing left beside --out" "[ -z \"\$(ls -A '$tmp' | grep -v '^out$\\|^log$\\|^err$\\|^foreign$\\|^bad.coeffs$')\" ]"
 [ "$fails" -eq 0 ] && { echo PASS; exit 0; } || { echo "$fails failure(s)"; exit 1; }

@@ -22,9 +22,10 @@ rib="$top/validation/rib.sh"
 
 # refusals: exit 2 before any work, nothing written
 mkdir "$tmp/foreign" && echo keep > "$tmp/foreign/mine.txt"
+printf 'depositionClosure { bogus 1; }\n' > "$tmp/bad.coeffs"
 for args in "--tau-plus 0" "--tau-plus 1e-300" "--tau-plus nan" "--tau-plus 1,,3" "--tau-plus 1,1" "--tau-plus 2000" \
             "--models foo" "--models none,none" "--parcels 0" "--parcels 1e3" "--mesh coarse" \
-            "--gravity up" "--t-run 0" "--t-run 1e4" "--coeffs $tmp/none.coeffs"; do
+            "--gravity up" "--t-run 0" "--t-run 1e4" "--coeffs $tmp/none.coeffs" "--coeffs $tmp/bad.coeffs"; do
     # shellcheck disable=SC2086
     "$rib" --out "$tmp/refused" $args > "$tmp/err" 2>&1
     rc=$?
@@ -79,5 +80,5 @@ check "snowNearWall: the rib's front face above the top wall ($vf against $vt)" 
 check "the mean flow alone: nothing on the top wall or the floor after the rib" \
     "awk -F, '\$2 == \"none\" && (\$5 == \"top\" || \$5 ~ /^floor_/) && \$9 + \$10 > 0 { bad = 1 } END { exit bad + 0 }' '$csv'"
 check "11 zones per cloud, 2 clouds" "[ \$(awk 'NR > 1' '$csv' | wc -l) -eq 22 ]"
-check "nothing left beside --out" "[ -z \"\$(ls -A '$tmp' | grep -v '^out$\\|^log$\\|^err$\\|^foreign$')\" ]"
+check "nothing left beside --out" "[ -z \"\$(ls -A '$tmp' | grep -v '^out$\\|^log$\\|^err$\\|^foreign$\\|^bad.coeffs$')\" ]"
 [ "$fails" -eq 0 ] && { echo PASS; exit 0; } || { echo "$fails failure(s)"; exit 1; }

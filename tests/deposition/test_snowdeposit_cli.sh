@@ -24,6 +24,17 @@ check() {   # expected-text args...
     grep -qF -- "$want" "$WORK/err" || fail "'$*': message does not name '$want': $(cat "$WORK/err")"
 }
 check "frobnicate" "$SD" frobnicate
+# check: a closure file read as the model reads it, before any work
+"$SD" check "$SW_TOP/etc/deposition.coeffs" | grep -q "a sublayer closure for the default walk" \
+    && ok "check: the shipped closure" || fail "check: the shipped closure"
+printf 'depositionClosure { bogus 1; }\n' > "$WORK/bad.coeffs"
+check "missing key 'sublayerYPlus'" "$SD" check "$WORK/bad.coeffs"
+check "cannot open" "$SD" check "$WORK/none.coeffs"
+check "check takes one FILE" "$SD" check
+mkfifo "$WORK/check.fifo"
+check "not a regular file" timeout 10 "$SD" check "$WORK/check.fifo"
+check "not a regular file" "$SD" check "$WORK"
+rm -f "$WORK/bad.coeffs" "$WORK/check.fifo"
 check "--bogus" "$SD" channel --bogus 1
 # the comma-list rule: an empty item or a value twice refused, naming the option and the text
 check "--tau-plus: '1,,3' has an empty item" "$SD" channel --tau-plus 1,,3

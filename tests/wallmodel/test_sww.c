@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 #include <cmocka.h>
 
@@ -1285,6 +1286,18 @@ static void loader_errors(void **s)
     m = sww_alloc();
     assert_int_equal(sww_regime_load(m, "/nonexistent/regime.coeffs"), SWW_EIO);
     assert_non_null(strstr(sww_errmsg(m), "/nonexistent/regime.coeffs: cannot open"));
+    /* not a regular file: refused at once (a FIFO would wait for a writer) */
+    char fifo[] = "/tmp/sww-fifo-XXXXXX";
+    const int fd = mkstemp(fifo);
+    assert_true(fd >= 0);
+    close(fd);
+    unlink(fifo);
+    assert_int_equal(mkfifo(fifo, 0600), 0);
+    assert_int_equal(sww_regime_load(m, fifo), SWW_EIO);
+    assert_non_null(strstr(sww_errmsg(m), "not a regular file"));
+    unlink(fifo);
+    assert_int_equal(sww_regime_load(m, "/tmp"), SWW_EIO);
+    assert_non_null(strstr(sww_errmsg(m), "/tmp: not a regular file"));
     sww_free(m);
 }
 

@@ -30,6 +30,10 @@
 #   dep_require SCRIPT TOP EXE...
 #       the OpenFOAM tools EXE, the project's solver and wrapper under TOP and
 #       gnuplot are there (stderr naming what is missing, status 1)
+#   dep_check_coeffs SCRIPT TOP FILE
+#       FILE read as the near-wall model reads a closure (bin/snowdeposit
+#       check): its message on stderr and status 2 when it cannot be used,
+#       status 1 when bin/snowdeposit is not built
 #   dep_show_fail SCRIPT WHAT LOG
 #       "SCRIPT: WHAT failed" and the end of LOG on stderr: from its fatal
 #       error on, or its last lines (the work folder, and LOG with it, goes
@@ -211,4 +215,11 @@ dep_show_fail() {   # script what log
     echo "$1: $2 failed; its log ($3, kept with KEEP_TMP=1) ends:" >&2
     if grep -q 'FOAM FATAL' "$3" 2>/dev/null; then sed -n '/FOAM FATAL/,$p' "$3" | head -25 >&2
     else tail -15 "$3" >&2 2>/dev/null || true; fi
+}
+
+dep_check_coeffs() {   # script top file
+    local msg
+    [ -x "$2/bin/snowdeposit" ] || { echo "$1: bin/snowdeposit missing: run ./Allwmake" >&2; return 1; }
+    msg=$("$2/bin/snowdeposit" check "$3" 2>&1 >/dev/null) \
+        || { echo "$1: --coeffs: ${msg#snowdeposit: check: }" >&2; return 2; }
 }

@@ -9,6 +9,7 @@
 #include "swd.h"
 #include "swd_internal.h"
 
+#include <sys/stat.h>
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
@@ -227,6 +228,16 @@ int swd_load_closure(swd_model *m, const char *path)
     char err[600] = "";
     if (!path)
         return swd_fail_message(m, "near-wall closure: no file name");
+    /* a regular file only: opening a FIFO for reading would wait for a writer */
+    struct stat st;
+    if (stat(path, &st) != 0) {
+        snprintf(err, sizeof err, "%s: cannot open: %s", path, strerror(errno));
+        return swd_fail_message(m, err);
+    }
+    if (!S_ISREG(st.st_mode)) {
+        snprintf(err, sizeof err, "%s: not a regular file", path);
+        return swd_fail_message(m, err);
+    }
     FILE *f = fopen(path, "rb");
     if (!f) {
         snprintf(err, sizeof err, "%s: cannot open: %s", path, strerror(errno));

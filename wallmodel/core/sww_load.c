@@ -5,6 +5,8 @@
  * (the same path as numbers set from code), then sww_regime_commit. */
 #include "sww_internal.h"
 
+#include <sys/stat.h>
+
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
@@ -351,6 +353,12 @@ int sww_regime_load(sww_model *m, const char *path)
 
 static int regime_load(sww_model *m, const char *path)
 {
+    /* a regular file only: opening a FIFO for reading would wait for a writer */
+    struct stat st;
+    if (stat(path, &st) != 0)
+        return sww_fail(m, SWW_EIO, "%s: cannot open: %s", path, strerror(errno));
+    if (!S_ISREG(st.st_mode))
+        return sww_fail(m, SWW_EIO, "%s: not a regular file", path);
     FILE *f = fopen(path, "rb");
     if (!f)
         return sww_fail(m, SWW_EIO, "%s: cannot open: %s", path, strerror(errno));
