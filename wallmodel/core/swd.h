@@ -160,8 +160,8 @@ int swd_set_closure(swd_model *m, double sublayer_yplus, const double *tau_plus,
  * sublayerYPlus, tauPlus and vPlusSublayer of its sub-dictionary
  * depositionClosure), for hosts without a dictionary reader of their own. The
  * CRW settings the file records (layerYPlus, blendYPlus, CT, Cmu) must equal the
- * model's: the closure belongs to the walk it was calibrated with. All or
- * nothing: on an error (the message names the file, the line and the key) the
+ * model's: the closure belongs to the walk it was calibrated with. A path that
+ * is not a regular file is refused without opening it. All or nothing: on an error (the message names the file, the line and the key) the
  * model is unchanged. Like a set, a success makes the model not ready until
  * swd_commit. */
 int swd_load_closure(swd_model *m, const char *path);

@@ -96,7 +96,8 @@ const char *sww_errmsg(const sww_model *m);
 
 /* ---- the regime map (doc/regime-coeffs.md) ---------------------------------
  * Load the file `snowregime map` writes: the sub-dictionary regime { ... }.
- * All or nothing: a file that does not load and commit leaves the model as it
+ * A path that is not a regular file (a folder, a FIFO, a device) is refused
+ * without opening it (SWW_EIO). All or nothing: a file that does not load and commit leaves the model as it
  * was (a loaded model stays ready, its options unchanged); success clears the
  * message. */
 int sww_regime_load(sww_model *m, const char *path);
