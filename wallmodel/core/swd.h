@@ -161,8 +161,9 @@ int swd_set_closure(swd_model *m, double sublayer_yplus, const double *tau_plus,
  * depositionClosure), for hosts without a dictionary reader of their own. The
  * CRW settings the file records (layerYPlus, blendYPlus, CT, Cmu) must equal the
  * model's: the closure belongs to the walk it was calibrated with. A path that
- * is not a regular file is refused without opening it. All or nothing: on an error (the message names the file, the line and the key) the
- * model is unchanged. Like a set, a success makes the model not ready until
+ * is not a regular file is refused without opening it. All or nothing: on an
+ * error (the message names the file, the line and the key) the model is
+ * unchanged. Like a set, a success makes the model not ready until
  * swd_commit. */
 int swd_load_closure(swd_model *m, const char *path);
 void swd_closure_off(swd_model *m);
