@@ -118,7 +118,6 @@ dep_numbers bend.sh --stokes 0.001 10 "${stkList[@]}" || exit 2
 IFS=, read -r -a modelList <<< "$models"
 dep_models bend.sh "stochastic gradient none nearwall nearwall-utau nearwall-k crw" "${modelList[@]}" || exit 2
 [ -n "$coeffs" ] || coeffs="$top/etc/deposition.coeffs"
-[ -f "$coeffs" ] && [ -r "$coeffs" ] || die2 "--coeffs: cannot read '$coeffs'"
 dep_require bend.sh "$top" simpleFoam blockMesh postProcess || exit 1
 dep_check_coeffs bend.sh "$top" "$coeffs" || exit $?
 # what the options multiply, before any work: parcels, memory and time, scaled

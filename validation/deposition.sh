@@ -96,7 +96,6 @@ IFS=, read -r -a modelList <<< "$models"
 dep_models deposition.sh "stochastic gradient none nearwall crw" "${modelList[@]}" || exit 2
 [ -z "$coeffs" ] || [ "$calibrate" = 0 ] || die2 "--coeffs and --calibrate exclude each other"
 [ -n "$coeffs" ] || coeffs="$top/etc/deposition.coeffs"
-[ -r "$coeffs" ] || die2 "--coeffs: cannot read '$coeffs'"
 dep_require deposition.sh "$top" simpleFoam blockMesh || exit 1
 [ -x "$top/bin/snowdeposit" ] || { echo "deposition.sh: bin/snowdeposit missing: run ./Allwmake" >&2; exit 1; }
 [ "$calibrate" = 1 ] || dep_check_coeffs deposition.sh "$top" "$coeffs" || exit $?

@@ -115,7 +115,6 @@ dep_numbers rib.sh --tau-plus 0.01 1000 "${tauList[@]}" || exit 2
 IFS=, read -r -a modelList <<< "$models"
 dep_models rib.sh "stochastic gradient none nearwall nearwall-utau nearwall-k crw" "${modelList[@]}" || exit 2
 [ -n "$coeffs" ] || coeffs="$top/etc/deposition.coeffs"
-[ -f "$coeffs" ] && [ -r "$coeffs" ] || die2 "--coeffs: cannot read '$coeffs'"
 dep_require rib.sh "$top" simpleFoam blockMesh topoSet createPatch postProcess || exit 1
 dep_check_coeffs rib.sh "$top" "$coeffs" || exit $?
 # what the options multiply, before any work, scaled from the measured default
@@ -172,24 +171,6 @@ write_positions() {   # case n seed
         }
         print ")"
     }' > "$1/constant/positions"
-}
-
-# the particle run, its log filtered as it is written: the parcel counts of
-# every step, the fates of every zone at the end of the warm-up (step NWARM)
-# and at the last step only (the full log would hold some 40 lines per cloud
-# and step); from a fatal error on, every line
-run_particles() {   # case nwarm
-    local names
-    names=$(awk '{ print $1 }' "$1/clouds.txt" | tr '\n' ' ')
-    (cd "$1" && set -o pipefail && pimpleUncoupledKinematicParcelFoam -frozen -clouds "(${names% })" 2>&1 | awk -v nwarm="$2" '
-        fatal { print; next }
-        /FOAM FATAL|FOAM exiting|^--> / { fatal = 1; print; next }
-        /^Time = / { step++; nb = 0; print; next }
-        /^Cloud: / { print; buf[++nb] = $0; next }
-        /Current number of parcels/ { print; next }
-        /Parcel fate: patch |- escape / { if (step == nwarm) print; else buf[++nb] = $0; next }
-        /^End|[Ee]rror|[Ww]arning/ { print }
-        END { if (!fatal) { print "# the last step"; for (i = 1; i <= nb; i++) print buf[i] } }' > log.particles)
 }
 
 run_mesh() {
@@ -262,7 +243,7 @@ EOF
     dep_particle_schemes "$c"
     echo "rib.sh: $mesh mesh: u_top $utop m/s, ribbed wall u* $urib m/s, reattachment $xr H; $nclouds clouds of $parcels parcels, $nsteps steps of 2 t+"
     t0=$(date +%s)
-    run_particles "$c" "$nwarm" || { dep_show_fail rib.sh "$mesh: the particle run" "$c/log.particles"; return 1; }
+    dep_run_particles "$c" "$nwarm" || { dep_show_fail rib.sh "$mesh: the particle run" "$c/log.particles"; return 1; }
     tpart=$(( $(date +%s) - t0 ))
     "$here/rib-deposit" --case "$c" --mesh "$mesh" --h "$h" --utop "$utop" --dt "$dt" --nwarm "$nwarm" \
         --zones "$zones" > "$tmp/rows_$mesh.csv" \

@@ -42,10 +42,14 @@
 #       the estimate line of what the options multiply (stdout) and, when the
 #       MEMORY estimate [bytes] is above what the machine has available, its
 #       refusal naming HINT (stderr, status 2)
-#   dep_run_particles CASE
+#   dep_run_particles CASE [NWARM]
 #       the clouds named in CASE/clouds.txt (first word of each line) carried
 #       by the frozen flow together (pimpleUncoupledKinematicParcelFoam
-#       -frozen), the log in CASE/log.particles; the solver's exit status
+#       -frozen), the log in CASE/log.particles; the solver's exit status.
+#       With NWARM the log is filtered as it is written (a case with many
+#       patches would write some 40 lines per cloud and step): the parcel
+#       counts of every step, the patch fates at step NWARM and, after a line
+#       "# the last step", at the last step; from a fatal error on, every line
 
 dep_control() {   # case app endTime deltaT writeInterval
     cat > "$1/system/controlDict" <<EOF2
@@ -115,10 +119,22 @@ solution
 EOF2
 }
 
-dep_run_particles() {   # case
+dep_run_particles() {   # case [nwarm]
     local names
     names=$(awk '{ print $1 }' "$1/clouds.txt" | tr '\n' ' ')
-    (cd "$1" && pimpleUncoupledKinematicParcelFoam -frozen -clouds "(${names% })" > log.particles 2>&1)
+    if [ -z "${2:-}" ]; then
+        (cd "$1" && pimpleUncoupledKinematicParcelFoam -frozen -clouds "(${names% })" > log.particles 2>&1)
+        return
+    fi
+    (cd "$1" && set -o pipefail && pimpleUncoupledKinematicParcelFoam -frozen -clouds "(${names% })" 2>&1 | awk -v nwarm="$2" '
+        fatal { print; next }
+        /FOAM FATAL|FOAM exiting|^--> / { fatal = 1; print; next }
+        /^Time = / { step++; nb = 0; print; next }
+        /^Cloud: / { print; buf[++nb] = $0; next }
+        /Current number of parcels/ { print; next }
+        /Parcel fate: patch |- escape / { if (step == nwarm) print; else buf[++nb] = $0; next }
+        /^End|[Ee]rror|[Ww]arning/ { print }
+        END { if (!fatal) { print "# the last step"; for (i = 1; i <= nb; i++) print buf[i] } }' > log.particles)
 }
 
 dep_write_cloud() {   # case name d treatment rho U0 injection escape walls
