@@ -210,7 +210,7 @@ EOF
     # the wall shear per zone and the reattachment length
     (cd "$c" && simpleFoam -postProcess -latestTime -funcs '(wallShearStress yPlus)' > log.wall 2>&1) \
         || { dep_show_fail rib.sh "$mesh: wallShearStress" "$c/log.wall"; return 1; }
-    "$here/rib-wall" --case "$c" --time "$last" --h "$h" --zones "$zones" > "$tmp/wall_$mesh.csv" \
+    "$here/rib-wall" --case "$c" --time "$last" --h "$h" > "$tmp/wall_$mesh.csv" \
         || { echo "rib.sh: $mesh: reading the wall shear failed" >&2; return 1; }
     utop=$(awk -F, '$1 == "top" { printf "%.6g", sqrt($4 < 0 ? -$4 : $4) }' "$tmp/wall_$mesh.csv")
     [ -n "$utop" ] || { echo "rib.sh: $mesh: no wall shear of the top wall" >&2; return 1; }
@@ -246,7 +246,7 @@ EOF
     dep_run_particles "$c" "$nwarm" || { dep_show_fail rib.sh "$mesh: the particle run" "$c/log.particles"; return 1; }
     tpart=$(( $(date +%s) - t0 ))
     "$here/rib-deposit" --case "$c" --mesh "$mesh" --h "$h" --utop "$utop" --dt "$dt" --nwarm "$nwarm" \
-        --zones "$zones" > "$tmp/rows_$mesh.csv" \
+        > "$tmp/rows_$mesh.csv" \
         || { echo "rib.sh: $mesh: reading the particle run failed" >&2; return 1; }
     awk -v m="$mesh" -v cells="$cells" -v u="$utop" -v ur="$urib" -v xr="$xr" -v g="$gradp" -v gd="$gdrift" -v tf="$tflow" -v tp="$tpart" \
         -v ns="$nsteps" -v nc="$nclouds" -v w="$tmp/wall_$mesh.csv" 'BEGIN {

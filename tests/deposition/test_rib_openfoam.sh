@@ -79,6 +79,8 @@ check "snowNearWall: the rib's front face above the top wall ($vf against $vt)" 
     "awk -v a='$vf' -v b='$vt' 'BEGIN { exit !(a > b && b > 0) }'"
 check "the mean flow alone: nothing on the top wall or the floor after the rib" \
     "awk -F, '\$2 == \"none\" && (\$5 == \"top\" || \$5 ~ /^floor_/) && \$9 + \$10 > 0 { bad = 1 } END { exit bad + 0 }' '$csv'"
+check "the wall table and the deposit table give every zone the same extent (one zones file)" \
+    "awk -F, 'FNR == NR { if (\$1 != \"reattachment\") w[\$1] = \$2 \",\" \$3; next } FNR > 1 { n++; if (w[\$5] != \$6 \",\" \$7) bad = 1 } END { exit !(n > 0 && !bad && w[\"floorUp\"] == \"-6,-1\" && w[\"floor_0\"] == \"0,2\") }' '$tmp/out/wf/wall.csv' '$csv'"
 check "11 zones per cloud, 2 clouds" "[ \$(awk 'NR > 1' '$csv' | wc -l) -eq 22 ]"
 check "nothing left beside --out" "[ -z \"\$(ls -A '$tmp' | grep -v '^out$\\|^log$\\|^err$\\|^foreign$\\|^bad.coeffs$')\" ]"
 [ "$fails" -eq 0 ] && { echo PASS; exit 0; } || { echo "$fails failure(s)"; exit 1; }
