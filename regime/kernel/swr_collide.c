@@ -407,12 +407,11 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
             const double a = x * x;
             /* Coulomb limit on the whole contact load: the dashpot stands for
              * the plastic contact pressure while loading */
-            ft = swr_tangential_update(&tan, h * (vth + Rs * wh), 8.0 * Gs * a,
-                                       mu * fabs(fn + 2.0 * act->Fc));
-            if (m->adhesive) {
-                const double ra = a / act->a0;
-                mr = swr_rolling_update(&rol, -h * Rs * wh, 4.0 * act->Fc * ra * sqrt(ra), xic);
-            }
+            ft = swr_tangential_update(&tan, h * (vth + Rs * wh), swr_tangential_stiffness(Gs, a),
+                                       swr_tangential_limit(mu, fn, act->Fc));
+            if (m->adhesive)
+                mr = swr_rolling_update(&rol, -h * Rs * wh, swr_rolling_stiffness(act->Fc, a, act->a0),
+                                        xic);
             vt = vth + h2 * ft;
             w = wh + h2 * (Rs * ft + mr) / Is;
         }
