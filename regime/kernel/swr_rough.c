@@ -22,6 +22,10 @@
  * asperities). It bounces when no contact holds it, it moves away from the
  * base plane and its lowest point clears the highest asperity top.
  *
+ * Contact detection (the free flight, the search for new contacts, the
+ * opening of a contact) is in swr_rough_contacts.c, the shared state in
+ * swr_rough.h.
+ *
  * Numerics: velocity Verlet in units of the particle mass, the reference
  * speed max(vn, v_adh) and the flat-wall Hertz contact time at that speed (the
  * stiffest single contact); step 1/accuracy, divided by sqrt(n) while n
@@ -34,388 +38,19 @@
  * then (skidding over the asperities with E_esc > 0) counts as a stick, with
  * status SWR_STEP_BOUND.
  */
-#include <limits.h>
 #include <stddef.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "swp_contact.h"
-#include "swp_cor.h"
 #include "swp_jkr.h"
 #include "swp_time.h"
 #include "swr_damping.h"
-#include "swr_internal.h"
-#include "swr_normal.h"
 #include "swr_rolling.h"
+#include "swr_rough.h"
 #include "swr_spring.h"
 #include "swr_tangential.h"
-#include "swr_wall.h"
-
-/* contacts held at once (a 100 um sphere pressed into 1 um asperities holds a few tens) */
-#define RC_MAX 256
-/* marks the base plane in a contact's index */
-#define PLANE_ID INT_MIN
-/* free_flight: no event within the part of the path it scanned; fly on */
-#define FLY_ON (INT_MIN + 1)
-
-typedef struct {
-    int i, j;             /* asperity index, or i = PLANE_ID */
-    double a[3];          /* asperity centre (scaled) */
-    const swr_normal *nm; /* normal law of this contact */
-    double kd;            /* dashpot stiffness factor sqrt(2 E* sqrt(R*)) */
-    double alpha;         /* dashpot alpha from this contact's approach speed */
-    double x;             /* sqrt of the contact radius */
-    double delta, phi;    /* overlap and dashpot potential at the last step */
-    double dnew;          /* overlap after this step's drift */
-    double fd;            /* dashpot force at the end of the last step */
-    double fne;           /* elastic normal force */
-    double n[3];          /* unit normal (wall into sphere) */
-    double xi[3];         /* tangential spring displacement */
-    double xr[3];         /* rolling displacement */
-    double ft[3];         /* tangential force */
-    double mr[3];         /* rolling moment */
-    double kr;            /* rolling stiffness at the last step (0 before it) */
-} rc_contact;
-
-/* an asperity on the neighbour list */
-typedef struct {
-    int i, j;
-    double a[3];          /* centre (scaled) */
-    double due;           /* check it again once s->built reaches this */
-} rc_near;
-/* longest neighbour list kept (a 100 um sphere on 1 um asperities lists about 150) */
-#define RC_NEAR_MAX 1024
-
-typedef struct {
-    const swr_model *m;
-    const swr_wall *w;
-    double R, r, L;         /* particle radius, asperity radius (scaled), length unit [m] */
-    double invL;            /* 1 / L */
-    double zc;              /* asperity centre height (scaled; swr_wall.h) */
-    double reach_a;         /* R + r: centre distance at first touch of an asperity */
-    swr_normal na, npl;     /* asperity and plane normal laws */
-    double kda, kdp;        /* dashpot factors */
-    double Is, invIs;       /* moment of inertia, its inverse */
-    double invR;            /* 1 / R */
-    double Gs, mu, xic;     /* scaled G*, friction, critical rolling displacement */
-    double V, T, mass;      /* speed unit [m/s], time unit [s], particle mass [kg] */
-    double w2_ref;          /* squared frequency of the reference contact (step_size) */
-    int both;               /* dashpot both: the dashpots act while unloading too */
-    double margin;          /* extra search distance of new_contacts */
-    double guard;           /* no new contact before the sphere has moved this far */
-    double moved;           /* distance moved since the last search */
-    double built;           /* distance moved since the neighbour list was made */
-    int nnear;              /* asperities on the neighbour list */
-    int nc;                 /* contacts held: c[0 .. nc-1] */
-    rc_contact c[RC_MAX];   /* not cleared at the start (open_contact sets one) */
-    rc_near near[RC_NEAR_MAX]; /* the neighbour list of new_contacts */
-} rc_state;
-
-/* Asperity centre in scaled units. */
-static void asp(const rc_state *s, int i, int j, double a[3])
-{
-    swr_wall_asperity(s->w, i, j, a);
-    a[0] *= s->invL;
-    a[1] *= s->invL;
-    a[2] *= s->invL;
-}
-
-/* Overlap and normal of the contact with the asperity centred at a (NULL:
- * the base plane) for the sphere at C. */
-static double geometry(const rc_state *s, const double *a, const double C[3], double n[3])
-{
-    if (!a) {
-        n[0] = n[1] = 0.0;
-        n[2] = 1.0;
-        return s->R - C[2];
-    }
-    const double d[3] = { C[0] - a[0], C[1] - a[1], C[2] - a[2] };
-    const double D = sqrt(swr_dot3(d, d));
-    if (D > 0.0) {
-        const double inv = 1.0 / D;
-        n[0] = d[0] * inv;
-        n[1] = d[1] * inv;
-        n[2] = d[2] * inv;
-    } else {
-        n[0] = n[1] = 0.0;
-        n[2] = 1.0;
-    }
-    return s->reach_a - D;
-}
-
-/* Horizontal distance from a sphere centre at height z (above the plane of
- * the asperity centres, s->zc) within which an asperity centre (at or below
- * that plane) lies within `reach` of it; < 0: none. */
-static double side_reach(double reach, double z)
-{
-    const double r2 = reach * reach - (z > 0.0 ? z * z : 0.0);
-    return r2 > 0.0 ? sqrt(r2) : -1.0;
-}
-
-static int find(const rc_state *s, int i, int j)
-{
-    for (int k = 0; k < s->nc; k++)
-        if (s->c[k].i == i && s->c[k].j == j)
-            return k;
-    return -1;
-}
-
-/* Plastic COR of one contact: Thornton's e_p with the yield velocity of a
- * sphere of this R* and the particle's mass (the flat wall's V_y at R* = R),
- * per asperity_yield: an asperity contact (R* < R) takes the contact's
- * (contact), the flat wall's (particle) or none (elastic, e = 1). */
-static double contact_target(const rc_state *s, double Rc_si, double vi_si)
-{
-    const swr_params *p = &s->m->p;
-    const int asperity = Rc_si < s->R * s->L;
-    if (asperity && p->asperity_yield == SWR_YIELD_ELASTIC)
-        return 1.0;
-    if (p->asperity_yield == SWR_YIELD_CONTACT
-        && (p->cor == SWR_COR_THORNTON || p->cor == SWR_COR_THORNTON_ASYMPTOTE)
-        && p->cor_pair == SWR_PAIR_WALL && asperity) {
-        const double vy = swp_yield_velocity_pp(swp_limiting_pressure(p->sigma_y), s->m->Estar,
-                                                Rc_si, s->mass);
-        return p->cor == SWR_COR_THORNTON ? swp_cor_thornton(vy / vi_si)
-                                          : swp_cor_thornton_pp_asymptote(vy / vi_si);
-    }
-    return swr_damping_target(p, s->m->Estar, s->R * s->L, s->mass, vi_si);
-}
-
-/* The dashpot's alpha for COR e (elastic: 0), per the damping settings. */
-static double dashpot_alpha(const swr_model *m, double e)
-{
-    const swr_params *p = &m->p;
-    return p->dashpot == SWR_DASHPOT_BOTH ? swr_damping_alpha_both(e)
-         : p->cor == SWR_COR_CONSTANT ? m->alpha_const
-                                      : swr_damping_alpha(e);
-}
-
-/* Open a contact at its first touch (delta >= 0): JKR jumps in to a_jump. */
-static int open_contact(rc_state *s, int i, int j, const double *a, const double v[3],
-                        double delta, const double n[3])
-{
-    if (s->nc >= RC_MAX)
-        return -1;
-    rc_contact *c = &s->c[s->nc++];
-    memset(c, 0, sizeof *c);
-    c->i = i;
-    c->j = j;
-    if (a)
-        memcpy(c->a, a, sizeof c->a);
-    c->nm = i == PLANE_ID ? &s->npl : &s->na;
-    c->kd = i == PLANE_ID ? s->kdp : s->kda;
-    memcpy(c->n, n, sizeof c->n);
-    c->delta = delta;
-    c->x = delta > 0.0 ? swr_normal_x(c->nm, delta, 0.0) : c->nm->xj;
-    if (c->nm->gamma > 0.0 && c->x < c->nm->xj)
-        c->x = c->nm->xj;
-    const double un = -swr_dot3(v, n) * s->V; /* approach speed [m/s] */
-    const swr_params *p = &s->m->p;
-    if (un > 0.0 && p->cor != SWR_COR_ELASTIC) {
-        const double e = contact_target(s, c->nm->R * s->L, un);
-        c->alpha = e >= 1.0 ? 0.0 /* elastic (asperity_yield elastic) */
-                            : dashpot_alpha(s->m, e);
-    }
-    c->phi = delta > 0.0 ? 0.8 * c->alpha * c->kd * delta * sqrt(sqrt(delta)) : 0.0;
-    return 0;
-}
-
-/* Elastic energy of a contact relative to its jump-in, and what it takes to
- * break it (U_c - U). */
-static double contact_energy(const rc_contact *c)
-{
-    return swr_normal_energy(c->nm, c->x);
-}
-
-/* Closed-form free flight from C with velocity v: the time to the first touch
- * of an asperity or the base plane (*hit_i, *hit_j), or to the exit from the
- * asperity layer (returns the time with *hit_i = INT_MAX). It scans the path in
- * chunks of one spacing of horizontal travel, at most SWR_ROUGH_FLIGHT_CELLS of
- * them: with nothing met there it returns the time to the end of the scan with
- * *hit_i = FLY_ON (the caller flies on and asks again). INFINITY when moving
- * parallel to the wall inside the layer without meeting anything. */
-#define SWR_ROUGH_FLIGHT_CELLS 4096
-static double free_flight(const rc_state *s, const double C[3], const double v[3], int *hit_i,
-                          int *hit_j)
-{
-    const double top = swr_wall_top(s->w) / s->L;
-    const double zc = C[2];
-    double t_exit = INFINITY, t_plane = INFINITY;
-    if (v[2] > 0.0)
-        t_exit = (top + s->R - zc) / v[2];
-    else if (v[2] < 0.0)
-        t_plane = (zc - s->R) / -v[2];
-    if (t_exit < 0.0)
-        t_exit = 0.0;
-    if (t_plane < 0.0)
-        t_plane = 0.0;
-    double t_end = t_exit < t_plane ? t_exit : t_plane;
-    *hit_i = v[2] > 0.0 ? INT_MAX : PLANE_ID;
-    *hit_j = 0;
-    const double vh = hypot(v[0], v[1]);
-    const double sp = s->w->s / s->L;
-    /* chunks of one spacing of horizontal travel */
-    const double tchunk = vh > 0.0 ? sp / vh : t_end;
-    double best = t_end;
-    double t0 = 0.0;
-    for (long k = 0; k < SWR_ROUGH_FLIGHT_CELLS; k++) {
-        if (!(t0 < best))
-            break;
-        double t1 = t0 + tchunk;
-        if (!(t1 < best))
-            t1 = best;
-        if (!isfinite(t1))
-            t1 = t0 + (isfinite(tchunk) ? tchunk : 0.0);
-        /* lowest centre height over the chunk sets how far sideways it reaches */
-        const double rh = side_reach(s->reach_a, fmin(zc + v[2] * t0, zc + v[2] * t1) - s->zc);
-        if (rh > 0.0) {
-            const double xa = C[0] + v[0] * t0, xb = C[0] + v[0] * t1;
-            const double ya = C[1] + v[1] * t0, yb = C[1] + v[1] * t1;
-            const double xlo = fmin(xa, xb) - rh, xhi = fmax(xa, xb) + rh;
-            const double ylo = fmin(ya, yb) - rh, yhi = fmax(ya, yb) + rh;
-            int j0, j1;
-            swr_wall_rows(s->w, ylo * s->L, yhi * s->L, &j0, &j1);
-            for (int j = j0; j <= j1; j++) {
-                int i0, i1;
-                swr_wall_row_range(s->w, j, xlo * s->L, xhi * s->L, &i0, &i1);
-                for (int i = i0; i <= i1; i++) {
-                    if (find(s, i, j) >= 0)
-                        continue;
-                    double a[3];
-                    asp(s, i, j, a);
-                    /* |C + v t - a| = reach: a t^2 + 2 b t + c = 0 */
-                    const double d[3] = { C[0] - a[0], C[1] - a[1], C[2] - a[2] };
-                    const double qa = swr_dot3(v, v), qb = swr_dot3(d, v);
-                    const double qc = swr_dot3(d, d) - s->reach_a * s->reach_a;
-                    if (qc <= 0.0) {
-                        /* already touching (e.g. at the start on a sunken lattice) */
-                        if (qb < 0.0 && 0.0 < best) {
-                            best = 0.0;
-                            *hit_i = i;
-                            *hit_j = j;
-                        }
-                        continue;
-                    }
-                    const double disc = qb * qb - qa * qc;
-                    if (!(qa > 0.0) || disc < 0.0 || qb >= 0.0)
-                        continue;
-                    const double t = qc / (-qb + sqrt(disc)); /* smaller root, stable form */
-                    if (t < best) {
-                        best = t;
-                        *hit_i = i;
-                        *hit_j = j;
-                    }
-                }
-            }
-        }
-        t0 = t1;
-    }
-    if (t0 < best) {
-        /* the scan ended before the event it found (or none): fly on */
-        if (!isfinite(t_end) && !isfinite(best))
-            return INFINITY;
-        *hit_i = FLY_ON;
-        return t0;
-    }
-    return best;
-}
-
-/* One asperity at the sphere centre C: open a contact when it touches
- * (delta >= 0) and is not one yet. Sets *gap to its gap, or -1 when it is a
- * contact (held or just opened: check it at every search, it may break; a
- * breaking contact sets s->guard = 0). -1 past RC_MAX. */
-static int check_asperity(rc_state *s, const rc_near *q, const double C[3], const double v[3],
-                          double *gap)
-{
-    *gap = -1.0;
-    if (find(s, q->i, q->j) >= 0)
-        return 0;
-    double n[3];
-    const double dl = geometry(s, q->a, C, n);
-    if (dl >= 0.0)
-        return open_contact(s, q->i, q->j, q->a, v, dl, n);
-    *gap = -dl;
-    return 0;
-}
-
-/* Collect every asperity that touches now (delta >= 0) and is not a contact
- * yet, and the plane; open them. The search also notes the smallest gap to
- * any other surface within s->margin: until the sphere has moved that far no
- * new contact can form, and the next searches are skipped (the caller
- * compares s->moved with s->guard).
- * A neighbour list (Verlet's) keeps the search short: a full scan of the
- * lattice under the sphere lists the asperities within a gap of 2 margin;
- * until the sphere has moved margin since (s->built), an asperity off the list
- * is still more than margin away, so only the listed ones are checked. The
- * caller sets s->built = INFINITY after a free flight (the list is rebuilt);
- * a list longer than RC_NEAR_MAX is not kept (full scans every time).
- * Returns -1 when RC_MAX is exceeded. */
-static int new_contacts(rc_state *s, const double C[3], const double v[3])
-{
-    double guard = s->margin;
-    if (s->built < s->margin) {
-        /* an asperity last seen at gap g cannot touch before the sphere has
-         * moved g: it is due again at built + g */
-        for (int k = 0; k < s->nnear; k++) {
-            rc_near *q = &s->near[k];
-            if (q->due <= s->built) {
-                double gap;
-                if (check_asperity(s, q, C, v, &gap) != 0)
-                    return -1;
-                q->due = s->built + gap; /* a contact: due at once */
-                if (gap < 0.0)
-                    continue;
-            }
-            if (q->due - s->built < guard)
-                guard = q->due - s->built;
-        }
-    } else {
-        const double far = s->reach_a + 2.0 * s->margin;
-        const double rh = side_reach(far, C[2] - s->zc);
-        int kept = 1;
-        s->nnear = 0;
-        if (rh > 0.0) {
-            int j0, j1;
-            swr_wall_rows(s->w, (C[1] - rh) * s->L, (C[1] + rh) * s->L, &j0, &j1);
-            for (int j = j0; j <= j1; j++) {
-                int i0, i1;
-                swr_wall_row_range(s->w, j, (C[0] - rh) * s->L, (C[0] + rh) * s->L, &i0, &i1);
-                for (int i = i0; i <= i1; i++) {
-                    rc_near q = { i, j, { 0.0, 0.0, 0.0 }, 0.0 };
-                    asp(s, i, j, q.a);
-                    const double d[3] = { C[0] - q.a[0], C[1] - q.a[1], C[2] - q.a[2] };
-                    if (swr_dot3(d, d) > far * far)
-                        continue;
-                    double gap;
-                    if (check_asperity(s, &q, C, v, &gap) != 0)
-                        return -1;
-                    q.due = gap; /* a contact: due at once */
-                    if (gap >= 0.0 && gap < guard)
-                        guard = gap;
-                    if (s->nnear < RC_NEAR_MAX)
-                        s->near[s->nnear++] = q;
-                    else
-                        kept = 0;
-                }
-            }
-        }
-        s->built = kept ? 0.0 : INFINITY;
-    }
-    if (find(s, PLANE_ID, 0) < 0) {
-        double n[3];
-        const double dl = geometry(s, NULL, C, n);
-        if (dl >= 0.0) {
-            if (open_contact(s, PLANE_ID, 0, NULL, v, dl, n) != 0)
-                return -1;
-        } else if (-dl < guard) {
-            guard = -dl;
-        }
-    }
-    s->guard = guard;
-    s->moved = 0.0;
-    return 0;
-}
 
 static void add_msg(swr_result *r, const char *text)
 {
@@ -611,7 +246,7 @@ static void rough_setup(const swr_model *m, const swr_impact *in, rc_state *s, r
         }
     }
 
-    r->e_target = contact_target(s, Ra_si, in->vn);
+    r->e_target = swr_rough_contact_target(s, Ra_si, in->vn);
     if (m->adhesive) {
         const double lam = swp_tabor(gam, m->Estar, Ra_si, p->z0);
         if (!(lam > SWP_TABOR_JKR_MIN)) {
@@ -624,7 +259,7 @@ static void rough_setup(const swr_model *m, const swr_impact *in, rc_state *s, r
 
     /* step: 1/accuracy of the contact time, shortened by the damping's
      * loading-time factor at the impact's own COR, as on the flat wall */
-    const double alpha0 = p->cor == SWR_COR_ELASTIC ? 0.0 : dashpot_alpha(m, r->e_target);
+    const double alpha0 = p->cor == SWR_COR_ELASTIC ? 0.0 : swr_rough_dashpot_alpha(m, r->e_target);
     u->h0 = swr_damping_time_factor(alpha0) / p->accuracy;
     u->he = 1.0 / p->accuracy; /* the step without damping */
     s->both = p->dashpot == SWR_DASHPOT_BOTH;
@@ -654,7 +289,7 @@ static int rough_fly(rc_state *s, rc_run *u, swr_result *r)
     if (++u->flights > SWR_ROUGH_FLIGHTS_MAX)
         return RC_STOP;
     int hi, hj;
-    const double tf = free_flight(s, u->C, u->v, &hi, &hj);
+    const double tf = swr_rough_free_flight(s, u->C, u->v, &hi, &hj);
     if (!isfinite(tf)) {
         add_msg(r, "left parallel to the wall inside the asperity layer");
         return RC_BOUNCE;
@@ -672,8 +307,8 @@ static int rough_fly(rc_state *s, rc_run *u, swr_result *r)
         asp(s, hi, hj, ah);
     const double *ap = hi == PLANE_ID ? NULL : ah;
     const double dl = geometry(s, ap, u->C, nn);
-    if (open_contact(s, hi, hj, ap, u->v, dl > 0.0 ? dl : 0.0, nn) != 0
-        || new_contacts(s, u->C, u->v) != 0) {
+    if (swr_rough_open_contact(s, hi, hj, ap, u->v, dl > 0.0 ? dl : 0.0, nn) != 0
+        || swr_rough_new_contacts(s, u->C, u->v) != 0) {
         u->overflow = 1;
         return RC_STOP;
     }
@@ -870,7 +505,7 @@ static int rough_step(rc_state *s, rc_run *u, const swr_params *p, const swr_tra
     const double step_len = h * sqrt(swr_dot3(vh, vh));
     s->moved += step_len;
     s->built += step_len;
-    if (s->moved >= s->guard && new_contacts(s, C, v) != 0) {
+    if (s->moved >= s->guard && swr_rough_new_contacts(s, C, v) != 0) {
         u->overflow = 1;
         return RC_STOP;
     }
