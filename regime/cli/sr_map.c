@@ -127,8 +127,8 @@ int sr_cmd_map(int argc, char **argv)
         if (axis_angle) o0.tan_angle = tan(axis[0] * M_PI / 180.0);
         else o0.vt = axis[0];
     }
-    /* the estimate, before any work (issue 24: a typo in --points started a
-     * run of hours without a word) */
+    /* the estimate, before any work: a run of hours (a typo in --points) is
+     * announced, and refused beyond SR_LONG_RUN_S without --force */
     {
         const swt_grid gp = sr_pilot_grid(&mo);
         const double work = sr_auto_vrange_work(m, mo.set_vmin, mo.set_vmax, &o0)

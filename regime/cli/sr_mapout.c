@@ -102,7 +102,7 @@ int sr_map_write_files(swo_set *os, const char *sfx, const sr_mapres *r, const s
     if (r->fit_ok) {
         snprintf(name, sizeof name, "regime%s.coeffs", sfx);
         if (!(f = swo_open(os, name, err, errlen))) return -1;
-        /* the kernel's e_n(d, v_n) of this map's bouncing points (issue 23) */
+        /* the kernel's e_n(d, v_n) of this map's bouncing points (rebound tables) */
         swt_rebound rb;
         if (swt_rebound_init(&rb, r->mp, NULL, 1, err, errlen) != 0) return -1;
         if (swt_rebound_layer(&rb, 0, r->mp, err, errlen) != 0) { swt_rebound_free(&rb); return -1; }

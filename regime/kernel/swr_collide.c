@@ -178,7 +178,7 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
     if (!m || !in)
         return bad_input(r, "model or impact", NAN, NULL);
     /* each NaN is refused before it is compared: an ordered comparison of a NaN
-     * raises FE_INVALID, which OpenFOAM traps (issue 22) */
+     * raises FE_INVALID, which OpenFOAM traps */
     if (isnan(in->d) || !(in->d >= SWR_D_MIN && in->d <= SWR_D_MAX))
         return bad_input(r, "d", in->d, "1e-07 .. 0.1 m");
     if (isnan(in->vn) || !(in->vn > 0.0 && in->vn <= SWR_V_MAX))
