@@ -211,10 +211,7 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
     const int plastic = p->cor == SWR_COR_THORNTON_NING;
     r->e_target = swr_damping_target(p, m->Estar, R, mass, in->vn);
     const int damp_both = p->dashpot == SWR_DASHPOT_BOTH;
-    const double alpha = plastic ? 0.0
-                       : damp_both ? swr_damping_alpha_both(r->e_target)
-                       : p->cor == SWR_COR_CONSTANT ? m->alpha_const
-                                                    : swr_damping_alpha(r->e_target);
+    const double alpha = plastic ? 0.0 : swr_damping_alpha_for(p, m->alpha_const, r->e_target);
     if (!plastic && r->e_target < (damp_both ? swr_damping_e_min_both() : m->e_min))
         append_msg(r, "plastic COR below the dashpot table: damping capped");
     if (m->adhesive) {

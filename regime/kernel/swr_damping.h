@@ -50,6 +50,11 @@ double swr_damping_e_min(void);
 double swr_damping_cor_both(double alpha);
 double swr_damping_alpha_both(double e);
 double swr_damping_e_min_both(void);
+/* The dashpot's alpha for the COR e per the settings p: dashpot both
+ * swr_damping_alpha_both(e); cor constant alpha_const (the model's, root-found
+ * once); else the table swr_damping_alpha(e). Used by the flat and the rough
+ * wall's integrators alike. */
+double swr_damping_alpha_for(const swr_params *p, double alpha_const, double e);
 /* alpha for e by a GSL Brent root finder on swr_damping_cor (about 1 ms). */
 double swr_damping_alpha_exact(double e);
 /* Build the table now (idempotent, thread-safe); 0 or -1 on failure. */

@@ -22,9 +22,14 @@
  * asperities). It bounces when no contact holds it, it moves away from the
  * base plane and its lowest point clears the highest asperity top.
  *
- * Contact detection (the free flight, the search for new contacts, the
- * opening of a contact) is in swr_rough_contacts.c, the shared state in
- * swr_rough.h.
+ * swr_collide_rough runs in phases: rough_setup (units, contact laws, step,
+ * start), rough_fly (free flight to the next touch), rough_step (one step in
+ * contact: opening kick, drift, update_contacts with each contact's normal,
+ * tangential and rolling laws, closing kick, dashpots, new contacts, energy
+ * balance) and rough_outcome. The tangential and rolling laws are the flat
+ * wall's (swr_tangential.h, swr_rolling.h) on 3-D springs. Contact detection
+ * (the free flight, the search for new contacts, the opening of a contact)
+ * is in swr_rough_contacts.c, the shared state in swr_rough.h.
  *
  * Numerics: velocity Verlet in units of the particle mass, the reference
  * speed max(vn, v_adh) and the flat-wall Hertz contact time at that speed (the
@@ -79,7 +84,7 @@ static double state_energy(const rc_state *s, const double v[3], const double w[
     double e = 0.5 * swr_dot3(v, v) + 0.5 * s->Is * swr_dot3(w, w), below = 0.0;
     for (int k = 0; k < s->nc; k++) {
         const rc_contact *c = &s->c[k];
-        e += contact_energy(c) + spring_energy(s, c);
+        e += rc_contact_energy(c) + spring_energy(s, c);
         below += c->nm->Uc;
     }
     *esc = e - below;
@@ -259,7 +264,8 @@ static void rough_setup(const swr_model *m, const swr_impact *in, rc_state *s, r
 
     /* step: 1/accuracy of the contact time, shortened by the damping's
      * loading-time factor at the impact's own COR, as on the flat wall */
-    const double alpha0 = p->cor == SWR_COR_ELASTIC ? 0.0 : swr_rough_dashpot_alpha(m, r->e_target);
+    const double alpha0 = p->cor == SWR_COR_ELASTIC ? 0.0
+                                                    : swr_damping_alpha_for(p, m->alpha_const, r->e_target);
     u->h0 = swr_damping_time_factor(alpha0) / p->accuracy;
     u->he = 1.0 / p->accuracy; /* the step without damping */
     s->both = p->dashpot == SWR_DASHPOT_BOTH;
@@ -304,9 +310,9 @@ static int rough_fly(rc_state *s, rc_run *u, swr_result *r)
         return RC_FLY_ON;
     double nn[3], ah[3];
     if (hi != PLANE_ID)
-        asp(s, hi, hj, ah);
+        rc_asp(s, hi, hj, ah);
     const double *ap = hi == PLANE_ID ? NULL : ah;
-    const double dl = geometry(s, ap, u->C, nn);
+    const double dl = rc_geometry(s, ap, u->C, nn);
     if (swr_rough_open_contact(s, hi, hj, ap, u->v, dl > 0.0 ? dl : 0.0, nn) != 0
         || swr_rough_new_contacts(s, u->C, u->v) != 0) {
         u->overflow = 1;
@@ -391,11 +397,11 @@ static void update_contacts(rc_state *s, rc_run *u, double h, double vh[3], cons
     for (int k = 0; k < s->nc; k++) {
         rc_contact *c = &s->c[k];
         double nn[3];
-        const double dl = geometry(s, c->i == PLANE_ID ? NULL : c->a, u->C, nn);
+        const double dl = rc_geometry(s, c->i == PLANE_ID ? NULL : c->a, u->C, nn);
         const int broken = c->nm->gamma > 0.0 ? dl < c->nm->delta_c : dl <= 0.0;
         if (broken) {
             /* the contact's stored energy (U_c for JKR) and its springs are lost */
-            u->w_diss += contact_energy(c) + spring_energy(s, c);
+            u->w_diss += rc_contact_energy(c) + spring_energy(s, c);
             s->guard = 0.0; /* it may touch again: search from the next step */
             if (c->fd != 0.0) /* undo the opening kick's dashpot part */
                 for (int q = 0; q < 3; q++)

@@ -73,7 +73,7 @@ typedef struct {
 } rc_state;
 
 /* Asperity centre in scaled units. */
-static inline void asp(const rc_state *s, int i, int j, double a[3])
+static inline void rc_asp(const rc_state *s, int i, int j, double a[3])
 {
     swr_wall_asperity(s->w, i, j, a);
     a[0] *= s->invL;
@@ -83,7 +83,8 @@ static inline void asp(const rc_state *s, int i, int j, double a[3])
 
 /* Overlap and normal of the contact with the asperity centred at a (NULL:
  * the base plane) for the sphere at C. */
-static inline double geometry(const rc_state *s, const double *a, const double C[3], double n[3])
+static inline double rc_geometry(const rc_state *s, const double *a, const double C[3],
+                                 double n[3])
 {
     if (!a) {
         n[0] = n[1] = 0.0;
@@ -104,7 +105,7 @@ static inline double geometry(const rc_state *s, const double *a, const double C
     return s->reach_a - D;
 }
 
-static inline int find(const rc_state *s, int i, int j)
+static inline int rc_find(const rc_state *s, int i, int j)
 {
     for (int k = 0; k < s->nc; k++)
         if (s->c[k].i == i && s->c[k].j == j)
@@ -114,7 +115,7 @@ static inline int find(const rc_state *s, int i, int j)
 
 /* Elastic energy of a contact relative to its jump-in, and what it takes to
  * break it (U_c - U). */
-static inline double contact_energy(const rc_contact *c)
+static inline double rc_contact_energy(const rc_contact *c)
 {
     return swr_normal_energy(c->nm, c->x);
 }
@@ -122,8 +123,6 @@ static inline double contact_energy(const rc_contact *c)
 /* Plastic COR of a contact of R* Rc_si [m] at the approach speed vi_si [m/s]
  * (swr_rough_contacts.c). */
 double swr_rough_contact_target(const rc_state *s, double Rc_si, double vi_si);
-/* The dashpot's alpha for COR e, per the damping settings. */
-double swr_rough_dashpot_alpha(const swr_model *m, double e);
 /* Opens a contact at its first touch; -1 past RC_MAX. */
 int swr_rough_open_contact(rc_state *s, int i, int j, const double *a, const double v[3],
                            double delta, const double n[3]);

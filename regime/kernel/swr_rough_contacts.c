@@ -44,18 +44,9 @@ double swr_rough_contact_target(const rc_state *s, double Rc_si, double vi_si)
     return swr_damping_target(p, s->m->Estar, s->R * s->L, s->mass, vi_si);
 }
 
-/* The dashpot's alpha for COR e (elastic: 0), per the damping settings. */
-double swr_rough_dashpot_alpha(const swr_model *m, double e)
-{
-    const swr_params *p = &m->p;
-    return p->dashpot == SWR_DASHPOT_BOTH ? swr_damping_alpha_both(e)
-         : p->cor == SWR_COR_CONSTANT ? m->alpha_const
-                                      : swr_damping_alpha(e);
-}
-
 /* Open a contact at its first touch (delta >= 0): JKR jumps in to a_jump. */
 int swr_rough_open_contact(rc_state *s, int i, int j, const double *a, const double v[3],
-                        double delta, const double n[3])
+                           double delta, const double n[3])
 {
     if (s->nc >= RC_MAX)
         return -1;
@@ -77,7 +68,7 @@ int swr_rough_open_contact(rc_state *s, int i, int j, const double *a, const dou
     if (un > 0.0 && p->cor != SWR_COR_ELASTIC) {
         const double e = swr_rough_contact_target(s, c->nm->R * s->L, un);
         c->alpha = e >= 1.0 ? 0.0 /* elastic (asperity_yield elastic) */
-                            : swr_rough_dashpot_alpha(s->m, e);
+                            : swr_damping_alpha_for(p, s->m->alpha_const, e);
     }
     c->phi = delta > 0.0 ? 0.8 * c->alpha * c->kd * delta * sqrt(sqrt(delta)) : 0.0;
     return 0;
@@ -92,7 +83,7 @@ int swr_rough_open_contact(rc_state *s, int i, int j, const double *a, const dou
  * parallel to the wall inside the layer without meeting anything. */
 #define SWR_ROUGH_FLIGHT_CELLS 4096
 double swr_rough_free_flight(const rc_state *s, const double C[3], const double v[3], int *hit_i,
-                          int *hit_j)
+                             int *hit_j)
 {
     const double top = swr_wall_top(s->w) / s->L;
     const double zc = C[2];
@@ -135,10 +126,10 @@ double swr_rough_free_flight(const rc_state *s, const double C[3], const double 
                 int i0, i1;
                 swr_wall_row_range(s->w, j, xlo * s->L, xhi * s->L, &i0, &i1);
                 for (int i = i0; i <= i1; i++) {
-                    if (find(s, i, j) >= 0)
+                    if (rc_find(s, i, j) >= 0)
                         continue;
                     double a[3];
-                    asp(s, i, j, a);
+                    rc_asp(s, i, j, a);
                     /* |C + v t - a| = reach: a t^2 + 2 b t + c = 0 */
                     const double d[3] = { C[0] - a[0], C[1] - a[1], C[2] - a[2] };
                     const double qa = swr_dot3(v, v), qb = swr_dot3(d, v);
@@ -184,10 +175,10 @@ static int check_asperity(rc_state *s, const rc_near *q, const double C[3], cons
                           double *gap)
 {
     *gap = -1.0;
-    if (find(s, q->i, q->j) >= 0)
+    if (rc_find(s, q->i, q->j) >= 0)
         return 0;
     double n[3];
-    const double dl = geometry(s, q->a, C, n);
+    const double dl = rc_geometry(s, q->a, C, n);
     if (dl >= 0.0)
         return swr_rough_open_contact(s, q->i, q->j, q->a, v, dl, n);
     *gap = -dl;
@@ -238,7 +229,7 @@ int swr_rough_new_contacts(rc_state *s, const double C[3], const double v[3])
                 swr_wall_row_range(s->w, j, (C[0] - rh) * s->L, (C[0] + rh) * s->L, &i0, &i1);
                 for (int i = i0; i <= i1; i++) {
                     rc_near q = { i, j, { 0.0, 0.0, 0.0 }, 0.0 };
-                    asp(s, i, j, q.a);
+                    rc_asp(s, i, j, q.a);
                     const double d[3] = { C[0] - q.a[0], C[1] - q.a[1], C[2] - q.a[2] };
                     if (swr_dot3(d, d) > far * far)
                         continue;
@@ -257,9 +248,9 @@ int swr_rough_new_contacts(rc_state *s, const double C[3], const double v[3])
         }
         s->built = kept ? 0.0 : INFINITY;
     }
-    if (find(s, PLANE_ID, 0) < 0) {
+    if (rc_find(s, PLANE_ID, 0) < 0) {
         double n[3];
-        const double dl = geometry(s, NULL, C, n);
+        const double dl = rc_geometry(s, NULL, C, n);
         if (dl >= 0.0) {
             if (swr_rough_open_contact(s, PLANE_ID, 0, NULL, v, dl, n) != 0)
                 return -1;
