@@ -378,23 +378,16 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
             x = swr_normal_x(&nrm, delta, x);
             fne = swr_normal_force(&nrm, x);
         }
-        /* closing kick. The dashpot acts while loading; its impulse over the
-         * step is exact: int c(delta) u dt = Phi(delta1) - Phi(delta0),
-         * Phi = (4/5) alpha kd delta^(5/4), which also removes the error of
-         * its delta^(1/4) singularity at first contact. The opening kick
-         * took h/2 F_d(old); the rest of the exact impulse is applied here. */
+        /* closing kick. The dashpot acts while loading, with its exact
+         * impulse over the step (swr_damping.h: the opening kick took
+         * h/2 F_d(old), the rest is applied here). */
         u = uh - h2 * fne;
-        const double phi = delta > 0.0 ? pk * delta * sqrt(sqrt(delta)) : 0.0;
+        const double phi = swr_dashpot_potential(pk, delta);
         fd = 0.0;
         if ((uh > 0.0 || (damp_both && (delta > 0.0 || d_old > 0.0))) && alpha > 0.0) {
-            const double imp = phi - phi_old - h2 * fd_old;
-            const double ue = u;
-            u -= imp;
-            if (ue > 0.0 ? u < 0.0 : (ue < 0.0 && u > 0.0))
-                u = 0.0; /* the dashpot stops the motion, it never reverses it */
-            wd += (phi - phi_old) * 0.5 * (u_old + (ue > 0.0 ? fmax(u, 0.0) : fmin(u, 0.0)));
+            u = swr_dashpot_step(u, phi - phi_old, h2 * fd_old, u_old, &wd);
             if ((u > 0.0 || damp_both) && delta > 0.0)
-                fd = alpha * kd * sqrt(sqrt(delta)) * u;
+                fd = swr_dashpot_force(alpha, kd, delta, u);
         } else if (fd_old != 0.0) {
             u += h2 * fd_old; /* loading ended: undo the opening kick's dashpot part */
         }

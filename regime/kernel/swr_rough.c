@@ -426,11 +426,10 @@ static void update_contacts(rc_state *s, rc_run *u, double h, double vh[3], cons
     s->nc = kk;
 }
 
-/* The dashpots over the step: each contact's impulse is exact,
- * int c(delta) u dt = Phi(delta1) - Phi(delta0), Phi = (4/5) alpha kd
- * delta^(5/4); the opening kick took h/2 F_d(old), the rest is applied to the
- * velocity v here (vh: the mid-step velocity, u_start: each contact's
- * approach speed at the step's start). Their work is added to w_diss. */
+/* The dashpots over the step, each contact's impulse exact (swr_damping.h:
+ * the opening kick took h/2 F_d(old), the rest is applied to the velocity v
+ * here; vh: the mid-step velocity, u_start: each contact's approach speed at
+ * the step's start). Their work is added to w_diss. */
 static void dashpots(rc_state *s, rc_run *u, double h, const double vh[3], const double *u_start)
 {
     const double h2 = 0.5 * h;
@@ -440,21 +439,17 @@ static void dashpots(rc_state *s, rc_run *u, double h, const double vh[3], const
     for (int k = 0; k < s->nc; k++) {
         rc_contact *c = &s->c[k];
         const double dl = c->dnew;
-        const double phi = dl > 0.0 ? 0.8 * c->alpha * c->kd * dl * sqrt(sqrt(dl)) : 0.0;
+        const double phi = swr_dashpot_potential(0.8 * c->alpha * c->kd, dl);
         const double uh = -swr_dot3(vh, c->n);   /* approach speed at mid-step */
         const double fd_old = c->fd;
         c->fd = 0.0;
         if (c->alpha > 0.0 && (uh > 0.0 || (both && (dl > 0.0 || c->delta > 0.0)))) {
             const double ue = -swr_dot3(v, c->n);
-            const double imp = phi - c->phi - h2 * fd_old;
-            double un = ue - imp;
-            if (ue > 0.0 ? un < 0.0 : (ue < 0.0 && un > 0.0))
-                un = 0.0; /* the dashpot stops the motion, it never reverses it */
+            const double un = swr_dashpot_step(ue, phi - c->phi, h2 * fd_old, u_start[k], &wd_step);
             for (int q = 0; q < 3; q++)
                 v[q] += (ue - un) * c->n[q];
-            wd_step += (phi - c->phi) * 0.5 * (u_start[k] + (ue > 0.0 ? fmax(un, 0.0) : fmin(un, 0.0)));
             if ((un > 0.0 || both) && dl > 0.0)
-                c->fd = c->alpha * c->kd * sqrt(sqrt(dl)) * un;
+                c->fd = swr_dashpot_force(c->alpha, c->kd, dl, un);
         } else if (fd_old != 0.0) {
             /* loading ended: undo the opening kick's dashpot part */
             for (int q = 0; q < 3; q++)

@@ -70,7 +70,7 @@ int swr_rough_open_contact(rc_state *s, int i, int j, const double *a, const dou
         c->alpha = e >= 1.0 ? 0.0 /* elastic (asperity_yield elastic) */
                             : swr_damping_alpha_for(p, s->m->alpha_const, e);
     }
-    c->phi = delta > 0.0 ? 0.8 * c->alpha * c->kd * delta * sqrt(sqrt(delta)) : 0.0;
+    c->phi = swr_dashpot_potential(0.8 * c->alpha * c->kd, delta);
     return 0;
 }
 
