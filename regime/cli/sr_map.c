@@ -22,6 +22,42 @@ static int oblique_nodes(const swt_grid *g, double *v_lo, double *v_hi)
     return 1 + (int)ceil(log(*v_hi / *v_lo) / (step > 0.0 ? step : log(1.5)));
 }
 
+/* The summary of one map on stdout (and a missing fit as a warning on stderr). */
+static void print_map(const sr_mapres *r, const char *sfx, const char *what, unsigned long seed,
+                      int threads)
+{
+    const swt_fit *F = &r->fit;
+    printf("map%s: %s\n", sfx, what);
+    if (!r->fit_ok) {
+        printf("  warning: no fit and no regime%s.coeffs: %s\n", sfx, r->fit_err);
+        fprintf(stderr, "snowregime map: warning: map%s: no fit: %s\n", sfx, r->fit_err);
+    }
+    printf("  grid %d x %d: d %.4g..%.4g m, vn %.4g..%.4g m/s (%s)\n", r->mp->g.nd, r->mp->g.nv,
+           r->mp->g.dmin, r->mp->g.dmax, r->mp->g.vmin, r->mp->g.vmax, r->mp->g.vlog ? "log" : "linear");
+    if (r->mp->points > 0)
+        printf("  cells with p_stick >= 0.5: %ld of %d; %ld impacts, %ld held at the time "
+               "bound (counted as stick)\n", r->mp->nstick, r->mp->g.nd * r->mp->g.nv,
+               r->mp->collisions, r->mp->step_bound);
+    else
+        printf("  sticking points %ld of %ld, step-bound points %ld\n", r->mp->nstick,
+               r->mp->collisions, r->mp->step_bound);
+    printf("  interface points %d (columns all stick %d, all bounce %d, non-monotone %d)\n",
+           r->it.n, r->it.cols_all_stick, r->it.cols_all_bounce, r->it.cols_nonmono);
+    if (r->contours)
+        printf("  rough wall: %d impact points per cell (seed %lu); contour points p = 0.1: %d, "
+               "p = 0.5: %d, p = 0.9: %d\n", r->mp->points, seed, r->contours->lo.n,
+               r->it.n, r->contours->hi.n);
+    if (r->fit_ok) {
+        printf("  fit degree %d%s%s: coeffs", F->degree, F->note[0] ? " - " : "", F->note);
+        for (int i = 0; i <= F->degree; i++) printf(" %.6g", F->c[i]);
+        printf("\n  residuals (relative, d_crit): rms %.3g, max %.3g; slopes %.3f (low), %.3f (high)\n",
+               F->rms, F->maxres, F->slope_lo, F->slope_hi);
+    }
+    printf("  wall time: grid %.4f s (%ld collisions, %d threads), total %.4f s\n",
+           r->mp->seconds, r->mp->collisions, threads, r->seconds_total);
+    if (r->mp->msg[0]) printf("  kernel warning: %s\n", r->mp->msg);
+}
+
 int sr_cmd_map(int argc, char **argv)
 {
     const char *cmd = "map";
@@ -223,36 +259,7 @@ int sr_cmd_map(int argc, char **argv)
         } else if (sr_map_write_files(os, sfx, &r, &p, what, mo.plot, s.threads, err, sizeof err) != 0) {
             rc = sr_out_fail(cmd, os, err);
         } else {
-            const swt_fit *F = &r.fit;
-            printf("map%s: %s\n", sfx, what);
-            if (!r.fit_ok) {
-                printf("  warning: no fit and no regime%s.coeffs: %s\n", sfx, r.fit_err);
-                fprintf(stderr, "snowregime map: warning: map%s: no fit: %s\n", sfx, r.fit_err);
-            }
-            printf("  grid %d x %d: d %.4g..%.4g m, vn %.4g..%.4g m/s (%s)\n", r.mp->g.nd, r.mp->g.nv,
-                   r.mp->g.dmin, r.mp->g.dmax, r.mp->g.vmin, r.mp->g.vmax, r.mp->g.vlog ? "log" : "linear");
-            if (r.mp->points > 0)
-                printf("  cells with p_stick >= 0.5: %ld of %d; %ld impacts, %ld held at the time "
-                       "bound (counted as stick)\n", r.mp->nstick, r.mp->g.nd * r.mp->g.nv,
-                       r.mp->collisions, r.mp->step_bound);
-            else
-                printf("  sticking points %ld of %ld, step-bound points %ld\n", r.mp->nstick,
-                       r.mp->collisions, r.mp->step_bound);
-            printf("  interface points %d (columns all stick %d, all bounce %d, non-monotone %d)\n",
-                   r.it.n, r.it.cols_all_stick, r.it.cols_all_bounce, r.it.cols_nonmono);
-            if (r.contours)
-                printf("  rough wall: %d impact points per cell (seed %lu); contour points p = 0.1: %d, "
-                       "p = 0.5: %d, p = 0.9: %d\n", r.mp->points, mo.o.seed, r.contours->lo.n,
-                       r.it.n, r.contours->hi.n);
-            if (r.fit_ok) {
-                printf("  fit degree %d%s%s: coeffs", F->degree, F->note[0] ? " - " : "", F->note);
-                for (int i = 0; i <= F->degree; i++) printf(" %.6g", F->c[i]);
-                printf("\n  residuals (relative, d_crit): rms %.3g, max %.3g; slopes %.3f (low), %.3f (high)\n",
-                       F->rms, F->maxres, F->slope_lo, F->slope_hi);
-            }
-            printf("  wall time: grid %.4f s (%ld collisions, %d threads), total %.4f s\n",
-                   r.mp->seconds, r.mp->collisions, s.threads, r.seconds_total);
-            if (r.mp->msg[0]) printf("  kernel warning: %s\n", r.mp->msg);
+            print_map(&r, sfx, what, mo.o.seed, s.threads);
             if (rough_vt) {
                 const size_t nc = (size_t)r.mp->g.nd * r.mp->g.nv;
                 if (k == 0) {
