@@ -87,6 +87,81 @@ int sr_estimate(const char *cmd, const swr_model *m, const swt_grid *g, const sw
 /* "normal contact kept" / "full stick" / "full stick, at rest within S m" */
 const char *sr_outcome_text(const swt_vcrit_opts *o, char *buf, size_t n);
 
+/* ---- map and sensitivity (sr_mapopt.c, sr_mapcompute.c, sr_mapout.c,
+ * sr_mapplot.c) ---- */
+
+/* Grid and map options shared by map and sensitivity. */
+typedef struct {
+    swt_grid g;
+    int set_vmin, set_vmax;
+    int degree, refine, plot;
+    swt_vcrit_opts o;       /* outcome, tangential motion, tolerance */
+    const char *out;
+    int force;              /* --force: run even when estimated above SR_LONG_RUN_S, and
+                               write into a non-empty folder that is not an output folder */
+    swt_progress_mode progress; /* --progress: the progress line also off a terminal */
+    swt_progress *pg;       /* the run's progress report (set by the command) */
+} sr_mapopt;
+
+/* Rough wall: the p = 0.1 and 0.9 contours beside the map's p = 0.5 interface. */
+typedef struct {
+    swt_interface lo, hi;   /* p = 0.1, p = 0.9 */
+} sr_contours;
+
+/* One computed map with its interface and fit. */
+typedef struct {
+    swt_map *mp;
+    swt_interface it;
+    sr_contours *contours;  /* rough wall only, else NULL */
+    swt_fit fit;
+    int fit_ok;
+    char fit_err[300];
+    double seconds_total;
+} sr_mapres;
+
+/* sr_mapopt.c: the defaults (46 x 50 grid, 10-100 um, automatic speeds,
+ * degree 3, refined interface, plots). */
+void sr_mapopt_default(sr_mapopt *m);
+/* The grid and map options at argv[i]: 1 taken, 0 not mine, -1 error (a->err). */
+int sr_mapopt_parse(sr_args *a, sr_mapopt *m);
+/* --out given, the grid at most SR_MAX_CELLS cells, dmax > dmin, vmax > vmin:
+ * 0, else -1 with a message. */
+int sr_mapopt_check(sr_mapopt *m, char *err, size_t errlen);
+/* Impacts of one map of mo on model m with options o (an estimate). */
+double sr_map_work(const swr_model *m, const sr_mapopt *mo, const swt_vcrit_opts *o);
+/* The grid of the pilot before the speed range is known. */
+swt_grid sr_pilot_grid(const sr_mapopt *mo);
+
+/* sr_mapcompute.c: one map of mo on model m with options o into r (its
+ * interface, fit and on a rough wall its contours): 0, or -1 with a message;
+ * sr_mapres_free r either way. */
+int sr_map_compute(const swr_model *m, const sr_mapopt *mo, const swt_vcrit_opts *o, int threads,
+                   sr_mapres *r, char *err, size_t errlen);
+/* The contours p = 0.1 and 0.9 of r's rough-wall map into c. */
+int sr_map_contours(const swr_model *m, const sr_mapres *r, const swt_vcrit_opts *o, int threads,
+                    sr_contours *c, char *err, size_t errlen);
+void sr_mapres_free(sr_mapres *r);
+
+/* sr_mapout.c: one map's files into the set (names with suffix sfx: map.csv,
+ * interface.csv, fit.txt, regime.coeffs when fitted, contours.csv on a rough
+ * wall, the plot when plot); what: the map's description. */
+int sr_map_write_files(swo_set *os, const char *sfx, const sr_mapres *r, const swr_params *p,
+                       const char *what, int plot, int threads, char *err, size_t errlen);
+/* Every file name of the maps (one per --vt / --angle value of axis, or one
+ * map when axis is NULL) checked in the set before the work. */
+int sr_map_check_names(swo_set *os, const double *axis, int naxis, int axis_angle, char *err,
+                       size_t errlen);
+
+/* sr_mapplot.c: the map plot (stick/bounce, interface, fit) and the rough
+ * wall's (stick probability, contours) of one map into the set; the
+ * sensitivity plot. 0, or -1 with a message. */
+int sr_map_plot(swo_set *os, const char *sfx, const sr_mapres *r, const char *title, char *err,
+                size_t errlen);
+int sr_map_plot_rough(swo_set *os, const char *sfx, const sr_mapres *r, const char *title,
+                      char *err, size_t errlen);
+int sr_plot_sensitivity(const char *png, const char *tdata, const swt_grid *g, int n,
+                        const char keys[][16], const double *vals, char *err, size_t errlen);
+
 int sr_cmd_collide(int argc, char **argv);
 int sr_cmd_vcrit(int argc, char **argv);
 int sr_cmd_map(int argc, char **argv);

@@ -136,7 +136,7 @@ int sr_cmd_collide(int argc, char **argv)
     }
     if (!have_d) return sr_usage_error(cmd, "--d: missing (particle diameter in m)");
     if (!have_vn) return sr_usage_error(cmd, "--vn: missing (normal approach speed in m/s)");
-    /* options this run would not use are refused, not dropped (issue 22, sweep) */
+    /* options this run would not use are refused, not dropped */
     if (have_stride && !csv && !vtk)
         return sr_usage_error(cmd, "--stride: only with --trace-csv or --trace-vtk (no trace is written)");
     if (csv && vtk && strcmp(csv, vtk) == 0) {

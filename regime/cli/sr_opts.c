@@ -73,8 +73,8 @@ int sr_settings_apply(const sr_settings *s, swr_params *p, char *err, size_t err
         return -1;
     }
     /* a rough-wall key set (from --set or --config) while the wall stays flat is
-     * refused, not ignored (hostile sweep, issue 22: 'asperity_r=2e-6' on the flat
-     * wall gave the flat answer without a word). Detected as a value that differs
+     * refused, not ignored ('asperity_r=2e-6' on the flat wall would give the
+     * flat answer without a word). Detected as a value that differs
      * from the default: a key set to its default changes nothing either way. */
     /* likewise the work of adhesion without adhesion */
     if (p->adhesion == SWR_ADHESION_NONE) {

@@ -178,7 +178,7 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
     if (!m || !in)
         return bad_input(r, "model or impact", NAN, NULL);
     /* each NaN is refused before it is compared: an ordered comparison of a NaN
-     * raises FE_INVALID, which OpenFOAM traps (issue 22) */
+     * raises FE_INVALID, which OpenFOAM traps */
     if (isnan(in->d) || !(in->d >= SWR_D_MIN && in->d <= SWR_D_MAX))
         return bad_input(r, "d", in->d, "1e-07 .. 0.1 m");
     if (isnan(in->vn) || !(in->vn > 0.0 && in->vn <= SWR_V_MAX))
@@ -211,10 +211,7 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
     const int plastic = p->cor == SWR_COR_THORNTON_NING;
     r->e_target = swr_damping_target(p, m->Estar, R, mass, in->vn);
     const int damp_both = p->dashpot == SWR_DASHPOT_BOTH;
-    const double alpha = plastic ? 0.0
-                       : damp_both ? swr_damping_alpha_both(r->e_target)
-                       : p->cor == SWR_COR_CONSTANT ? m->alpha_const
-                                                    : swr_damping_alpha(r->e_target);
+    const double alpha = plastic ? 0.0 : swr_damping_alpha_for(p, m->alpha_const, r->e_target);
     if (!plastic && r->e_target < (damp_both ? swr_damping_e_min_both() : m->e_min))
         append_msg(r, "plastic COR below the dashpot table: damping capped");
     if (m->adhesive) {
@@ -381,23 +378,16 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
             x = swr_normal_x(&nrm, delta, x);
             fne = swr_normal_force(&nrm, x);
         }
-        /* closing kick. The dashpot acts while loading; its impulse over the
-         * step is exact: int c(delta) u dt = Phi(delta1) - Phi(delta0),
-         * Phi = (4/5) alpha kd delta^(5/4), which also removes the error of
-         * its delta^(1/4) singularity at first contact. The opening kick
-         * took h/2 F_d(old); the rest of the exact impulse is applied here. */
+        /* closing kick. The dashpot acts while loading, with its exact
+         * impulse over the step (swr_damping.h: the opening kick took
+         * h/2 F_d(old), the rest is applied here). */
         u = uh - h2 * fne;
-        const double phi = delta > 0.0 ? pk * delta * sqrt(sqrt(delta)) : 0.0;
+        const double phi = swr_dashpot_potential(pk, delta);
         fd = 0.0;
         if ((uh > 0.0 || (damp_both && (delta > 0.0 || d_old > 0.0))) && alpha > 0.0) {
-            const double imp = phi - phi_old - h2 * fd_old;
-            const double ue = u;
-            u -= imp;
-            if (ue > 0.0 ? u < 0.0 : (ue < 0.0 && u > 0.0))
-                u = 0.0; /* the dashpot stops the motion, it never reverses it */
-            wd += (phi - phi_old) * 0.5 * (u_old + (ue > 0.0 ? fmax(u, 0.0) : fmin(u, 0.0)));
+            u = swr_dashpot_step(u, phi - phi_old, h2 * fd_old, u_old, &wd);
             if ((u > 0.0 || damp_both) && delta > 0.0)
-                fd = alpha * kd * sqrt(sqrt(delta)) * u;
+                fd = swr_dashpot_force(alpha, kd, delta, u);
         } else if (fd_old != 0.0) {
             u += h2 * fd_old; /* loading ended: undo the opening kick's dashpot part */
         }
@@ -407,12 +397,11 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
             const double a = x * x;
             /* Coulomb limit on the whole contact load: the dashpot stands for
              * the plastic contact pressure while loading */
-            ft = swr_tangential_update(&tan, h * (vth + Rs * wh), 8.0 * Gs * a,
-                                       mu * fabs(fn + 2.0 * act->Fc));
-            if (m->adhesive) {
-                const double ra = a / act->a0;
-                mr = swr_rolling_update(&rol, -h * Rs * wh, 4.0 * act->Fc * ra * sqrt(ra), xic);
-            }
+            ft = swr_tangential_update(&tan, h * (vth + Rs * wh), swr_tangential_stiffness(Gs, a),
+                                       swr_tangential_limit(mu, fn, act->Fc));
+            if (m->adhesive)
+                mr = swr_rolling_update(&rol, -h * Rs * wh, swr_rolling_stiffness(act->Fc, a, act->a0),
+                                        xic);
             vt = vth + h2 * ft;
             w = wh + h2 * (Rs * ft + mr) / Is;
         }

@@ -14,9 +14,12 @@
  * functions (regime/physics): normal contact (swr_normal.c: Hertz, JKR with
  * hysteresis; swr_plastic.c: Thornton & Ning's adhesive elastic-plastic
  * contact, cor thornton-ning), damping (swr_damping.c: COR modes), tangential sliding
- * (swr_tangential.c), rolling resistance (swr_rolling.c), wall geometry
- * (swr_wall.c: flat, or a rough lattice of asperities), time integration
- * (swr_collide.c; on a rough wall the 3-D multi-contact swr_rough.c).
+ * (swr_tangential.h, one law for the flat wall and the rough wall's 3-D
+ * contacts; swr_tangential.c: the arrest of sliding and rolling), rolling
+ * resistance (swr_rolling.h, likewise), the history springs they share
+ * (swr_spring.h), wall geometry (swr_wall.c: flat, or a rough lattice of
+ * asperities), time integration (swr_collide.c; on a rough wall the 3-D
+ * multi-contact swr_rough.c with its contact detection swr_rough_contacts.c).
  */
 #ifndef SWR_COLLIDE_H
 #define SWR_COLLIDE_H

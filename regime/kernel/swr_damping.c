@@ -305,3 +305,10 @@ double swr_damping_target(const swr_params *p, double Estar, double R, double m,
     }
     return 1.0;
 }
+
+double swr_damping_alpha_for(const swr_params *p, double alpha_const, double e)
+{
+    return p->dashpot == SWR_DASHPOT_BOTH ? swr_damping_alpha_both(e)
+         : p->cor == SWR_COR_CONSTANT ? alpha_const
+                                      : swr_damping_alpha(e);
+}

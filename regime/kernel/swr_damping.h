@@ -28,7 +28,42 @@
 #ifndef SWR_DAMPING_H
 #define SWR_DAMPING_H
 
+#include <math.h>
+
 #include "swr_params.h"
+
+/* The dashpot over one step of velocity Verlet, for the flat and the rough
+ * wall's integrators alike. Its impulse over a step is exact:
+ *     int c(delta) u dt = Phi(delta1) - Phi(delta0),  Phi = pk delta^(5/4),
+ * pk = (4/5) alpha kd, kd = sqrt(2 E* sqrt(R*)) (units of the particle mass),
+ * which also removes the error of the delta^(1/4) singularity of c at first
+ * contact. The opening half kick applies h/2 F_d of the last step; the rest
+ * of the exact impulse is applied after the closing kick. */
+static inline double swr_dashpot_potential(double pk, double delta)
+{
+    return delta > 0.0 ? pk * delta * sqrt(sqrt(delta)) : 0.0;
+}
+
+/* The approach speed after the rest of the step's dashpot impulse: ue the
+ * approach speed after the closing kick, dphi = Phi(delta1) - Phi(delta0),
+ * kick_old = h/2 F_d(old) (the part the opening kick applied). The dashpot
+ * stops the motion, it never reverses it. Its work over the step, with u0
+ * the approach speed at the step's start, is added to *w. */
+static inline double swr_dashpot_step(double ue, double dphi, double kick_old, double u0, double *w)
+{
+    double u = ue - (dphi - kick_old);
+    if (ue > 0.0 ? u < 0.0 : (ue < 0.0 && u > 0.0))
+        u = 0.0;
+    *w += dphi * 0.5 * (u0 + (ue > 0.0 ? fmax(u, 0.0) : fmin(u, 0.0)));
+    return u;
+}
+
+/* The dashpot force alpha kd delta^(1/4) u at overlap delta and approach
+ * speed u (the next opening kick's). */
+static inline double swr_dashpot_force(double alpha, double kd, double delta, double u)
+{
+    return alpha * kd * sqrt(sqrt(delta)) * u;
+}
 
 /* COR of the dimensionless Hertz impact with this dashpot (accurate ODE solve). */
 double swr_damping_cor(double alpha);
@@ -50,6 +85,11 @@ double swr_damping_e_min(void);
 double swr_damping_cor_both(double alpha);
 double swr_damping_alpha_both(double e);
 double swr_damping_e_min_both(void);
+/* The dashpot's alpha for the COR e per the settings p: dashpot both
+ * swr_damping_alpha_both(e); cor constant alpha_const (the model's, root-found
+ * once); else the table swr_damping_alpha(e). Used by the flat and the rough
+ * wall's integrators alike. */
+double swr_damping_alpha_for(const swr_params *p, double alpha_const, double e);
 /* alpha for e by a GSL Brent root finder on swr_damping_cor (about 1 ms). */
 double swr_damping_alpha_exact(double e);
 /* Build the table now (idempotent, thread-safe); 0 or -1 on failure. */

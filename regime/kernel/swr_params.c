@@ -151,7 +151,7 @@ static double value_of(const swr_params *p, const num_key *k)
 }
 
 /* v in [lo, hi], false for NaN without comparing it: an ordered comparison of a
- * NaN raises FE_INVALID, which OpenFOAM and the tests trap (issue 22). */
+ * NaN raises FE_INVALID, which OpenFOAM and the tests trap. */
 static int in_range(double v, double lo, double hi)
 {
     return !isnan(v) && v >= lo && v <= hi;
@@ -322,7 +322,7 @@ int swr_params_load(swr_params *p, const char *path, char *err, size_t errlen)
     char line[1024], key[64], val[256], msg[320];
     int lineno = 0, rc = 0;
     /* the keys set so far and their lines: a key given twice in one file is an
-     * error (the later one silently won; hostile sweep, issue 22) */
+     * error, naming both lines (a later value must not silently win) */
     struct { char key[64]; int line; } seen[64];
     int nseen = 0;
     while (fgets(line, sizeof line, f)) {
@@ -415,15 +415,15 @@ int swr_params_validate(const swr_params *p, char *err, size_t errlen)
         return -1;
     /* Overlapping asperities (spacing below 2 r) put ever more asperities
      * under one contact patch as the spacing shrinks, and the contact search of
-     * one impact grows as (R/s)^2 without bound (issue 22: hours for one
-     * impact); the lattice is defined for asperities that at most touch. */
+     * one impact grows as (R/s)^2 without bound (hours for one impact); the
+     * lattice is defined for asperities that at most touch. */
     if (p->wall == SWR_WALL_KIND_LATTICE && p->asperity_spacing < 2.0 * p->asperity_r)
         return fail(err, errlen, "asperity_spacing: %g m is below 2 asperity_r = %g m: the "
                     "asperities would overlap (accepted on a lattice: 2 asperity_r <= "
                     "asperity_spacing <= %g m)", p->asperity_spacing, 2.0 * p->asperity_r,
                     ASPERITY_SPACING_MAX);
-    /* Settings the chosen law or wall does not use are refused, not ignored
-     * (issue 22: accepted without a word, they changed nothing). */
+    /* Settings the chosen law or wall does not use are refused, not ignored:
+     * accepted, they would change nothing without a word. */
     if (p->dashpot_given && (p->cor == SWR_COR_ELASTIC || p->cor == SWR_COR_THORNTON_NING))
         return fail(err, errlen, "dashpot: %s is not used by cor %s, which has no dashpot "
                     "(it acts with cor thornton, thornton-asymptote or a constant COR)",

@@ -95,8 +95,8 @@ typedef struct {
                             as stuck (swr_rough.c)                     30       */
     swr_rough_step rough_step; /* `rough_step` adaptive | fixed: the step follows the
                             contacts held (adaptive) or is the reference contact's
-                            step over sqrt(contacts) (fixed, the integrator before
-                            issue 24; kept to measure against)        adaptive */
+                            step over sqrt(contacts) (fixed, the former
+                            integrator's; kept to measure against)    adaptive */
     /* numerics */
     double accuracy;   /* `accuracy` steps per Hertz contact time (the one accuracy knob) 60 */
 } swr_params;

@@ -22,6 +22,15 @@
  * asperities). It bounces when no contact holds it, it moves away from the
  * base plane and its lowest point clears the highest asperity top.
  *
+ * swr_collide_rough runs in phases: rough_setup (units, contact laws, step,
+ * start), rough_fly (free flight to the next touch), rough_step (one step in
+ * contact: opening kick, drift, update_contacts with each contact's normal,
+ * tangential and rolling laws, closing kick, dashpots, new contacts, energy
+ * balance) and rough_outcome. The tangential and rolling laws are the flat
+ * wall's (swr_tangential.h, swr_rolling.h) on 3-D springs. Contact detection
+ * (the free flight, the search for new contacts, the opening of a contact)
+ * is in swr_rough_contacts.c, the shared state in swr_rough.h.
+ *
  * Numerics: velocity Verlet in units of the particle mass, the reference
  * speed max(vn, v_adh) and the flat-wall Hertz contact time at that speed (the
  * stiffest single contact); step 1/accuracy, divided by sqrt(n) while n
@@ -34,405 +43,19 @@
  * then (skidding over the asperities with E_esc > 0) counts as a stick, with
  * status SWR_STEP_BOUND.
  */
-#include <limits.h>
 #include <stddef.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "swp_contact.h"
-#include "swp_cor.h"
 #include "swp_jkr.h"
 #include "swp_time.h"
 #include "swr_damping.h"
-#include "swr_internal.h"
-#include "swr_normal.h"
-#include "swr_wall.h"
-
-/* contacts held at once (a 100 um sphere pressed into 1 um asperities holds a few tens) */
-#define RC_MAX 256
-/* marks the base plane in a contact's index */
-#define PLANE_ID INT_MIN
-/* free_flight: no event within the part of the path it scanned; fly on */
-#define FLY_ON (INT_MIN + 1)
-
-typedef struct {
-    int i, j;             /* asperity index, or i = PLANE_ID */
-    double a[3];          /* asperity centre (scaled) */
-    const swr_normal *nm; /* normal law of this contact */
-    double kd;            /* dashpot stiffness factor sqrt(2 E* sqrt(R*)) */
-    double alpha;         /* dashpot alpha from this contact's approach speed */
-    double x;             /* sqrt of the contact radius */
-    double delta, phi;    /* overlap and dashpot potential at the last step */
-    double dnew;          /* overlap after this step's drift */
-    double fd;            /* dashpot force at the end of the last step */
-    double fne;           /* elastic normal force */
-    double n[3];          /* unit normal (wall into sphere) */
-    double xi[3];         /* tangential spring displacement */
-    double xr[3];         /* rolling displacement */
-    double ft[3];         /* tangential force */
-    double mr[3];         /* rolling moment */
-    double kr;            /* rolling stiffness at the last step (0 before it) */
-} rc_contact;
-
-/* an asperity on the neighbour list */
-typedef struct {
-    int i, j;
-    double a[3];          /* centre (scaled) */
-    double due;           /* check it again once s->built reaches this */
-} rc_near;
-/* longest neighbour list kept (a 100 um sphere on 1 um asperities lists about 150) */
-#define RC_NEAR_MAX 1024
-
-typedef struct {
-    const swr_model *m;
-    const swr_wall *w;
-    double R, r, L;         /* particle radius, asperity radius (scaled), length unit [m] */
-    double invL;            /* 1 / L */
-    double zc;              /* asperity centre height (scaled; swr_wall.h) */
-    double reach_a;         /* R + r: centre distance at first touch of an asperity */
-    swr_normal na, npl;     /* asperity and plane normal laws */
-    double kda, kdp;        /* dashpot factors */
-    double Is, invIs;       /* moment of inertia, its inverse */
-    double invR;            /* 1 / R */
-    double Gs, mu, xic;     /* scaled G*, friction, critical rolling displacement */
-    double V, mass;         /* speed unit [m/s], particle mass [kg] */
-    double w2_ref;          /* squared frequency of the reference contact (step_size) */
-    int both;               /* dashpot both: the dashpots act while unloading too */
-    double margin;          /* extra search distance of new_contacts */
-    double guard;           /* no new contact before the sphere has moved this far */
-    double moved;           /* distance moved since the last search */
-    double built;           /* distance moved since the neighbour list was made */
-    int nnear;              /* asperities on the neighbour list */
-    int nc;                 /* contacts held: c[0 .. nc-1] */
-    rc_contact c[RC_MAX];   /* not cleared at the start (open_contact sets one) */
-    rc_near near[RC_NEAR_MAX]; /* the neighbour list of new_contacts */
-} rc_state;
-
-static double dot(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static void cross(const double a[3], const double b[3], double o[3])
-{
-    o[0] = a[1] * b[2] - a[2] * b[1];
-    o[1] = a[2] * b[0] - a[0] * b[2];
-    o[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-/* Asperity centre in scaled units. */
-static void asp(const rc_state *s, int i, int j, double a[3])
-{
-    swr_wall_asperity(s->w, i, j, a);
-    a[0] *= s->invL;
-    a[1] *= s->invL;
-    a[2] *= s->invL;
-}
-
-/* Overlap and normal of the contact with the asperity centred at a (NULL:
- * the base plane) for the sphere at C. */
-static double geometry(const rc_state *s, const double *a, const double C[3], double n[3])
-{
-    if (!a) {
-        n[0] = n[1] = 0.0;
-        n[2] = 1.0;
-        return s->R - C[2];
-    }
-    const double d[3] = { C[0] - a[0], C[1] - a[1], C[2] - a[2] };
-    const double D = sqrt(dot(d, d));
-    if (D > 0.0) {
-        const double inv = 1.0 / D;
-        n[0] = d[0] * inv;
-        n[1] = d[1] * inv;
-        n[2] = d[2] * inv;
-    } else {
-        n[0] = n[1] = 0.0;
-        n[2] = 1.0;
-    }
-    return s->reach_a - D;
-}
-
-/* Horizontal distance from a sphere centre at height z (above the plane of
- * the asperity centres, s->zc) within which an asperity centre (at or below
- * that plane) lies within `reach` of it; < 0: none. */
-static double side_reach(double reach, double z)
-{
-    const double r2 = reach * reach - (z > 0.0 ? z * z : 0.0);
-    return r2 > 0.0 ? sqrt(r2) : -1.0;
-}
-
-static int find(const rc_state *s, int i, int j)
-{
-    for (int k = 0; k < s->nc; k++)
-        if (s->c[k].i == i && s->c[k].j == j)
-            return k;
-    return -1;
-}
-
-/* Plastic COR of one contact: Thornton's e_p with the yield velocity of a
- * sphere of this R* and the particle's mass (the flat wall's V_y at R* = R),
- * per asperity_yield: an asperity contact (R* < R) takes the contact's
- * (contact), the flat wall's (particle) or none (elastic, e = 1). */
-static double contact_target(const rc_state *s, double Rc_si, double vi_si)
-{
-    const swr_params *p = &s->m->p;
-    const int asperity = Rc_si < s->R * s->L;
-    if (asperity && p->asperity_yield == SWR_YIELD_ELASTIC)
-        return 1.0;
-    if (p->asperity_yield == SWR_YIELD_CONTACT
-        && (p->cor == SWR_COR_THORNTON || p->cor == SWR_COR_THORNTON_ASYMPTOTE)
-        && p->cor_pair == SWR_PAIR_WALL && asperity) {
-        const double vy = swp_yield_velocity_pp(swp_limiting_pressure(p->sigma_y), s->m->Estar,
-                                                Rc_si, s->mass);
-        return p->cor == SWR_COR_THORNTON ? swp_cor_thornton(vy / vi_si)
-                                          : swp_cor_thornton_pp_asymptote(vy / vi_si);
-    }
-    return swr_damping_target(p, s->m->Estar, s->R * s->L, s->mass, vi_si);
-}
-
-/* Open a contact at its first touch (delta >= 0): JKR jumps in to a_jump. */
-static int open_contact(rc_state *s, int i, int j, const double *a, const double v[3],
-                        double delta, const double n[3])
-{
-    if (s->nc >= RC_MAX)
-        return -1;
-    rc_contact *c = &s->c[s->nc++];
-    memset(c, 0, sizeof *c);
-    c->i = i;
-    c->j = j;
-    if (a)
-        memcpy(c->a, a, sizeof c->a);
-    c->nm = i == PLANE_ID ? &s->npl : &s->na;
-    c->kd = i == PLANE_ID ? s->kdp : s->kda;
-    memcpy(c->n, n, sizeof c->n);
-    c->delta = delta;
-    c->x = delta > 0.0 ? swr_normal_x(c->nm, delta, 0.0) : c->nm->xj;
-    if (c->nm->gamma > 0.0 && c->x < c->nm->xj)
-        c->x = c->nm->xj;
-    const double un = -dot(v, n) * s->V; /* approach speed [m/s] */
-    const swr_params *p = &s->m->p;
-    if (un > 0.0 && p->cor != SWR_COR_ELASTIC) {
-        const double e = contact_target(s, c->nm->R * s->L, un);
-        c->alpha = e >= 1.0 ? 0.0 /* elastic (asperity_yield elastic) */
-                 : p->dashpot == SWR_DASHPOT_BOTH ? swr_damping_alpha_both(e)
-                 : p->cor == SWR_COR_CONSTANT ? s->m->alpha_const : swr_damping_alpha(e);
-    }
-    c->phi = delta > 0.0 ? 0.8 * c->alpha * c->kd * delta * sqrt(sqrt(delta)) : 0.0;
-    return 0;
-}
-
-/* Elastic energy of a contact relative to its jump-in, and what it takes to
- * break it (U_c - U). */
-static double contact_energy(const rc_contact *c)
-{
-    return swr_normal_energy(c->nm, c->x);
-}
-
-/* Closed-form free flight from C with velocity v: the time to the first touch
- * of an asperity or the base plane (*hit_i, *hit_j), or to the exit from the
- * asperity layer (returns the time with *hit_i = INT_MAX). It scans the path in
- * chunks of one spacing of horizontal travel, at most SWR_ROUGH_FLIGHT_CELLS of
- * them: with nothing met there it returns the time to the end of the scan with
- * *hit_i = FLY_ON (the caller flies on and asks again). INFINITY when moving
- * parallel to the wall inside the layer without meeting anything. */
-#define SWR_ROUGH_FLIGHT_CELLS 4096
-static double free_flight(const rc_state *s, const double C[3], const double v[3], int *hit_i,
-                          int *hit_j)
-{
-    const double top = swr_wall_top(s->w) / s->L;
-    const double zc = C[2];
-    double t_exit = INFINITY, t_plane = INFINITY;
-    if (v[2] > 0.0)
-        t_exit = (top + s->R - zc) / v[2];
-    else if (v[2] < 0.0)
-        t_plane = (zc - s->R) / -v[2];
-    if (t_exit < 0.0)
-        t_exit = 0.0;
-    if (t_plane < 0.0)
-        t_plane = 0.0;
-    double t_end = t_exit < t_plane ? t_exit : t_plane;
-    *hit_i = v[2] > 0.0 ? INT_MAX : PLANE_ID;
-    *hit_j = 0;
-    const double vh = hypot(v[0], v[1]);
-    const double sp = s->w->s / s->L;
-    /* chunks of one spacing of horizontal travel */
-    const double tchunk = vh > 0.0 ? sp / vh : t_end;
-    double best = t_end;
-    double t0 = 0.0;
-    for (long k = 0; k < SWR_ROUGH_FLIGHT_CELLS; k++) {
-        if (!(t0 < best))
-            break;
-        double t1 = t0 + tchunk;
-        if (!(t1 < best))
-            t1 = best;
-        if (!isfinite(t1))
-            t1 = t0 + (isfinite(tchunk) ? tchunk : 0.0);
-        /* lowest centre height over the chunk sets how far sideways it reaches */
-        const double rh = side_reach(s->reach_a, fmin(zc + v[2] * t0, zc + v[2] * t1) - s->zc);
-        if (rh > 0.0) {
-            const double xa = C[0] + v[0] * t0, xb = C[0] + v[0] * t1;
-            const double ya = C[1] + v[1] * t0, yb = C[1] + v[1] * t1;
-            const double xlo = fmin(xa, xb) - rh, xhi = fmax(xa, xb) + rh;
-            const double ylo = fmin(ya, yb) - rh, yhi = fmax(ya, yb) + rh;
-            int j0, j1;
-            swr_wall_rows(s->w, ylo * s->L, yhi * s->L, &j0, &j1);
-            for (int j = j0; j <= j1; j++) {
-                int i0, i1;
-                swr_wall_row_range(s->w, j, xlo * s->L, xhi * s->L, &i0, &i1);
-                for (int i = i0; i <= i1; i++) {
-                    if (find(s, i, j) >= 0)
-                        continue;
-                    double a[3];
-                    asp(s, i, j, a);
-                    /* |C + v t - a| = reach: a t^2 + 2 b t + c = 0 */
-                    const double d[3] = { C[0] - a[0], C[1] - a[1], C[2] - a[2] };
-                    const double qa = dot(v, v), qb = dot(d, v);
-                    const double qc = dot(d, d) - s->reach_a * s->reach_a;
-                    if (qc <= 0.0) {
-                        /* already touching (e.g. at the start on a sunken lattice) */
-                        if (qb < 0.0 && 0.0 < best) {
-                            best = 0.0;
-                            *hit_i = i;
-                            *hit_j = j;
-                        }
-                        continue;
-                    }
-                    const double disc = qb * qb - qa * qc;
-                    if (!(qa > 0.0) || disc < 0.0 || qb >= 0.0)
-                        continue;
-                    const double t = qc / (-qb + sqrt(disc)); /* smaller root, stable form */
-                    if (t < best) {
-                        best = t;
-                        *hit_i = i;
-                        *hit_j = j;
-                    }
-                }
-            }
-        }
-        t0 = t1;
-    }
-    if (t0 < best) {
-        /* the scan ended before the event it found (or none): fly on */
-        if (!isfinite(t_end) && !isfinite(best))
-            return INFINITY;
-        *hit_i = FLY_ON;
-        return t0;
-    }
-    return best;
-}
-
-/* One asperity at the sphere centre C: open a contact when it touches
- * (delta >= 0) and is not one yet. Sets *gap to its gap, or -1 when it is a
- * contact (held or just opened: check it at every search, it may break; a
- * breaking contact sets s->guard = 0). -1 past RC_MAX. */
-static int check_asperity(rc_state *s, const rc_near *q, const double C[3], const double v[3],
-                          double *gap)
-{
-    *gap = -1.0;
-    if (find(s, q->i, q->j) >= 0)
-        return 0;
-    double n[3];
-    const double dl = geometry(s, q->a, C, n);
-    if (dl >= 0.0)
-        return open_contact(s, q->i, q->j, q->a, v, dl, n);
-    *gap = -dl;
-    return 0;
-}
-
-/* Collect every asperity that touches now (delta >= 0) and is not a contact
- * yet, and the plane; open them. The search also notes the smallest gap to
- * any other surface within s->margin: until the sphere has moved that far no
- * new contact can form, and the next searches are skipped (the caller
- * compares s->moved with s->guard).
- * A neighbour list (Verlet's) keeps the search short: a full scan of the
- * lattice under the sphere lists the asperities within a gap of 2 margin;
- * until the sphere has moved margin since (s->built), an asperity off the list
- * is still more than margin away, so only the listed ones are checked. The
- * caller sets s->built = INFINITY after a free flight (the list is rebuilt);
- * a list longer than RC_NEAR_MAX is not kept (full scans every time).
- * Returns -1 when RC_MAX is exceeded. */
-static int new_contacts(rc_state *s, const double C[3], const double v[3])
-{
-    double guard = s->margin;
-    if (s->built < s->margin) {
-        /* an asperity last seen at gap g cannot touch before the sphere has
-         * moved g: it is due again at built + g */
-        for (int k = 0; k < s->nnear; k++) {
-            rc_near *q = &s->near[k];
-            if (q->due <= s->built) {
-                double gap;
-                if (check_asperity(s, q, C, v, &gap) != 0)
-                    return -1;
-                q->due = s->built + gap; /* a contact: due at once */
-                if (gap < 0.0)
-                    continue;
-            }
-            if (q->due - s->built < guard)
-                guard = q->due - s->built;
-        }
-    } else {
-        const double far = s->reach_a + 2.0 * s->margin;
-        const double rh = side_reach(far, C[2] - s->zc);
-        int kept = 1;
-        s->nnear = 0;
-        if (rh > 0.0) {
-            int j0, j1;
-            swr_wall_rows(s->w, (C[1] - rh) * s->L, (C[1] + rh) * s->L, &j0, &j1);
-            for (int j = j0; j <= j1; j++) {
-                int i0, i1;
-                swr_wall_row_range(s->w, j, (C[0] - rh) * s->L, (C[0] + rh) * s->L, &i0, &i1);
-                for (int i = i0; i <= i1; i++) {
-                    rc_near q = { i, j, { 0.0, 0.0, 0.0 }, 0.0 };
-                    asp(s, i, j, q.a);
-                    const double d[3] = { C[0] - q.a[0], C[1] - q.a[1], C[2] - q.a[2] };
-                    if (dot(d, d) > far * far)
-                        continue;
-                    double gap;
-                    if (check_asperity(s, &q, C, v, &gap) != 0)
-                        return -1;
-                    q.due = gap; /* a contact: due at once */
-                    if (gap >= 0.0 && gap < guard)
-                        guard = gap;
-                    if (s->nnear < RC_NEAR_MAX)
-                        s->near[s->nnear++] = q;
-                    else
-                        kept = 0;
-                }
-            }
-        }
-        s->built = kept ? 0.0 : INFINITY;
-    }
-    if (find(s, PLANE_ID, 0) < 0) {
-        double n[3];
-        const double dl = geometry(s, NULL, C, n);
-        if (dl >= 0.0) {
-            if (open_contact(s, PLANE_ID, 0, NULL, v, dl, n) != 0)
-                return -1;
-        } else if (-dl < guard) {
-            guard = -dl;
-        }
-    }
-    s->guard = guard;
-    s->moved = 0.0;
-    return 0;
-}
-
-/* Rotate a spring vector into the tangent plane of n, keeping its length. */
-static void to_plane(double xi[3], const double n[3])
-{
-    const double l2 = dot(xi, xi);
-    if (!(l2 > 0.0))
-        return;
-    const double p = dot(xi, n);
-    for (int k = 0; k < 3; k++)
-        xi[k] -= p * n[k];
-    /* |xi - p n|^2 = l2 - p^2 (n a unit vector): one root instead of two */
-    const double q = l2 - p * p;
-    const double f = q > 1e-24 * l2 ? sqrt(l2 / q) : 0.0;
-    for (int k = 0; k < 3; k++)
-        xi[k] *= f;
-}
+#include "swr_rolling.h"
+#include "swr_rough.h"
+#include "swr_spring.h"
+#include "swr_tangential.h"
 
 static void add_msg(swr_result *r, const char *text)
 {
@@ -446,11 +69,11 @@ static void add_msg(swr_result *r, const char *text)
 static double spring_energy(const rc_state *s, const rc_contact *c)
 {
     const double a = c->x * c->x;
-    double e = 0.5 * 8.0 * s->Gs * a * dot(c->xi, c->xi);
+    double e = swr_spring_energy(swr_tangential_stiffness(s->Gs, a), swr_dot3(c->xi, c->xi));
     /* the rolling spring's k_r at this x (set by the step that set x; a
      * contact opened since has no rolling displacement yet) */
     if (c->nm->Fc > 0.0)
-        e += 0.5 * c->kr * dot(c->xr, c->xr) * s->invR;
+        e += swr_spring_energy(c->kr, swr_dot3(c->xr, c->xr)) * s->invR;
     return e;
 }
 
@@ -458,10 +81,10 @@ static double spring_energy(const rc_state *s, const rc_contact *c)
 static double state_energy(const rc_state *s, const double v[3], const double w[3],
                            double *esc)
 {
-    double e = 0.5 * dot(v, v) + 0.5 * s->Is * dot(w, w), below = 0.0;
+    double e = 0.5 * swr_dot3(v, v) + 0.5 * s->Is * swr_dot3(w, w), below = 0.0;
     for (int k = 0; k < s->nc; k++) {
         const rc_contact *c = &s->c[k];
-        e += contact_energy(c) + spring_energy(s, c);
+        e += rc_contact_energy(c) + spring_energy(s, c);
         below += c->nm->Uc;
     }
     *esc = e - below;
@@ -526,10 +149,10 @@ static double step_size(const rc_state *s, double hd, double he, double v0, cons
     double base = he;
     for (int k = 0; k < s->nc && base > hd; k++) {
         const rc_contact *c = &s->c[k];
-        if (c->alpha > 0.0 && (s->both || dot(v, c->n) < 0.0))
+        if (c->alpha > 0.0 && (s->both || swr_dot3(v, c->n) < 0.0))
             base = hd;
     }
-    const double u = sqrt(dot(v, v));
+    const double u = sqrt(swr_dot3(v, v));
     double h = SWR_ROUGH_STRETCH * base;
     if (u * h > hd * v0)
         h = hd * v0 / u;
@@ -549,21 +172,38 @@ static double step_size(const rc_state *s, double hd, double he, double v0, cons
     return h;
 }
 
-swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_result *r,
-                             const swr_trace *trace)
+/* ---- the integration, in phases: set-up, free flight, one step (kicks,
+ * drift, contact laws, dashpots, new contacts, energy balance), outcome ---- */
+
+/* The sphere's motion (scaled) and the integration's bookkeeping. */
+typedef struct {
+    double C[3], v[3], w[3]; /* centre, velocity, spin */
+    double v0;               /* start speed */
+    double t, t_in;          /* time, time in contact */
+    double t_first;          /* first touch (-1 before) */
+    double h0, he, h_min;    /* step with and without the damping's factor, the smallest */
+    double E0, eref;         /* start energy, energy scale of the balance */
+    double esc;              /* the escape energy E_esc of the last balance */
+    double w_diss;           /* dashpot, sliding, rolling work and the energy left at breaking */
+    double err, dmax;        /* largest energy-balance error, largest overlap */
+    long n, flights, contacts;
+    int overflow;            /* more than RC_MAX contacts at once */
+} rc_run;
+
+/* How a phase ends the loop (RC_GO: step on). */
+enum { RC_GO, RC_BOUNCE, RC_STICK, RC_STOP, RC_FLY_ON };
+
+/* Set-up: the units (particle mass, the reference speed max(vn, v_adh), the
+ * flat-wall Hertz contact time at it), the contact laws in them, the
+ * reference contact of the step, the COR, the step and its bounds, and the
+ * start: lowest point on the plane of the highest tops, centre above (x, y). */
+static void rough_setup(const swr_model *m, const swr_impact *in, rc_state *s, rc_run *u,
+                        swr_result *r)
 {
     const swr_params *p = &m->p;
-    if (in->d > SWR_ROUGH_D_OVER_R_MAX * m->wall.r) {
-        r->status = SWR_EINVAL;
-        snprintf(r->msg, sizeof r->msg,
-                 "d = %g m is more than %g asperity radii (asperity_r = %g m): too many contacts "
-                 "at once for the rough wall; use the flat wall", in->d, SWR_ROUGH_D_OVER_R_MAX,
-                 m->wall.r);
-        return SWR_EINVAL;
-    }
-    rc_state st, *s = &st;
     /* everything but the contact array (64 kB, set contact by contact) */
     memset(s, 0, offsetof(rc_state, c));
+    memset(u, 0, sizeof *u);
     s->built = INFINITY; /* no neighbour list yet */
     s->m = m;
     s->w = &m->wall;
@@ -579,6 +219,7 @@ swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_resul
     const double L = V * T;
     const double sE = L * T * T / mass;
     s->V = V;
+    s->T = T;
     s->L = L;
     s->invL = 1.0 / L;
     s->zc = m->wall.zc / L;
@@ -610,7 +251,7 @@ swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_resul
         }
     }
 
-    r->e_target = contact_target(s, Ra_si, in->vn);
+    r->e_target = swr_rough_contact_target(s, Ra_si, in->vn);
     if (m->adhesive) {
         const double lam = swp_tabor(gam, m->Estar, Ra_si, p->z0);
         if (!(lam > SWP_TABOR_JKR_MIN)) {
@@ -624,310 +265,350 @@ swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_resul
     /* step: 1/accuracy of the contact time, shortened by the damping's
      * loading-time factor at the impact's own COR, as on the flat wall */
     const double alpha0 = p->cor == SWR_COR_ELASTIC ? 0.0
-                        : p->dashpot == SWR_DASHPOT_BOTH ? swr_damping_alpha_both(r->e_target)
-                        : p->cor == SWR_COR_CONSTANT ? m->alpha_const
-                                                     : swr_damping_alpha(r->e_target);
-    const double h0 = swr_damping_time_factor(alpha0) / p->accuracy;
-    const double he = 1.0 / p->accuracy; /* the step without damping */
+                                                    : swr_damping_alpha_for(p, m->alpha_const, r->e_target);
+    u->h0 = swr_damping_time_factor(alpha0) / p->accuracy;
+    u->he = 1.0 / p->accuracy; /* the step without damping */
     s->both = p->dashpot == SWR_DASHPOT_BOTH;
-    double h_min = h0;
+    u->h_min = u->h0;
     /* steps: the time bound at the step of 16 contacts at once (h0/4); more
      * contacts than that reach this bound first */
-    r->max_steps = (long)ceil(p->rough_hold * 4.0 / h0) + 16;
-    double t_in = 0.0;     /* time in contact */
+    r->max_steps = (long)ceil(p->rough_hold * 4.0 / u->h0) + 16;
 
-    /* --- start: lowest point on the plane of the highest tops, centre above (x, y) --- */
-    double C[3] = { in->x / L, in->y / L, (swr_wall_top(s->w) + R_si) / L };
-    double v[3] = { in->vt / V, 0.0, -in->vn / V };
+    u->C[0] = in->x / L;
+    u->C[1] = in->y / L;
+    u->C[2] = (swr_wall_top(s->w) + R_si) / L;
+    u->v[0] = in->vt / V;
+    u->v[2] = -in->vn / V;
     /* spin about the axis that makes the contact point slide along +x */
-    double w[3] = { 0.0, -in->omega * T, 0.0 };
-    const double v0 = sqrt(dot(v, v));
-    double esc;
-    const double E0 = state_energy(s, v, w, &esc);
-    double eref = E0;
-    double w_diss = 0.0;   /* dashpot, sliding, rolling work and the energy left at breaking */
-    double err = 0.0, dmax = 0.0, t = 0.0, t_first = -1.0;
-    long n = 0, flights = 0, contacts = 0;
-    enum { OPEN, BOUNCE, STICK } outcome = OPEN;
-    const int stride = trace && trace->fn && trace->stride > 0 ? trace->stride : 0;
-    int overflow = 0;
+    u->w[1] = -in->omega * T;
+    u->v0 = sqrt(swr_dot3(u->v, u->v));
+    u->E0 = state_energy(s, u->v, u->w, &u->esc);
+    u->eref = u->E0;
+    u->t_first = -1.0;
+}
 
-    while (outcome == OPEN) {
-        if (s->nc == 0) {
-            /* --- free flight to the next touch or out of the layer --- */
-            if (++flights > SWR_ROUGH_FLIGHTS_MAX)
-                break;
-            int hi, hj;
-            const double tf = free_flight(s, C, v, &hi, &hj);
-            if (!isfinite(tf)) {
-                outcome = BOUNCE;
-                add_msg(r, "left parallel to the wall inside the asperity layer");
-                break;
-            }
-            for (int q = 0; q < 3; q++)
-                C[q] += v[q] * tf;
-            t += tf;
-            s->built = INFINITY; /* the neighbour list is stale after a flight */
-            if (hi == INT_MAX) {
-                outcome = BOUNCE;
-                break;
-            }
-            if (hi == FLY_ON)
-                continue;
-            double nn[3], ah[3];
-            if (hi != PLANE_ID)
-                asp(s, hi, hj, ah);
-            const double *ap = hi == PLANE_ID ? NULL : ah;
-            const double dl = geometry(s, ap, C, nn);
-            if (open_contact(s, hi, hj, ap, v, dl > 0.0 ? dl : 0.0, nn) != 0
-                || new_contacts(s, C, v) != 0) {
-                overflow = 1;
-                break;
-            }
-            contacts += s->nc;
-            if (t_first < 0.0)
-                t_first = t;
-            for (int k = 0; k < s->nc; k++)
-                if (s->c[k].nm->Uc > eref)
-                    eref = s->c[k].nm->Uc;
-            for (int k = 0; k < s->nc; k++)
-                s->c[k].fne = swr_normal_force(s->c[k].nm, s->c[k].x);
-            state_energy(s, v, w, &esc);
-            if (esc < 0.0) {
-                outcome = STICK;
-                break;
-            }
-        }
-        if (t_in >= p->rough_hold || n >= r->max_steps)
-            break;
-        const double h = p->rough_step == SWR_ROUGH_STEP_FIXED ? h0 / sqrt((double)s->nc)
-                                                               : step_size(s, h0, he, v0, v, t_in);
-        const double h2 = 0.5 * h;
-        if (h < h_min)
-            h_min = h;
-        /* --- opening half kick with the forces of the last step --- */
-        double F[3] = { 0.0, 0.0, 0.0 }, M[3] = { 0.0, 0.0, 0.0 };
-        for (int k = 0; k < s->nc; k++) {
-            const rc_contact *c = &s->c[k];
-            const double fn = c->fne + c->fd;
-            const double arm[3] = { -s->R * c->n[0], -s->R * c->n[1], -s->R * c->n[2] };
-            double tq[3];
-            cross(arm, c->ft, tq);
-            for (int q = 0; q < 3; q++) {
-                F[q] += fn * c->n[q] + c->ft[q];
-                M[q] += tq[q] + c->mr[q];
-            }
-        }
-        double vh[3], wh[3];
-        for (int q = 0; q < 3; q++) {
-            vh[q] = v[q] + h2 * F[q];
-            wh[q] = w[q] + h2 * M[q] * s->invIs;
-        }
-        /* --- drift --- */
-        for (int q = 0; q < 3; q++)
-            C[q] += h * vh[q];
-        t += h;
-        t_in += h;
-        n++;
-        /* --- contacts at the new position: breaking, then the laws; the
-         * closing kick's forces are summed as each contact's are known --- */
-        int kk = 0;
-        double u_start[RC_MAX];
-        for (int q = 0; q < 3; q++) {
-            F[q] = 0.0;
-            M[q] = 0.0;
-        }
-        for (int k = 0; k < s->nc; k++) {
-            rc_contact *c = &s->c[k];
-            double nn[3];
-            const double dl = geometry(s, c->i == PLANE_ID ? NULL : c->a, C, nn);
-            const int broken = c->nm->gamma > 0.0 ? dl < c->nm->delta_c : dl <= 0.0;
-            if (broken) {
-                /* the contact's stored energy (U_c for JKR) and its springs are lost */
-                w_diss += contact_energy(c) + spring_energy(s, c);
-                s->guard = 0.0; /* it may touch again: search from the next step */
-                if (c->fd != 0.0) /* undo the opening kick's dashpot part */
-                    for (int q = 0; q < 3; q++)
-                        vh[q] -= h2 * c->fd * c->n[q];
-                continue;
-            }
-            u_start[kk] = -dot(v, nn);  /* approach speed at the step's start */
-            if (kk != k)
-                s->c[kk] = *c;
-            c = &s->c[kk++];
-            memcpy(c->n, nn, sizeof c->n);
-            c->dnew = dl;
-            to_plane(c->xi, nn);
-            to_plane(c->xr, nn);
-            c->x = swr_normal_x(c->nm, dl, c->x);
-            c->fne = swr_normal_force(c->nm, c->x);
-            /* tangential spring: slip of the contact point at mid-step */
-            const double arm[3] = { -s->R * nn[0], -s->R * nn[1], -s->R * nn[2] };
-            double vc[3];
-            cross(wh, arm, vc);
-            for (int q = 0; q < 3; q++)
-                vc[q] += vh[q];
-            const double vcn = dot(vc, nn);
-            const double a = c->x * c->x;
-            const double kt = 8.0 * s->Gs * a;
-            double dxi[3]; /* this step's slip increment */
-            for (int q = 0; q < 3; q++) {
-                dxi[q] = h * (vc[q] - vcn * nn[q]);
-                c->xi[q] += dxi[q];
-            }
-            const double flim = s->mu * fabs(c->fne + c->fd + 2.0 * c->nm->Fc);
-            const double x2 = dot(c->xi, c->xi);
-            if (kt * kt * x2 > flim * flim) {
-                /* Coulomb: the trial spring xi is cut to the limit f xi. The
-                 * sliding work, as the step's forces do it (their mean over the
-                 * increment, as the kicks apply them), is the trial spring's
-                 * energy above the cut one less (1/2) kt (1 - f) dxi . xi: the
-                 * trial force at the step's end never acted (issue 24: booked,
-                 * it made energy_err first order in the step) */
-                const double f = flim / (kt * sqrt(x2));
-                w_diss += 0.5 * kt * (x2 * (1.0 - f * f) - (1.0 - f) * dot(dxi, c->xi));
-                for (int q = 0; q < 3; q++)
-                    c->xi[q] *= f;
-            }
-            for (int q = 0; q < 3; q++)
-                c->ft[q] = -kt * c->xi[q];
-            /* rolling resistance (adhesive contacts): v_r = R (w x n) */
-            if (c->nm->Fc > 0.0) {
-                double vr[3], dxr[3];
-                cross(wh, nn, vr);
-                const double vrn = dot(vr, nn);
-                for (int q = 0; q < 3; q++) {
-                    dxr[q] = h * s->R * (vr[q] - vrn * nn[q]);
-                    c->xr[q] += dxr[q];
-                }
-                const double ra = a / c->nm->a0;
-                const double kr = 4.0 * c->nm->Fc * ra * sqrt(ra);
-                c->kr = kr;
-                const double r2 = dot(c->xr, c->xr);
-                if (r2 > s->xic * s->xic) {
-                    /* the rolling limit: booked as the sliding one above */
-                    const double f = s->xic / sqrt(r2);
-                    w_diss += 0.5 * kr * (r2 * (1.0 - f * f) - (1.0 - f) * dot(dxr, c->xr)) * s->invR;
-                    for (int q = 0; q < 3; q++)
-                        c->xr[q] *= f;
-                }
-                double nx[3];
-                cross(nn, c->xr, nx);
-                for (int q = 0; q < 3; q++)
-                    c->mr[q] = -kr * nx[q];
-            }
-            if (dl > dmax)
-                dmax = dl;
-            double tq[3];
-            cross(arm, c->ft, tq);
-            for (int q = 0; q < 3; q++) {
-                F[q] += c->fne * c->n[q] + c->ft[q];
-                M[q] += tq[q] + c->mr[q];
-            }
-        }
-        s->nc = kk;
-        /* --- closing half kick with the new elastic and tangential forces --- */
-        for (int q = 0; q < 3; q++) {
-            v[q] = vh[q] + h2 * F[q];
-            w[q] = wh[q] + h2 * M[q] * s->invIs;
-        }
-        /* --- dashpots: each contact's impulse over the step is exact,
-         * int c(delta) u dt = Phi(delta1) - Phi(delta0), Phi = (4/5) alpha kd
-         * delta^(5/4); the opening kick took h/2 F_d(old), the rest is here --- */
-        double wd_step = 0.0;
-        for (int k = 0; k < s->nc; k++) {
-            rc_contact *c = &s->c[k];
-            const double dl = c->dnew;
-            const double phi = dl > 0.0 ? 0.8 * c->alpha * c->kd * dl * sqrt(sqrt(dl)) : 0.0;
-            const double uh = -dot(vh, c->n);   /* approach speed at mid-step */
-            const double fd_old = c->fd;
-            c->fd = 0.0;
-            if (c->alpha > 0.0
-                && (uh > 0.0 || (p->dashpot == SWR_DASHPOT_BOTH && (dl > 0.0 || c->delta > 0.0)))) {
-                const double ue = -dot(v, c->n);
-                const double imp = phi - c->phi - h2 * fd_old;
-                double u = ue - imp;
-                if (ue > 0.0 ? u < 0.0 : (ue < 0.0 && u > 0.0))
-                    u = 0.0; /* the dashpot stops the motion, it never reverses it */
-                for (int q = 0; q < 3; q++)
-                    v[q] += (ue - u) * c->n[q];
-                wd_step += (phi - c->phi) * 0.5 * (u_start[k] + (ue > 0.0 ? fmax(u, 0.0) : fmin(u, 0.0)));
-                if ((u > 0.0 || p->dashpot == SWR_DASHPOT_BOTH) && dl > 0.0)
-                    c->fd = c->alpha * c->kd * sqrt(sqrt(dl)) * u;
-            } else if (fd_old != 0.0) {
-                /* loading ended: undo the opening kick's dashpot part */
-                for (int q = 0; q < 3; q++)
-                    v[q] -= h2 * fd_old * c->n[q];
-            }
-            c->phi = phi;
-            c->delta = dl;
-        }
-        w_diss += wd_step;
-        /* --- contacts that form now (searched once the sphere may have
-         * closed the smallest gap seen at the last search) --- */
-        const int before = s->nc;
-        const double step_len = h * sqrt(dot(vh, vh));
-        s->moved += step_len;
-        s->built += step_len;
-        if (s->moved >= s->guard && new_contacts(s, C, v) != 0) {
-            overflow = 1;
-            break;
-        }
-        for (int k = before; k < s->nc; k++)
-            s->c[k].fne = swr_normal_force(s->c[k].nm, s->c[k].x);
-        contacts += s->nc - before;
-        /* --- energy balance and the decision --- */
-        const double e = state_energy(s, v, w, &esc);
-        const double ke = 0.5 * dot(v, v) + 0.5 * s->Is * dot(w, w);
-        if (ke > eref)
-            eref = ke;
-        for (int k = before; k < s->nc; k++)
-            if (s->c[k].nm->Uc > eref)
-                eref = s->c[k].nm->Uc;
-        const double e_err = fabs(e + w_diss - E0) / eref;
-        if (e_err > err)
-            err = e_err;
-        if (stride && n % stride == 0) {
-            double fz = 0.0, amax = 0.0, dm = 0.0;
-            for (int k = 0; k < s->nc; k++) {
-                fz += (s->c[k].fne + s->c[k].fd) * s->c[k].n[2] + s->c[k].ft[2];
-                amax = fmax(amax, s->c[k].x * s->c[k].x);
-                dm = fmax(dm, s->c[k].delta);
-            }
-            trace->fn(trace->ctx, t * T, dm * L, -v[2] * V, fz * mass * L / (T * T), amax * L,
-                      v[0] * V, -w[1] / T);
-        }
-        if (s->nc > 0 && esc < 0.0)
-            outcome = STICK;
+/* Free flight (no contact held) to the next touch or out of the layer; at a
+ * touch the contacts there are opened. RC_GO: in contact, step on; RC_FLY_ON:
+ * nothing met in the part of the path scanned, fly on; else the loop ends. */
+static int rough_fly(rc_state *s, rc_run *u, swr_result *r)
+{
+    if (++u->flights > SWR_ROUGH_FLIGHTS_MAX)
+        return RC_STOP;
+    int hi, hj;
+    const double tf = swr_rough_free_flight(s, u->C, u->v, &hi, &hj);
+    if (!isfinite(tf)) {
+        add_msg(r, "left parallel to the wall inside the asperity layer");
+        return RC_BOUNCE;
     }
+    for (int q = 0; q < 3; q++)
+        u->C[q] += u->v[q] * tf;
+    u->t += tf;
+    s->built = INFINITY; /* the neighbour list is stale after a flight */
+    if (hi == INT_MAX)
+        return RC_BOUNCE;
+    if (hi == FLY_ON)
+        return RC_FLY_ON;
+    double nn[3], ah[3];
+    if (hi != PLANE_ID)
+        rc_asp(s, hi, hj, ah);
+    const double *ap = hi == PLANE_ID ? NULL : ah;
+    const double dl = rc_geometry(s, ap, u->C, nn);
+    if (swr_rough_open_contact(s, hi, hj, ap, u->v, dl > 0.0 ? dl : 0.0, nn) != 0
+        || swr_rough_new_contacts(s, u->C, u->v) != 0) {
+        u->overflow = 1;
+        return RC_STOP;
+    }
+    u->contacts += s->nc;
+    if (u->t_first < 0.0)
+        u->t_first = u->t;
+    for (int k = 0; k < s->nc; k++)
+        if (s->c[k].nm->Uc > u->eref)
+            u->eref = s->c[k].nm->Uc;
+    for (int k = 0; k < s->nc; k++)
+        s->c[k].fne = swr_normal_force(s->c[k].nm, s->c[k].x);
+    state_energy(s, u->v, u->w, &u->esc);
+    return u->esc < 0.0 ? RC_STICK : RC_GO;
+}
 
+/* Adds contact c's force (normal force fn along its normal, its tangential
+ * force) and moment (of the tangential force about the centre, the rolling
+ * moment) to F and M. */
+static void add_contact_force(const rc_state *s, const rc_contact *c, double fn, double F[3],
+                              double M[3])
+{
+    const double arm[3] = { -s->R * c->n[0], -s->R * c->n[1], -s->R * c->n[2] };
+    double tq[3];
+    swr_cross3(arm, c->ft, tq);
+    for (int q = 0; q < 3; q++) {
+        F[q] += fn * c->n[q] + c->ft[q];
+        M[q] += tq[q] + c->mr[q];
+    }
+}
+
+/* The tangential and rolling laws of contact c (normal c->n, contact radius
+ * c->x^2) over a step h at the mid-step velocity vh and spin wh: the
+ * sub-models of swr_tangential.h and swr_rolling.h on the contact's 3-D
+ * springs. Their work is added to *w_diss. */
+static void contact_tangential(const rc_state *s, rc_contact *c, const double vh[3],
+                               const double wh[3], double h, double *w_diss)
+{
+    const double *nn = c->n;
+    /* tangential spring: slip of the contact point at mid-step */
+    const double arm[3] = { -s->R * nn[0], -s->R * nn[1], -s->R * nn[2] };
+    double vc[3];
+    swr_cross3(wh, arm, vc);
+    for (int q = 0; q < 3; q++)
+        vc[q] += vh[q];
+    const double vcn = swr_dot3(vc, nn);
+    const double a = c->x * c->x;
+    double dxi[3]; /* this step's slip increment */
+    for (int q = 0; q < 3; q++)
+        dxi[q] = h * (vc[q] - vcn * nn[q]);
+    *w_diss += swr_tangential_update3(c->xi, dxi, swr_tangential_stiffness(s->Gs, a),
+                                      swr_tangential_limit(s->mu, c->fne + c->fd, c->nm->Fc),
+                                      c->ft);
+    /* rolling resistance (adhesive contacts): v_r = R (w x n) */
+    if (c->nm->Fc > 0.0) {
+        double vr[3], dxr[3];
+        swr_cross3(wh, nn, vr);
+        const double vrn = swr_dot3(vr, nn);
+        for (int q = 0; q < 3; q++)
+            dxr[q] = h * s->R * (vr[q] - vrn * nn[q]);
+        c->kr = swr_rolling_stiffness(c->nm->Fc, a, c->nm->a0);
+        *w_diss += swr_rolling_update3(c->xr, dxr, c->kr, s->xic, nn, c->mr) * s->invR;
+    }
+}
+
+/* The contacts at the sphere's new centre C: each breaks (its stored energy
+ * and springs lost, the opening kick's dashpot part undone in vh) or takes its
+ * new geometry, normal force and tangential and rolling laws; the forces and
+ * moments of the closing kick (elastic normal, tangential, rolling) are summed
+ * into F, M as each contact's are known. u_start gets each kept contact's
+ * approach speed at the step's start (v). */
+static void update_contacts(rc_state *s, rc_run *u, double h, double vh[3], const double wh[3],
+                            double F[3], double M[3], double *u_start)
+{
+    const double h2 = 0.5 * h;
+    int kk = 0;
+    for (int q = 0; q < 3; q++) {
+        F[q] = 0.0;
+        M[q] = 0.0;
+    }
+    for (int k = 0; k < s->nc; k++) {
+        rc_contact *c = &s->c[k];
+        double nn[3];
+        const double dl = rc_geometry(s, c->i == PLANE_ID ? NULL : c->a, u->C, nn);
+        const int broken = c->nm->gamma > 0.0 ? dl < c->nm->delta_c : dl <= 0.0;
+        if (broken) {
+            /* the contact's stored energy (U_c for JKR) and its springs are lost */
+            u->w_diss += rc_contact_energy(c) + spring_energy(s, c);
+            s->guard = 0.0; /* it may touch again: search from the next step */
+            if (c->fd != 0.0) /* undo the opening kick's dashpot part */
+                for (int q = 0; q < 3; q++)
+                    vh[q] -= h2 * c->fd * c->n[q];
+            continue;
+        }
+        u_start[kk] = -swr_dot3(u->v, nn);  /* approach speed at the step's start */
+        if (kk != k)
+            s->c[kk] = *c;
+        c = &s->c[kk++];
+        memcpy(c->n, nn, sizeof c->n);
+        c->dnew = dl;
+        swr_spring_to_plane(c->xi, nn);
+        swr_spring_to_plane(c->xr, nn);
+        c->x = swr_normal_x(c->nm, dl, c->x);
+        c->fne = swr_normal_force(c->nm, c->x);
+        contact_tangential(s, c, vh, wh, h, &u->w_diss);
+        if (dl > u->dmax)
+            u->dmax = dl;
+        add_contact_force(s, c, c->fne, F, M);
+    }
+    s->nc = kk;
+}
+
+/* The dashpots over the step, each contact's impulse exact (swr_damping.h:
+ * the opening kick took h/2 F_d(old), the rest is applied to the velocity v
+ * here; vh: the mid-step velocity, u_start: each contact's approach speed at
+ * the step's start). Their work is added to w_diss. */
+static void dashpots(rc_state *s, rc_run *u, double h, const double vh[3], const double *u_start)
+{
+    const double h2 = 0.5 * h;
+    const int both = s->m->p.dashpot == SWR_DASHPOT_BOTH;
+    double *v = u->v;
+    double wd_step = 0.0;
+    for (int k = 0; k < s->nc; k++) {
+        rc_contact *c = &s->c[k];
+        const double dl = c->dnew;
+        const double phi = swr_dashpot_potential(0.8 * c->alpha * c->kd, dl);
+        const double uh = -swr_dot3(vh, c->n);   /* approach speed at mid-step */
+        const double fd_old = c->fd;
+        c->fd = 0.0;
+        if (c->alpha > 0.0 && (uh > 0.0 || (both && (dl > 0.0 || c->delta > 0.0)))) {
+            const double ue = -swr_dot3(v, c->n);
+            const double un = swr_dashpot_step(ue, phi - c->phi, h2 * fd_old, u_start[k], &wd_step);
+            for (int q = 0; q < 3; q++)
+                v[q] += (ue - un) * c->n[q];
+            if ((un > 0.0 || both) && dl > 0.0)
+                c->fd = swr_dashpot_force(c->alpha, c->kd, dl, un);
+        } else if (fd_old != 0.0) {
+            /* loading ended: undo the opening kick's dashpot part */
+            for (int q = 0; q < 3; q++)
+                v[q] -= h2 * fd_old * c->n[q];
+        }
+        c->phi = phi;
+        c->delta = dl;
+    }
+    u->w_diss += wd_step;
+}
+
+/* One step of velocity Verlet in contact: the step size, the opening half
+ * kick with the last step's forces, the drift, the contacts at the new
+ * position with their laws, the closing half kick, the dashpots, the contacts
+ * that form, and the energy balance. RC_GO, RC_STICK (E_esc < 0 while held)
+ * or RC_STOP (too many contacts). */
+static int rough_step(rc_state *s, rc_run *u, const swr_params *p, const swr_trace *trace,
+                      int stride)
+{
+    double *C = u->C, *v = u->v, *w = u->w;
+    const double h = p->rough_step == SWR_ROUGH_STEP_FIXED
+                         ? u->h0 / sqrt((double)s->nc)
+                         : step_size(s, u->h0, u->he, u->v0, v, u->t_in);
+    const double h2 = 0.5 * h;
+    if (h < u->h_min)
+        u->h_min = h;
+    /* --- opening half kick with the forces of the last step --- */
+    double F[3] = { 0.0, 0.0, 0.0 }, M[3] = { 0.0, 0.0, 0.0 };
+    for (int k = 0; k < s->nc; k++)
+        add_contact_force(s, &s->c[k], s->c[k].fne + s->c[k].fd, F, M);
+    double vh[3], wh[3];
+    for (int q = 0; q < 3; q++) {
+        vh[q] = v[q] + h2 * F[q];
+        wh[q] = w[q] + h2 * M[q] * s->invIs;
+    }
+    /* --- drift --- */
+    for (int q = 0; q < 3; q++)
+        C[q] += h * vh[q];
+    u->t += h;
+    u->t_in += h;
+    u->n++;
+    /* --- contacts at the new position: breaking, then the laws --- */
+    double u_start[RC_MAX];
+    update_contacts(s, u, h, vh, wh, F, M, u_start);
+    /* --- closing half kick with the new elastic and tangential forces --- */
+    for (int q = 0; q < 3; q++) {
+        v[q] = vh[q] + h2 * F[q];
+        w[q] = wh[q] + h2 * M[q] * s->invIs;
+    }
+    dashpots(s, u, h, vh, u_start);
+    /* --- contacts that form now (searched once the sphere may have
+     * closed the smallest gap seen at the last search) --- */
+    const int before = s->nc;
+    const double step_len = h * sqrt(swr_dot3(vh, vh));
+    s->moved += step_len;
+    s->built += step_len;
+    if (s->moved >= s->guard && swr_rough_new_contacts(s, C, v) != 0) {
+        u->overflow = 1;
+        return RC_STOP;
+    }
+    for (int k = before; k < s->nc; k++)
+        s->c[k].fne = swr_normal_force(s->c[k].nm, s->c[k].x);
+    u->contacts += s->nc - before;
+    /* --- energy balance and the decision --- */
+    const double e = state_energy(s, v, w, &u->esc);
+    const double ke = 0.5 * swr_dot3(v, v) + 0.5 * s->Is * swr_dot3(w, w);
+    if (ke > u->eref)
+        u->eref = ke;
+    for (int k = before; k < s->nc; k++)
+        if (s->c[k].nm->Uc > u->eref)
+            u->eref = s->c[k].nm->Uc;
+    const double e_err = fabs(e + u->w_diss - u->E0) / u->eref;
+    if (e_err > u->err)
+        u->err = e_err;
+    if (stride && u->n % stride == 0) {
+        double fz = 0.0, amax = 0.0, dm = 0.0;
+        for (int k = 0; k < s->nc; k++) {
+            fz += (s->c[k].fne + s->c[k].fd) * s->c[k].n[2] + s->c[k].ft[2];
+            amax = fmax(amax, s->c[k].x * s->c[k].x);
+            dm = fmax(dm, s->c[k].delta);
+        }
+        const double T = s->T, L = s->L, V = s->V;
+        trace->fn(trace->ctx, u->t * T, dm * L, -v[2] * V, fz * s->mass * L / (T * T), amax * L,
+                  v[0] * V, -w[1] / T);
+    }
+    return s->nc > 0 && u->esc < 0.0 ? RC_STICK : RC_GO;
+}
+
+/* The outcome into r: the status and its message, the rebound (SI units, the
+ * impact's frame), the contact time, overlap and energy-balance error. */
+static void rough_outcome(const rc_state *s, const rc_run *u, const swr_impact *in, int outcome,
+                          swr_result *r)
+{
+    const double T = s->T, L = s->L, V = s->V;
     r->status = SWR_OK;
-    if (overflow) {
+    if (u->overflow) {
         r->status = SWR_STEP_BOUND;
         add_msg(r, "more than 256 asperity contacts at once: outcome is the best estimate");
-    } else if (outcome == OPEN) {
+    } else if (outcome == RC_GO) {
         r->status = SWR_STEP_BOUND;
-        add_msg(r, outcome == OPEN && s->nc > 0
+        add_msg(r, s->nc > 0
                        ? "time bound (rough_hold contact times in contact) reached: still held, counted as stick"
                        : "bound on free flights reached: outcome is the best estimate");
     }
-    if (outcome == OPEN)
-        outcome = s->nc > 0 ? STICK : BOUNCE;
-    r->steps = n;
-    r->dt = h_min * T;
-    r->contacts = contacts;
-    r->contact_kept = r->stick = outcome == STICK;
-    r->e_n = outcome == BOUNCE ? fmax(v[2], 0.0) * V / in->vn : 0.0;
-    if (in->vt > 0.0 && outcome == BOUNCE)
-        r->e_t = v[0] * V / in->vt;
-    if (outcome == BOUNCE)
+    if (outcome == RC_GO)
+        outcome = s->nc > 0 ? RC_STICK : RC_BOUNCE;
+    r->steps = u->n;
+    r->dt = u->h_min * T;
+    r->contacts = u->contacts;
+    r->contact_kept = r->stick = outcome == RC_STICK;
+    r->e_n = outcome == RC_BOUNCE ? fmax(u->v[2], 0.0) * V / in->vn : 0.0;
+    if (in->vt > 0.0 && outcome == RC_BOUNCE)
+        r->e_t = u->v[0] * V / in->vt;
+    if (outcome == RC_BOUNCE)
         for (int q = 0; q < 3; q++) {
-            r->v_out[q] = v[q] * V;
-            r->w_out[q] = w[q] / T;
+            r->v_out[q] = u->v[q] * V;
+            r->w_out[q] = u->w[q] / T;
         }
-    r->t_contact = t_first >= 0.0 ? (t - t_first) * T : 0.0;
-    r->delta_max = dmax * L;
-    r->energy_err = err;
+    r->t_contact = u->t_first >= 0.0 ? (u->t - u->t_first) * T : 0.0;
+    r->delta_max = u->dmax * L;
+    r->energy_err = u->err;
     r->t_rest = r->s_rest = 0.0;
+}
+
+swr_status swr_collide_rough(const swr_model *m, const swr_impact *in, swr_result *r,
+                             const swr_trace *trace)
+{
+    const swr_params *p = &m->p;
+    if (in->d > SWR_ROUGH_D_OVER_R_MAX * m->wall.r) {
+        r->status = SWR_EINVAL;
+        snprintf(r->msg, sizeof r->msg,
+                 "d = %g m is more than %g asperity radii (asperity_r = %g m): too many contacts "
+                 "at once for the rough wall; use the flat wall", in->d, SWR_ROUGH_D_OVER_R_MAX,
+                 m->wall.r);
+        return SWR_EINVAL;
+    }
+    rc_state st, *s = &st;
+    rc_run u;
+    rough_setup(m, in, s, &u, r);
+    const int stride = trace && trace->fn && trace->stride > 0 ? trace->stride : 0;
+    int outcome = RC_GO;   /* RC_GO: still open */
+    while (outcome == RC_GO) {
+        if (s->nc == 0) {
+            const int ev = rough_fly(s, &u, r);
+            if (ev == RC_FLY_ON)
+                continue;
+            if (ev != RC_GO) {
+                if (ev != RC_STOP)
+                    outcome = ev;
+                break;
+            }
+        }
+        if (u.t_in >= p->rough_hold || u.n >= r->max_steps)
+            break;
+        const int ev = rough_step(s, &u, p, trace, stride);
+        if (ev == RC_STOP)
+            break;
+        outcome = ev;
+    }
+    rough_outcome(s, &u, in, outcome, r);
     return r->status;
 }

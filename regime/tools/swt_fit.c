@@ -43,7 +43,7 @@ static int fit_degree(const swt_interface *it, int deg, swt_fit *f, char *err, s
      * with lambda < 0 and gsl_multifit_linear_solve with lambda 0), without its
      * covariance matrix: unused here, it divides by n - rank, 0/0 for an exact
      * fit (as many points as coefficients), a NaN that the floating-point traps
-     * of the tests and of OpenFOAM catch (issue 22) */
+     * of the tests and of OpenFOAM catch */
     double rnorm = 0.0, snorm = 0.0;
     int st = gsl_multifit_linear_bsvd(X, w);
     if (st == GSL_SUCCESS)
@@ -80,7 +80,7 @@ done:
 /* log-log slope of the (up to) 4 points at one end: the least-squares slope
  * with gsl_fit_linear's running means, so the same number, but without its
  * parameter variances, which divide by count - 2: 0/0 for two points, a NaN
- * that the floating-point traps catch (issue 22) */
+ * that the floating-point traps catch */
 static double end_slope(const swt_interface *it, int from, int count)
 {
     double x[4], y[4];

@@ -62,7 +62,7 @@ void swt_coeffs_write_prob(FILE *fp, const swt_fit *f, const swr_params *p, doub
                            double dmax, const char *label, const swt_prob *pr,
                            const swt_rebound *rb);
 /* Everything: the oblique table (ob), a rough wall's probability table (rough)
- * and the kernel's rebound tables (rb, issue 23), each NULL when absent. */
+ * and the kernel's rebound tables (rb), each NULL when absent. */
 void swt_coeffs_write_all(FILE *fp, const swt_fit *f, const swr_params *p, double dmin,
                           double dmax, const char *label, const swt_oblique *ob,
                           const swt_map *rough, const swt_rebound *rb);

@@ -1,6 +1,6 @@
 /* swt_oblique.h - the stick/bounce interface over normal AND tangential speed:
  * d_crit(v_n, v_t) on a table of nodes, for the wall model's `regime`
- * tangential gate (doc/regime-coeffs.md, issue 11).
+ * tangential gate (doc/regime-coeffs.md).
  *
  * At each node (v_n, v_t) the largest diameter that "sticks" is found by the
  * same scan + bisection as swt_vcrit, run along ln d instead of ln v (small

@@ -1,5 +1,5 @@
-/* swt_progress.h - what a long run tells its user before and while it works
- * (issue 24): an estimate of its time before it starts and a progress line.
+/* swt_progress.h - what a long run tells its user before and while it works:
+ * an estimate of its time before it starts and a progress line.
  *
  * Lifecycle: swt_pilot_cost (seconds per impact, measured on a few impacts
  * of the run's own grid), then swt_progress_alloc with the run's work in

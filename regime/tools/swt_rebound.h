@@ -1,5 +1,5 @@
 /* swt_rebound.h - the kernel's rebound of bouncing impacts as tables for
- * regime.coeffs (issue 23; format: doc/regime-coeffs.md, "Rebound tables").
+ * regime.coeffs (format: doc/regime-coeffs.md, "Rebound tables").
  *
  * e_n(d, v_n), and with a --vt list e_n and e_t over (v_t, d, v_n), taken
  * from the grid points of the maps (swt_map: e_n, e_t, kept). Where the kernel

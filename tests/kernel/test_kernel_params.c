@@ -205,7 +205,7 @@ static void model_alloc(void **s)
     swr_model_free(m);
 }
 
-/* Tiny impact speeds (issue 13, item 3): the scaled units stay finite for
+/* Tiny impact speeds: the scaled units stay finite for
  * every accepted v_n. With adhesion an impact slower than the elastic sticking
  * speed sticks (it used to bounce below 1e-85 m/s); without adhesion it
  * rebounds with the COR and the Hertz contact time; below SWR_V_MIN the kernel

@@ -1,4 +1,4 @@
-/* test_kernel_rough.c - the rough wall (wall lattice, issue 9) against closed
+/* test_kernel_rough.c - the rough wall (wall lattice) against closed
  * forms and its own limits: one asperity hit head-on is a sphere-sphere impact
  * with R* = R r/(R + r) (elastic JKR sticking velocity V_s within 0.5 %), a
  * huge asperity is the flat wall (v_crit within 0.5 %), the lattice geometry
@@ -36,7 +36,7 @@ static void one_asperity_vs(void **state)
         char kr[64], ks[64];
         snprintf(kr, sizeof kr, "asperity_r=%g", radii[a]);
         snprintf(ks, sizeof ks, "asperity_spacing=%g", 3.0 * radii[a]);
-        /* cor elastic everywhere; and asperity_yield elastic (issue 24): the
+        /* cor elastic everywhere; and asperity_yield elastic: the
          * default plastic law on the particle, elastic asperity contacts, and
          * on whole spheres (asperity_shape sphere: the same top) */
         const char *kv[] = { "wall=lattice", kr, ks, "cor=elastic", NULL };
@@ -296,8 +296,9 @@ static void rough_params(void **state)
     assert_non_null(strstr(err, "integer"));
     assert_int_equal(swr_params_set_kv(&p, "rough_hold=nan", err, sizeof err), -1);
     assert_int_equal(swr_params_set_kv(&p, "wall=lattice", err, sizeof err), 0);
-    /* overlapping asperities (issue 22: one impact ran for hours): spacing below
-     * 2 r is refused on a lattice, naming both; touching (s = 2 r) is accepted;
+    /* overlapping asperities (the contact search of one impact grows without
+     * bound, hours for one impact): spacing below 2 r is refused on a lattice,
+     * naming both; touching (s = 2 r) is accepted;
      * on a flat wall the asperity keys are not used */
     assert_int_equal(swr_params_set_kv(&p, "asperity_spacing=1.5e-6", err, sizeof err), 0);
     assert_int_equal(swr_params_validate(&p, err, sizeof err), -1);
@@ -359,7 +360,7 @@ static void rough_params(void **state)
     assert_non_null(strstr(err, "rough_step: 'fast'"));
 }
 
-/* The adaptive step (issue 24) against the fixed one it replaced (rough_step
+/* The adaptive step against the fixed one it replaced (rough_step
  * fixed): over a grid of diameters and speeds around the interface of the
  * default lattice, at the same impact points, the stick counts differ by at
  * most 2 of 32 in any cell (the binomial sigma at p = 0.5 is 2.8 points) and in

@@ -1,7 +1,7 @@
-/* test_kernel_validation.c - the regime kernel against the numbers of issue 3
- * (Validation) and doc/kernel.md: Hertz contact time, recovered COR, JKR
- * contact law, elastic sticking velocity, plastic COR, the Thornton-Ning
- * contact law (issue 10), the extreme grid, oblique impacts, thread safety. */
+/* test_kernel_validation.c - the regime kernel against its validation numbers
+ * (doc/kernel.md): Hertz contact time, recovered COR, JKR contact law,
+ * elastic sticking velocity, plastic COR, the Thornton-Ning contact law, the
+ * extreme grid, oblique impacts, thread safety. */
 #include <math.h>
 #include <pthread.h>
 #include <stdlib.h>

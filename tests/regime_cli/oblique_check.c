@@ -1,6 +1,6 @@
 /* oblique_check.c - the wall model's d_crit(v_n, v_t) (sww_dcrit_oblique, from
  * a regime.coeffs written by `snowregime map --vt 0,...`) against the kernel
- * at random off-grid (v_n, v_t) points (issue 11).
+ * at random off-grid (v_n, v_t) points.
  *
  * usage: oblique_check FILE N SEED [KEY=VALUE]...
  *   the kernel runs with the embedded defaults plus the KEY=VALUE settings

@@ -1,6 +1,6 @@
 /* rebound_check.c - the wall model's rebound of a bounce (sww_rebound, from the
  * rebound tables of a regime.coeffs written by `snowregime map`) against the
- * kernel at random off-grid points (issue 23).
+ * kernel at random off-grid points.
  *
  * usage: rebound_check FILE N SEED [KEY=VALUE]...
  *   the kernel runs with the embedded defaults plus the KEY=VALUE settings (they

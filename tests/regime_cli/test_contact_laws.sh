@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# validation/contact-laws.sh: the contact laws side by side (doc/kernel.md,
-# issue 10) through the tool: outputs, the physics relations between the laws
+# validation/contact-laws.sh: the contact laws side by side (doc/kernel.md)
+# through the tool: outputs, the physics relations between the laws
 # and the error paths (nothing left behind).
 . "$(dirname "$0")/common.sh"
 CL=$SW_TOP/validation/contact-laws.sh

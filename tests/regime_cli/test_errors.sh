@@ -34,7 +34,7 @@ check "--vmin: 'inf'" "$SR" map --vmin inf
 check "--vmax" "$SR" map --vmin 2 --vmax 1
 check "--angle: '95'" "$SR" map --angle 95
 check "unknown option '--frob'" "$SR" map --frob
-# an unsorted or repeated --vt / --angle list (issue 22: found after the maps, exit 1)
+# an unsorted or repeated --vt / --angle list: refused (a repeat) or sorted with a note before any map
 check "--vt: '0,0.5,0.5,1' gives the value 0.5 twice (items 2 '0.5' and 3 '0.5'): give each value once" "$SR" map --vt 0,0.5,0.5,1
 check "--angle: '30,0,30' gives the value 30 twice" "$SR" map --angle 30,0,30
 # a list out of order: taken in ascending order (one map per value, the table's
@@ -42,11 +42,11 @@ check "--angle: '30,0,30' gives the value 30 twice" "$SR" map --angle 30,0,30
 "$SR" map --out "$WORK/vtsort" --vt 0.5,0 --nd 6 --nv 6 --no-plot >/dev/null 2>"$WORK/err" || fail "map --vt 0.5,0: $(cat "$WORK/err")"
 [ "$(cat "$WORK/err")" = "snowregime map: note: --vt: '0.5,0' taken in ascending order" ] || fail "map --vt 0.5,0: stderr $(cat "$WORK/err")"
 grep -q "^ *obliqueVt *(0 0.5);" "$WORK/vtsort/regime.coeffs" && [ -s "$WORK/vtsort/map-vt0.5.csv" ] || fail "map --vt 0.5,0: no combined table"
-# overlapping asperities (issue 22: one impact ran for hours): refused before any work
+# overlapping asperities (hours for one impact): refused before any work
 check "asperity_spacing: 1.5e-06 m is below 2 asperity_r = 2e-06 m: the asperities would overlap" \
     "$SR" map --set wall=lattice --set asperity_spacing=1.5e-6
 # settings and options the wall or the law does not use are refused, not ignored
-# (issue 22, item 3), before any work: nothing written
+# before any work: nothing written
 check "--points: only for a rough wall (--set wall=lattice); this wall is flat" \
     "$SR" map --out "$WORK/flatpts" --points 128 --nd 6 --nv 6 --no-plot
 [ ! -e "$WORK/flatpts" ] || fail "map --points on a flat wall left $WORK/flatpts"
@@ -58,17 +58,17 @@ check "dashpot: loading is not used by cor thornton-ning" \
     "$SR" sensitivity --set dashpot=loading --set cor=thornton-ning
 check "asperity_dz: 1e-06 m is not below the asperity's height 1e-06 m (asperity_shape hemisphere, asperity_r 1e-06 m): asperities sunk that deep are level with the base plane or below it" \
     "$SR" map --set wall=lattice --set asperity_dz=1e-6
-# rough-wall settings on a flat wall (hostile sweep, issue 22: the flat answer without a word)
+# rough-wall settings on a flat wall: refused, not the flat answer without a word
 check "settings: asperity_r: 2e-06 is not used on a flat wall (wall flat); set wall=lattice" \
     "$SR" map --set asperity_r=2e-6
 check "settings: lattice: hex is not used on a flat wall" "$SR" map --set lattice=hex
 check "settings: gamma: 0.5 is not used with adhesion none" "$SR" map --set adhesion=none --set gamma=0.5
 printf 'rough_hold 50\n' >"$WORK/hold.cfg"
 check "settings: rough_hold: 50 is not used on a flat wall" "$SR" sensitivity --config "$WORK/hold.cfg"
-# a key given twice in one config file (hostile sweep, issue 22: the later one won silently)
+# a key given twice in one config file: an error naming both lines (no silent winner)
 printf 'gamma 0.3\n# comment\ngamma = 0.4\n' >"$WORK/twice.cfg"
 check "twice.cfg:3: key 'gamma' is given twice (first at line 1)" "$SR" map --config "$WORK/twice.cfg"
-# messages that named the wrong thing (issue 22, item 4)
+# each message names the thing that is wrong
 printf 'gamma 0.3\0\n' >"$WORK/nul.cfg"
 check "--config: $WORK/nul.cfg:1: the line holds a NUL byte" "$SR" map --config "$WORK/nul.cfg"
 check "--set: gamma: '0x1' is not a finite decimal number" "$SR" map --set gamma=0x1
@@ -130,7 +130,7 @@ done
 [ -L "$WORK/tlink" ] && [ "$(cat "$WORK/ttarget")" = keep ] || fail "--trace-csv onto a link replaced it"
 [ -z "$tdev" ] || [ -c "$tdev" ] || fail "--trace-csv onto a device node replaced it"
 [ -z "$(ls -A "$WORK/tracedir")" ] && [ -z "$(ls -A "$WORK" | grep '^\.tmp-')" ] || fail "--trace-csv onto a folder left files"
-# --version with more words: refused, not dropped (hostile sweep, issue 22)
+# --version with more words: refused, not dropped
 "$SR" --version map >/dev/null 2>"$WORK/err"; rc=$?
 [ $rc -eq 2 ] && grep -qF -- "--version takes no arguments, got 'map'" "$WORK/err" || fail "--version map: exit $rc, $(cat "$WORK/err")"
 # --out naming an existing file
@@ -188,18 +188,18 @@ mkdir -p "$WORK/keep" && echo old >"$WORK/keep/fit.txt"
 [ $rc -eq 1 ] || fail "no-interface map: exit $rc, want 1 ($(cat "$WORK/err"))"
 [ ! -e "$WORK/none" ] || fail "no-interface map left $WORK/none behind"
 ok "error checks done"
-# the slowest accepted impacts get the physical answer (issue 13, item 3): stick with adhesion
+# the slowest accepted impacts get the physical answer: stick with adhesion
 for v in 1e-60 1e-90 1e-300; do
     "$SR" collide --d 50e-6 --vn $v | grep -q '^outcome: stick' || fail "collide --vn $v: not a stick"
 done
 "$SR" collide --d 5e-5 --vn 1e-60 --set adhesion=none | grep -q '^e_n: 1$' || fail "collide --vn 1e-60, Hertz: not an elastic rebound"
-# binary data as a config: a named error with no raw bytes on stderr (issue 13, item 6)
+# binary data as a config: a named error with no raw bytes on stderr
 head -c 400 /dev/urandom | tr -d '\n#' | head -c 300 >"$WORK/garbage.cfg"
 "$SR" vcrit --d 1e-5 --config "$WORK/garbage.cfg" >/dev/null 2>"$WORK/err"; rc=$?
 [ $rc -eq 2 ] || fail "garbage config: exit $rc, want 2"
 grep -q "garbage.cfg:1" "$WORK/err" || fail "garbage config: message does not name the file and line"
 LC_ALL=C grep -q '[^[:print:]]' "$WORK/err" && fail "garbage config: raw bytes on stderr"
-# an interrupted map leaves nothing (issue 13, item 6): killed while its new folder
+# an interrupted map leaves nothing: killed while its new folder
 # holds temporaries, the folder (and the parent it created) is removed
 ( cd "$WORK" && exec "$SR" map --set wall=lattice --points 4096 --nd 40 --nv 40 --vmin 0.1 --vmax 10 --force --out int/deep >/dev/null 2>&1 ) &
 pid=$!
@@ -208,7 +208,7 @@ for _ in $(seq 300); do [ -d "$WORK/int/deep" ] && break; sleep 0.1; done
 kill -TERM "$pid"; wait "$pid"; rc=$?
 [ $rc -eq 143 ] || fail "interrupted map: exit $rc, want 143 (SIGTERM)"
 [ ! -e "$WORK/int" ] || fail "interrupted map left $(find "$WORK/int" | head -3)"
-# ... and while gnuplot draws its PNG (issue 22, item 5): the plotting child is stopped
+# ... and while gnuplot draws its PNG: the plotting child is stopped
 # before the temporaries go. A stand-in gnuplot on PATH signals that it runs, then
 # writes its output 3 s later unless it is stopped.
 mkdir -p "$WORK/fakebin"

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # test_lammps_rough.sh (ctest lammps_rough): the rough-wall cross-check against
-# LAMMPS (validation/lammps-rough.sh, issue 24) on its --quick subset: 4 impact
+# LAMMPS (validation/lammps-rough.sh) on its --quick subset: 4 impact
 # points x 3 angles, Hertz (2 speeds) with a constant COR and elastic JKR, every impact
 # within the tolerances of doc/kernel.md (--check); its outputs and error paths.
 # Skipped (77) when LAMMPS is not installed (etc/setup.sh --lammps).

@@ -69,7 +69,7 @@ n5=$(awk -F, '!/^#/ && !/^d_m/ && $3 == 1' "$WORK/vt/map-vt0.5.csv" | wc -l)
 np=$(awk -F, '!/^#/ && !/^d_m/ && $3 == 1' "$WORK/plain/map.csv" | wc -l)
 [ "$np" -ge "$n0" ] || fail "full stick at vt 0 ($n0) exceeds normal sticking ($np)"
 ok "map checks done"
-# a folder name never reaches gnuplot as text (issue 13, item 2): quotes and a command
+# a folder name never reaches gnuplot as text: quotes and a command
 # in it, or a newline, still give the PNG and run nothing
 (cd "$WORK" && "$SR" map --nd 6 --nv 6 --out "x'; system('touch PWNED'); print '" >/dev/null 2>&1) || fail "map into a folder with quotes: exit $?"
 [ ! -e "$WORK/PWNED" ] && [ ! -e "$WORK/x'; system('touch PWNED'); print '/PWNED" ] || fail "a command in the --out name ran"

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # snowregime map --vt 0,...: the combined regime.coeffs with the d_crit(v_n, v_t)
-# table (issue 11), read back by the wall-model core and checked against the
+# table, read back by the wall-model core and checked against the
 # kernel at random off-grid points (oblique_check).
 . "$(dirname "$0")/common.sh"
 OC=$SW_BUILD/tests/regime_cli/oblique_check

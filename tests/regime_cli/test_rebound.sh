@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # snowregime map writes the kernel's rebound of the bouncing impacts as tables in
-# regime.coeffs (issue 23): e_n(d, v_n), and with --vt e_n and e_t over (v_t, d,
+# regime.coeffs: e_n(d, v_n), and with --vt e_n and e_t over (v_t, d,
 # v_n); the wall-model core reads them back and its rebound is checked against
 # the kernel at random off-grid points (rebound_check).
 # Tolerances (absolute, in cells whose nodes all bounce): e_n 0.01, e_t 0.05;

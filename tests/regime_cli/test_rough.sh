@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# snowregime on a rough wall (issue 9): collide and vcrit with --set wall=lattice,
+# snowregime on a rough wall: collide and vcrit with --set wall=lattice,
 # the probability map with its contours and regime.coeffs (read back by the wall
 # model, rough_check), thread invariance, and the errors of the rough options.
 . "$(dirname "$0")/common.sh"
@@ -42,7 +42,7 @@ grep -q "probability" "$WORK/f/regime.coeffs" && fail "flat regime.coeffs has a 
 # errors: named, exit 2, nothing written
 expect2() { local out=$1; shift; "$SR" "$@" >"$WORK/e.out" 2>"$WORK/e.err"; local rc=$?
     [ $rc -eq 2 ] || fail "$* : exit $rc (want 2)"; grep -q -- "$out" "$WORK/e.err" || { cat "$WORK/e.err"; fail "$* : message lacks '$out'"; }; }
-# a rough map over v_t (issue 24): the combined regime.coeffs holds p over
+# a rough map over v_t: the combined regime.coeffs holds p over
 # (d, v_t, v_n); read back by the wall model with the regime gate at every
 # node of each layer; a table beyond 4096 values is refused before any map
 "$SR" map $L --points 8 --nd 6 --nv 8 --vmin 0.05 --vmax 5 --vt 0,1 --no-plot --out "$WORK/mvt" \
@@ -60,7 +60,7 @@ expect2 "thornton-ning" map $L --set cor=thornton-ning --out "$WORK/x5"
 expect2 "--points" vcrit --d 1e-5 $L --points 0
 expect2 "asperity radii" collide --d 0.01 --vn 1 $L
 expect2 "wall" collide --d 1e-5 --vn 1 --set wall=rough
-# long runs say so (issue 24): a map of hours is refused before any work, naming
+# long runs say so: a map of hours is refused before any work, naming
 # its estimate and --force; a vcrit of hours too; with --progress a map prints its
 # estimate and the final line; a map of milliseconds without it prints neither
 expect2 "--force" map $L --points 100000 --nd 60 --nv 60 --threads 1 --out "$WORK/x6"

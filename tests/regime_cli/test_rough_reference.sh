@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# validation/rough-reference.sh --quick (issue 24, the reference study's wall of
+# validation/rough-reference.sh --quick (the reference study's wall of
 # 1 um spheres): the table's structure (every wall x asperity_yield x p row, every
 # diameter, the CSV) and the orderings the physics fixes: elastic asperity
 # contacts (only the JKR hysteresis dissipates) give the lowest v_crit of the
