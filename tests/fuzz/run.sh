@@ -6,7 +6,7 @@
 # Targets (default: all):
 #   config   snowregime's --config reader (swr_params_load, regime/kernel/swr_params.c)
 #   coeffs   the wall model's regime.coeffs reader and decisions (sww_regime_load,
-#            wallmodel/core/sww_load.c, sww.c)
+#            wallmodel/core/sww_load.c and the other sww_*.c)
 #   simcsv   snowphoto's simulated-map CSV reader (swv_simmap_read_mem)
 #   image    snowphoto's PNG and JPEG readers (swv_image_read_mem; Debian's libpng
 #            and libjpeg, not instrumented; built with limits of 4000 px per side
@@ -53,7 +53,7 @@ flags=(-fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -O1 -
 sources() {  # sources TARGET: the compiler arguments of a target
     case "$1" in
         config) echo "$here/fuzz_config.c $top/regime/kernel/swr_params.c -I$top/regime/kernel -D_GNU_SOURCE -lm" ;;
-        coeffs) echo "-D_GNU_SOURCE $here/fuzz_coeffs.c $top/wallmodel/core/sww.c $top/wallmodel/core/sww_load.c" \
+        coeffs) echo "-D_GNU_SOURCE $here/fuzz_coeffs.c $top/wallmodel/core/sww_*.c" \
                      "$top/regime/physics/*.c -I$top/wallmodel/core -I$top/regime/physics -lm" ;;
         simcsv) echo "$here/fuzz_simcsv.c $top/validation/swv_compare.c $top/validation/swv_homography.c" \
                      "$top/validation/swv_image.c $top/validation/swv_error.c -I$top/validation" \
