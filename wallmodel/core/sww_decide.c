@@ -68,13 +68,13 @@ int sww_decide(const sww_model *m, const sww_impact *in, sww_outcome *out)
 {
     if (!m->ready)
         return SWW_ENOTREADY;
-    /* NaN first: an ordered comparison of a NaN raises FE_INVALID (issue 22) */
+    /* NaN first: an ordered comparison of a NaN raises FE_INVALID (trapped in OpenFOAM) */
     if (isnan(in->d) || isnan(in->vn) || isnan(in->vt) || isnan(in->u)
         || !(in->d > 0.0) || isinf(in->d) || !(in->vn >= 0.0) || isinf(in->vn)
         || !(in->vt >= 0.0) || isinf(in->vt) || !(in->u >= 0.0 && in->u < 1.0))
         return SWW_EINVAL;
     /* with the shear gate on, tau_w is an input of every impact, checked here
-     * and not only when a stick candidate reaches the gate (issue 22): a bad
+     * and not only when a stick candidate reaches the gate: a bad
      * value is found at the first impact, not at the first stick candidate */
     if (m->shear_on && (isnan(in->tau_w) || !(in->tau_w >= 0.0) || isinf(in->tau_w)))
         return SWW_EINVAL;

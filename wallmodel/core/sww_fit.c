@@ -238,8 +238,8 @@ int sww_regime_commit(sww_model *m, const char *origin)
         if (m->has[K_DEGREE] && m->num[K_DEGREE] != (double)(m->ncoeffs - 1))
             return sww_fail(m, SWW_EINVAL, "%s: key 'degree': value %g does not match the %zu "
                             "coeffs (degree %zu)", o, m->num[K_DEGREE], m->ncoeffs, m->ncoeffs - 1);
-        /* the other representation's keys are refused, not ignored (hostile sweep,
-         * issue 22: a table beside the polynomial was dropped without a word) */
+        /* the other representation's keys are refused, not ignored (a table
+         * beside the polynomial would otherwise be dropped without a word) */
         if (m->has_vn || m->has_dcrit)
             return sww_fail(m, SWW_EINVAL, "%s: key '%s': not used with representation "
                             "polynomial (vn and dCrit belong to representation table)", o,
