@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # NAME
-#     lammps-rough.sh - the rough-wall impacts of snowregime checked against LAMMPS (issue 24)
+#     lammps-rough.sh - the rough-wall impacts of snowregime checked against LAMMPS
 #
 # SYNOPSIS
 #     validation/lammps-rough.sh --out DIR [--force] [--quick] [--grid K] [--angles LIST]
@@ -16,7 +16,7 @@
 #     pair_style granular, one process), and compares the rebound velocity
 #     (v_x, v_y, v_z), the spin (w_x, w_y, w_z), the number of contacts made and
 #     stick/bounce.
-#     The work is done by bin/snowlammps (validation/lammps/swl_*.c, C11, the
+#     The work is done by bin/snowlammps (tools/snowlammps/swl_*.c, C11, the
 #     kernel linked in; `snowlammps --help`); this script checks the options and
 #     makes the output folder appear whole or not at all.
 #     In LAMMPS the asperities are frozen spheres of radius r centred on z = 0,
@@ -159,7 +159,7 @@ command -v "$lmp" >/dev/null 2>&1 || { echo "$me: LAMMPS ('$lmp') is not install
 [ -x "$sl" ] || { echo "$me: $sl missing: run ./Allwmake" >&2; exit 1; }
 t0=$(date +%s)
 rc=0
-"$sl" --out "$tmp" --lmp "$(command -v "$lmp")" --deck "$top/validation/lammps/impact.lmp" \
+"$sl" --out "$tmp" --lmp "$(command -v "$lmp")" --deck "$top/tools/snowlammps/impact.lmp" \
     --grid "$grid" --angles "$angles" --speeds-hertz "$sh" --speeds-jkr "$sj" --cases "$cases" \
     --d "$d" --cor "$cor" --lmp-steps "$steps" "${halve[@]}" "${single[@]}" >"$tmp/report.txt" || rc=$?
 [ "$rc" != 2 ] || exit 2    # snowlammps named the bad value

@@ -5,7 +5,7 @@
 set -u
 : "${SW_TOP:?SW_TOP not set (run through ctest)}"
 : "${SW_BUILD:?SW_BUILD not set (run through ctest)}"
-SD=$SW_BUILD/validation/snowdeposit
+SD=$SW_BUILD/tools/snowdeposit/snowdeposit
 [ -x "$SD" ] || { echo "SKIP: $SD not built"; exit 77; }
 WORK=$(mktemp -d "${TMPDIR:-/tmp}/snowdeposit.XXXXXX")
 trap 'rm -rf "$WORK"' EXIT

@@ -1,6 +1,6 @@
 /* test_swd.c - the near-wall dispersion model (wallmodel/core/swd.h), its
  * wall-layer formulas (regime/physics/swp_nearwall.h) and the 1-D channel
- * (validation/deposition/swc_channel.h). */
+ * (tools/snowdeposit/swc_channel.h). */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>

@@ -1,4 +1,4 @@
-/* sw_fptrap.c - floating-point traps for the C tests (issue 22).
+/* sw_fptrap.c - floating-point traps for the C tests, as OpenFOAM sets them.
  *
  * Linked into every C test program (sw_add_ctest) and, in a build with
  * SNOWWALL_FPTRAP=ON (the sanitizer test build of ./Alltest), into the programs

@@ -1,4 +1,4 @@
-/* test_fptrap.c - the floating-point traps of the C tests are on (issue 22):
+/* test_fptrap.c - the floating-point traps of the C tests are on:
  * sw_fptrap.c, linked into every C test, enabled invalid, divide by zero and
  * overflow before main(); a quiet NaN or an infinity used as a value (the
  * sentinels of the code) and isnan/isinf do not trap. */

@@ -1,5 +1,5 @@
 /* fuzz_image.c - libFuzzer target: snowphoto's photo readers (PNG and JPEG,
- * told apart by their bytes; swv_image_read_mem, validation/swv_image.c).
+ * told apart by their bytes; swi_image_read_mem, tools/snowphoto/swi_image.c).
  *
  * Any bytes as a photo: 0 with an image whose size and pixels are readable,
  * or 1/2 with one line in err (no crash, no sanitizer report, no hang, no
@@ -8,13 +8,13 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "swv_image.h"
+#include "swi_image.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    swv_image *img = NULL;
+    swi_image *img = NULL;
     char err[300];
-    const int rc = swv_image_read_mem(data, size, "fuzz", &img, err, sizeof err);
+    const int rc = swi_image_read_mem(data, size, "fuzz", &img, err, sizeof err);
     if (rc != 0) {
         if (img || !err[0] || strchr(err, '\n'))
             __builtin_trap(); /* no image, one line */
@@ -26,6 +26,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     volatile unsigned char s = img->rgb[0];
     s = img->rgb[(size_t)img->width * (size_t)img->height * 3 - 1];
     (void)s;
-    swv_image_free(img);
+    swi_image_free(img);
     return 0;
 }

@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
-# tests/fuzz/run.sh - fuzz SnowWall's input parsers with libFuzzer (issue 13).
+# tests/fuzz/run.sh - fuzz SnowWall's input parsers with libFuzzer.
 #
 # Usage: tests/fuzz/run.sh [--time SECONDS] [--jobs N] [--out DIR] [TARGET...] [--help]
 #
 # Targets (default: all):
 #   config   snowregime's --config reader (swr_params_load, regime/kernel/swr_params.c)
 #   coeffs   the wall model's regime.coeffs reader and decisions (sww_regime_load,
-#            wallmodel/core/sww_load.c, sww.c)
-#   simcsv   snowphoto's simulated-map CSV reader (swv_simmap_read_mem)
-#   image    snowphoto's PNG and JPEG readers (swv_image_read_mem; Debian's libpng
+#            wallmodel/core/sww_load.c and the other sww_*.c)
+#   simcsv   snowphoto's simulated-map CSV reader (swi_simmap_read_mem)
+#   image    snowphoto's PNG and JPEG readers (swi_image_read_mem; Debian's libpng
 #            and libjpeg, not instrumented; built with limits of 4000 px per side
 #            and 4 MP instead of 30000 and 100 MP, so in-limit images stay fast)
 # Each target is built with Debian's clang (-fsanitize=fuzzer,address,undefined,
@@ -53,16 +53,16 @@ flags=(-fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -O1 -
 sources() {  # sources TARGET: the compiler arguments of a target
     case "$1" in
         config) echo "$here/fuzz_config.c $top/regime/kernel/swr_params.c -I$top/regime/kernel -D_GNU_SOURCE -lm" ;;
-        coeffs) echo "-D_GNU_SOURCE $here/fuzz_coeffs.c $top/wallmodel/core/sww.c $top/wallmodel/core/sww_load.c" \
+        coeffs) echo "-D_GNU_SOURCE $here/fuzz_coeffs.c $top/wallmodel/core/sww_*.c" \
                      "$top/regime/physics/*.c -I$top/wallmodel/core -I$top/regime/physics -lm" ;;
-        simcsv) echo "$here/fuzz_simcsv.c $top/validation/swv_compare.c $top/validation/swv_homography.c" \
-                     "$top/validation/swv_image.c $top/validation/swv_error.c -I$top/validation" \
+        simcsv) echo "$here/fuzz_simcsv.c $top/tools/snowphoto/swi_compare.c $top/tools/snowphoto/swi_homography.c" \
+                     "$top/tools/snowphoto/swi_image.c $top/tools/snowphoto/swi_error.c -I$top/tools/snowphoto" \
                      "$top/common/swo_out.c $top/common/swo_list.c -I$top/common" \
                      "-D_XOPEN_SOURCE=700 $(pkg-config --cflags --libs gsl libpng libjpeg) -lm" ;;
-        image)  echo "$here/fuzz_image.c $top/validation/swv_image.c $top/validation/swv_error.c" \
+        image)  echo "$here/fuzz_image.c $top/tools/snowphoto/swi_image.c $top/tools/snowphoto/swi_error.c" \
                      "$top/common/swo_out.c $top/common/swo_list.c -I$top/common" \
-                     "-I$top/validation -D_XOPEN_SOURCE=700 -DSWV_IMAGE_MAX_PIXELS=4000000" \
-                     "-DSWV_IMAGE_MAX_SIDE=4000 $(pkg-config --cflags --libs libpng libjpeg) -lm" ;;
+                     "-I$top/tools/snowphoto -D_XOPEN_SOURCE=700 -DSWI_IMAGE_MAX_PIXELS=4000000" \
+                     "-DSWI_IMAGE_MAX_SIDE=4000 $(pkg-config --cflags --libs libpng libjpeg) -lm" ;;
     esac
 }
 mkdir -p "$out/bin" "$out/corpus" "$out/findings" "$out/logs"

@@ -6,7 +6,7 @@
 # Skipped (77) when LAMMPS is not installed (etc/setup.sh --lammps).
 . "$(dirname "$0")/common.sh"
 LR=$SW_TOP/validation/lammps-rough.sh
-export SNOWLAMMPS=$SW_BUILD/validation/snowlammps
+export SNOWLAMMPS=$SW_BUILD/tools/snowlammps/snowlammps
 [ -x "$SNOWLAMMPS" ] || { echo "SKIP: $SNOWLAMMPS not built"; exit 77; }
 # snowlammps itself (no LAMMPS needed): the help's sections, strict options (exit 2,
 # the option and the value named), nothing made on bad input

@@ -3,8 +3,8 @@
 # overlap (IoU 2/3, Dice 0.8, precision 2/3, recall 1), its outputs and its
 # rejection of bad input (exit 2, one line naming the input, no output written).
 set -u
-exe="$SW_BUILD/validation/snowphoto"
-gen="$SW_BUILD/tests/validation/swv_testimg"
+exe="$SW_BUILD/tools/snowphoto/snowphoto"
+gen="$SW_BUILD/tests/validation/swi_testimg"
 [ -x "$exe" ] && [ -x "$gen" ] || { echo "missing $exe or $gen"; exit 1; }
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -71,17 +71,17 @@ bad "empty map" "empty.csv" compare --photo "$tmp/photo.png" --corners $corners 
 printf 'y,z,d\n0,0,1\n1,0,1\n0,1,oops\n1,1,1\n' > "$tmp/malformed.csv"
 bad "malformed map" "malformed.csv:4" regions --sim "$tmp/malformed.csv"
 bad "zero parcel mass" "--parcel-mass 0" regions --sim "$tmp/left.csv" --parcel-mass 0
-# issue 22: 1e-300 and 1e300 were taken; the range is [1e-20, 1000] kg
+# the parcel mass lies in [1e-20, 1000] kg: 1e-300 and 1e300 are refused
 bad "tiny parcel mass" "--parcel-mass 1e-300 is outside .1e-20, 1000. kg" regions --sim "$tmp/left.csv" --parcel-mass 1e-300
 bad "huge parcel mass" "--parcel-mass 1e300 is outside .1e-20, 1000. kg" regions --sim "$tmp/left.csv" --parcel-mass 1e300
-# hostile sweep (issue 22): hexadecimal numbers were taken by strtod
+# numbers are decimal: hexadecimal ones, which strtod would take, are refused
 bad "hexadecimal parcel mass" "--parcel-mass: .0x1p-30. is not a finite decimal number" regions --sim "$tmp/left.csv" --parcel-mass 0x1p-30
 bad "hexadecimal corner" "--corners: .0x64,80,540,60,580,420,60,400. is not 8" compare --photo "$tmp/photo.png" --corners 0x64,80,540,60,580,420,60,400 --sim "$tmp/sim.csv" --out "$tmp/bad.png"
 echo "not an image" > "$tmp/text.png"
 bad "not an image" "neither PNG nor JPEG" compare --photo "$tmp/text.png" --corners $corners --sim "$tmp/sim.csv" --out "$tmp/bad.png"
 bad "missing photo" "nothere.jpg" compare --photo "$tmp/nothere.jpg" --corners $corners --sim "$tmp/sim.csv" --out "$tmp/bad.png"
 
-# issue 13: hostile images (exit 2, a message naming the file and what is wrong,
+# hostile images (exit 2, a message naming the file and what is wrong,
 # nothing written, far under 10 s and under 200 MB; measured with GNU time when installed)
 "$gen" --jpeg-claiming 60000 60000 "$tmp/huge.jpg" && "$gen" --png-claiming 20000 20000 "$tmp/huge.png" \
     && "$gen" --jpeg-claiming 29000 3400 "$tmp/big.jpg" || { echo "generator failed"; exit 1; }
@@ -108,7 +108,7 @@ hostile "JPEG claiming 29000 x 3400 (in the limits), 12 KB of data" "Corrupt JPE
 hostile "truncated JPEG" "Premature end of JPEG file" "$tmp/half.jpg"
 hostile "truncated PNG" "PNG decoding failed.*truncated" "$tmp/half.png"
 
-# issue 13: corner sets that are no face (exit 2, the message names --corners)
+# corner sets that are no face (exit 2, the message names --corners)
 badc() {  # badc NAME EXPECTED_TEXT CORNERS
     bad "$1" "$2" compare --photo "$tmp/photo.png" --corners "$3" --sim "$tmp/sim.csv" --out "$tmp/bad.png"
     check "$1: message names --corners" "grep -q -- '^snowphoto: --corners $3: ' '$tmp/err'"
@@ -120,7 +120,7 @@ badc "sub-pixel corners" "covers 0.25 px^2" 100,80,100.5,80,100.5,80.5,100,80.5
 badc "mirrored corners" "counter-clockwise" 100,80,60,400,580,420,540,60
 badc "collinear corners" "lie on one line" 100,80,300,80,500,80,60,400
 
-# issue 13: a label cannot break the markdown table ('|' escaped, newline -> space)
+# a label cannot break the markdown table ('|' escaped, newline -> space)
 "$exe" regions --sim "$tmp/sim.csv" --label "$(printf 'a|b\nc`d')" > "$tmp/regions_l"
 cat "$tmp/regions_l"
 check "--label with '|' and newline: one row" "[ \$(wc -l < '$tmp/regions_l') = 1 ]"
@@ -148,7 +148,7 @@ fi
     > /dev/null 2> "$tmp/err"; rc=$?
 check "--out into a missing folder: exit 2, named" "[ $rc = 2 ] && grep -qF '$tmp/no/such/x.png' '$tmp/err'"
 
-# issue 13: an interrupted run leaves nothing (SIGTERM while the side-by-side PNG of
+# an interrupted run leaves nothing (SIGTERM while the side-by-side PNG of
 # --res 4000, about 2 s, is being written: its temporary removed by the handler)
 "$exe" compare --photo "$tmp/photo.png" --corners $corners --sim "$tmp/sim.csv" --res 4000 \
     --out "$tmp/int.png" > /dev/null 2>&1 &

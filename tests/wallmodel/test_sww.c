@@ -256,7 +256,7 @@ static double tau_indep(double G, double Es, double R, double mu, double k)
     return mu > 0 && slide < roll ? slide : roll;
 }
 
-/* Build-up feedback (issue 12): bare -> blended -> covered. The covered
+/* Build-up feedback (a face covered by snow): bare -> blended -> covered. The covered
  * regime is the fixture with ln d_crit lowered by ln 2 (d_crit(1 m/s) 15 um
  * instead of 30 um) and a constant rebound 0.3. */
 static int same_outcome(const sww_outcome *a, const sww_outcome *b)
@@ -331,8 +331,8 @@ static void buildup_blend(void **s)
     ASSERT_REL(sww_cover_fraction(0.005, 0.02), 0.25, 1e-15);
     assert_true(sww_cover_fraction(0.02, 0.02) == 1.0 && sww_cover_fraction(1e9, 0.02) == 1.0);
     assert_true(isnan(sww_cover_fraction(NAN, 0.02)) && isnan(sww_cover_fraction(0.01, 0.0)));
-    /* issue 22: NaN or zero inputs give a NaN result without forming one by
-     * arithmetic; a tiny covering mass saturates instead of overflowing; an
+    /* NaN or zero inputs give a NaN result without forming one by arithmetic
+     * (the floating-point traps stay quiet); a tiny covering mass saturates instead of overflowing; an
      * overflowing monolayer is INFINITY */
     assert_true(isnan(sww_monolayer_mass(NAN, 1e-5)) && isnan(sww_monolayer_mass(920.0, 0.0)));
     assert_true(isnan(sww_cover_fraction(0.01, NAN)));
@@ -342,7 +342,7 @@ static void buildup_blend(void **s)
     sww_free(cov);
 }
 
-/* The oblique table (issue 11) from code: the fixture's normal interface with
+/* The oblique table (d_crit over v_n and v_t) from code: the fixture's normal interface with
  * a table D = min(d_crit(v_n), d_t(v_t)), d_t = 20 um (v_t / 0.5)^(-2/3). */
 static double dtan(double vt) { return 2e-5 * pow(vt / 0.5, -2.0 / 3.0); }
 
@@ -374,8 +374,8 @@ static void oblique_gate(void **s)
     assert_int_equal(sww_check_oblique_slide(m, 1e-4), SWW_EMISSING);
     assert_non_null(strstr(sww_errmsg(m), "has no oblique table"));
     {
-        /* a table without obliqueSlide: the slide length cannot be checked
-         * (issue 22: the wrapper compared the NaN it got and died of SIGFPE) */
+        /* a table without obliqueSlide: the slide length cannot be checked, an
+         * error rather than a NaN that a caller with traps on would compare */
         sww_model *t = load_fixture();
         const double tvt[] = { 0.0, 1.0 }, tvn[] = { 0.1, 1.0 }, td[] = { 1e-4, 3e-5, 5e-5, 2e-5 };
         assert_int_equal(sww_regime_list(t, "obliqueVt", tvt, 2), SWW_OK);
@@ -442,8 +442,8 @@ static void oblique_gate(void **s)
     sww_describe(m, buf, sizeof buf);
     assert_non_null(strstr(buf, "regime table 4 x 5"));
     /* loading a regime without a table while the gate is on: an error naming
-     * the missing table; a failed load changes nothing (issue 13: it used to
-     * discard the loaded model): the gate, the table and the decisions stay */
+     * the missing table; a failed load changes nothing (the model loaded
+     * before is kept): the gate, the table and the decisions stay */
     assert_int_equal(sww_regime_load(m, FIXTURE), SWW_EMISSING);
     assert_non_null(strstr(sww_errmsg(m), "needs the oblique table"));
     assert_int_equal(sww_tangential_on(m), 2);
@@ -495,7 +495,7 @@ static void oblique_gate(void **s)
 
 /* ------------------------------------------------------------- rough wall */
 
-/* A stick-probability table (issue 9) on the fixture's interface: diameters
+/* A rough wall's stick-probability table on the fixture's interface: diameters
  * 5, 20, 80 um, speeds 0.5, 1, 4 m/s; p rows by diameter. */
 static const double PD[] = { 5e-6, 2e-5, 8e-5 }, PV[] = { 0.5, 1.0, 4.0 };
 static const double PP[] = { 0.95, 0.90, 0.60,    /* d 5 um  */
@@ -655,8 +655,8 @@ static void probability_table(void **s)
     sww_free(sharp);
 }
 
-/* A rough wall's table over v_t too (issue 24: snowregime map --set
- * wall=lattice --vt 0,...): layers v_t = 0 (the table above), 1 m/s (half
+/* A rough wall's table over v_t too (snowregime map --set wall=lattice
+ * --vt 0,...): layers v_t = 0 (the table above), 1 m/s (half
  * of it) and 3 m/s (none sticks). Read at the impact's v_t with the regime
  * gate on (exact at the nodes, linear between layers, the last layer beyond
  * them), at v_t = 0 with the gate off; a bounce that v_t = 0 would have stuck
@@ -924,7 +924,7 @@ static void shear_gate(void **s)
     assert_int_equal(sww_decide(m, &in, &o), SWW_EINVAL);
     in.tau_w = -1.0;
     assert_int_equal(sww_decide(m, &in, &o), SWW_EINVAL);
-    /* ... at every impact, not only at a stick candidate (issue 22): a bounce
+    /* ... at every impact, not only at a stick candidate: a bounce
      * (d above d_crit) with a bad tau_w is refused too */
     sww_impact big = { .d = 1e-4, .vn = v, .tau_w = NAN, .u = 0.5 };
     assert_int_equal(sww_decide(m, &big, &o), SWW_EINVAL);
@@ -936,7 +936,7 @@ static void shear_gate(void **s)
     ASSERT_REL(sww_tau_crit(m, d), tc, 1e-12);
     assert_int_equal(decide(m, d, v, 0.0, tc * 0.999, 0.5).fate, SWW_STICK);
     assert_int_equal(decide(m, d, v, 0.0, tc * 1.001, 0.5).fate, SWW_RIPOFF);
-    /* no number for a diameter that is not one (issue 13), and a stick candidate
+    /* no number for a diameter that is not one, and a stick candidate
      * whose tau_c is not a number is an input error, not a gate that never fires */
     const double bad_d[] = { 0.0, -1.0, INFINITY, -INFINITY, NAN };
     for (size_t k = 0; k < 5; k++) {
@@ -955,7 +955,7 @@ static void shear_gate(void **s)
     assert_false(sww_shear_on(m));
     assert_int_equal(sww_set_shear_gate_adhesion(m, 0.0), SWW_EINVAL);
     assert_non_null(strstr(sww_errmsg(m), "roughnessFactor 0"));
-    /* the message is the last call's: a call that succeeds leaves none (issue 13) */
+    /* the message is the last call's: a call that succeeds leaves none */
     assert_int_equal(sww_set_rebound_tangential(m, 0.5), SWW_OK);
     assert_string_equal(sww_errmsg(m), "");
     assert_int_equal(sww_set_shear_gate_adhesion(m, 0.0), SWW_EINVAL);
@@ -1145,10 +1145,10 @@ static void loader_errors(void **s)
         { "coeffs", "coeffs (-10 nan);", SWW_EINVAL, "key 'coeffs'", "entry 1" },
         { "coeffs", "coeffs (-10 abc);", SWW_EINVAL, "key 'coeffs'", "'abc'" },
         { "vnMin", "vnMin 0.2x;", SWW_EINVAL, "key 'vnMin'", "'0.2x' is not a number" },
-        /* the other representation's keys: refused, not dropped (hostile sweep, issue 22) */
+        /* the other representation's keys: refused, not dropped */
         { "vnMax", "vnMax 6.0; vn (0.2 6); dCrit (1e-5 2e-5);", SWW_EINVAL, "key 'vn'",
           "not used with representation polynomial" },
-        /* hexadecimal: strtod took it, OpenFOAM's reader does not (hostile sweep, issue 22) */
+        /* hexadecimal: strtod would take it, OpenFOAM's reader does not: refused */
         { "vnMax", "vnMax 0x6;", SWW_EINVAL, "key 'vnMax'", "'0x6' is not a number" },
         { "coeffs", "coeffs (0x1p3 -1.3 -0.02 -0.005);", SWW_EINVAL, "key 'coeffs'", "'0x1p3' (entry 0) is not a number" },
         { "vnMin", "vnMin 7;", SWW_EINVAL, "key 'vnMin'", "7 is not below vnMax 6" },
@@ -1171,14 +1171,14 @@ static void loader_errors(void **s)
         { "vnMax", "vnMax 6.0; reboundNormal 1.2;", SWW_EINVAL, "key 'reboundNormal'", "1.2" },
         { "vnMax", "vnMax 6.0; gamma 0;", SWW_EINVAL, "key 'gamma'", "0 must be > 0" },
         { "vnMax", "vnMax 6.0; version 2;", SWW_EINVAL, "key 'version'", "2" },
-        /* unknown keys are errors naming file, line and key (issue 13, item 4): a misspelt
-         * yieldVelocity used to load and leave every bounce elastic */
+        /* unknown keys are errors naming file, line and key: a misspelt
+         * yieldVelocity would otherwise leave every bounce elastic */
         { "vnMax", "vnMax 6.0;\n yieldVelocty 1.4e-4;", SWW_EINVAL, "key 'yieldVelocty' is not a regime key", ":" },
         { "vnMax", "vnMax 6.0; futureList (1 2);", SWW_EINVAL, "key 'futureList' is not a regime key", NULL },
         { "vnMax", "vnMax 6.0; colour blue;", SWW_EINVAL, "key 'colour' is not a regime key", NULL },
         { "vnMax", "vnMax 6.0; extra { a 1; }", SWW_EINVAL, "key 'extra': a sub-dictionary is not a regime key", NULL },
         { "vnMax", "vnMax 6.0; dMin 1e-4; dMax 1e-5;", SWW_EINVAL, "keys 'dMin', 'dMax'", "must be below" },
-        /* a consistency error of the commit names the lines that set the keys (issue 22) */
+        /* a consistency error of the commit names the lines that set the keys */
         { "vnMax", "vnMax 6.0;\n dMin 1e-4;\n dMax 1e-5;", SWW_EINVAL, "must be below 1e-05 (dMin line ",
           ", dMax line " },
         { NULL, "other { a 1; }\n", SWW_EMISSING, "missing sub-dictionary 'regime", NULL },
@@ -1302,7 +1302,7 @@ static void loader_errors(void **s)
 }
 
 
-/* the counter-based draw (issue 23): fixed by its key, uniform, uncorrelated */
+/* the counter-based draw: fixed by its key, uniform, uncorrelated */
 static void uniform_hash(void **s)
 {
     (void)s;
@@ -1334,7 +1334,7 @@ static void uniform_hash(void **s)
     assert_true(sww_uniform_hash(0, 0, 0, 0, 0) >= 0.0);
 }
 
-/* ------------------------------------------------------------- counts by reason (issue 23) */
+/* ------------------------------------------------------------- counts by reason */
 
 static void outcome_classes(void **s)
 {
@@ -1388,7 +1388,7 @@ static void outcome_classes(void **s)
     sww_free(r);
 }
 
-/* ------------------------------------------------------------- rebound tables (issue 23) */
+/* ------------------------------------------------------------- rebound tables */
 
 /* The kernel's rebound as tables: d 20, 80 um (rows), v_n 0.5, 4 m/s (columns),
  * with v_t layers 0, 1, 4 m/s for the 3-D case. */

@@ -73,7 +73,7 @@ typedef struct {
                         build-up blend); the fate and reason then say how it left */
 } sww_outcome;
 
-/* What decided an impact, for counts by reason (issue 23): each outcome is
+/* What decided an impact, for counts by reason: each outcome is
  * exactly one of these. */
 typedef enum {
     SWW_CLASS_STUCK = 0,        /* stuck                                             */
@@ -138,13 +138,13 @@ int sww_set_shear_gate_adhesion(sww_model *m, double roughness);
 void sww_set_shear_off(sww_model *m);
 /* Tangential rebound factor e_t in [0, 1] (default 1): the classic rebound's. */
 int sww_set_rebound_tangential(sww_model *m, double e_t);
-/* Which rebound a bounce / rip-off leaves with (issue 23):
+/* Which rebound a bounce / rip-off leaves with:
  *   SWW_REBOUND_AUTO (default): the kernel's tables (reboundEn, reboundEt) when the
  *     regime has them, else the classic rebound;
  *   SWW_REBOUND_TABLE: the tables (SWW_EMISSING, and the model unchanged, when the
  *     regime has none; a later commit of a regime without them fails the same way);
  *   SWW_REBOUND_CLASSIC: e_n Thornton e_p(yieldVelocity / v_n) or reboundNormal,
- *     e_t the reboundTangential factor, as before issue 23.
+ *     e_t the reboundTangential factor; the kernel's tables are not used.
  * With the tables, e_t comes from reboundEt when the regime has it (a map made with
  * --vt), else from the reboundTangential factor. */
 enum { SWW_REBOUND_AUTO = 0, SWW_REBOUND_TABLE = 1, SWW_REBOUND_CLASSIC = 2 };
@@ -159,7 +159,7 @@ int sww_set_rebound_model(sww_model *m, int model);
  * the shear gate is on) or SWW_ENOTREADY. Thread-safe, allocates nothing, writes no message. */
 int sww_decide(const sww_model *m, const sww_impact *in, sww_outcome *out);
 
-/* ---- build-up feedback: a face covered by snow (issue 12) -------------------
+/* ---- build-up feedback: a face covered by snow ------------------------------
  * A face's state follows from its own deposit m [kg/m2]: bare at m = 0,
  * covered from the covering mass m_c on, in between a blend of the stick
  * probabilities with the covered fraction w = min(1, m / m_c):
@@ -184,7 +184,7 @@ double sww_cover_fraction(double mass_per_area, double cover_mass);
  * overflows). */
 double sww_monolayer_mass(double rho, double d);
 
-/* A uniform number in [0, 1) fixed by its key (issue 23): a counter-based
+/* A uniform number in [0, 1) fixed by its key: a counter-based
  * hash (SplitMix64's finaliser chained over seed, a, b, c, k), 53 random bits;
  * the same on every machine, processor and thread, so an impact's draw can be
  * tied to the parcel (its origin processor and id), the time step and the

@@ -29,7 +29,7 @@ typedef struct {
     char text[MAX_TOK];
     sww_model *m;
     /* the line of every key set, for the consistency errors of the commit,
-     * which know the keys but not the file (issue 22) */
+     * which know the keys but not the file */
     struct { char key[48]; int line; } keys[96];
     int nkeys;
 } lexer;

@@ -1,7 +1,7 @@
-/* swv_main.c - snowphoto: compare a photo of the wedge's rear face with the
+/* swi_main.c - snowphoto: compare a photo of the wedge's rear face with the
  * simulated deposit map; list which rear-face regions hold snow. */
-#include "swv_compare.h"
-#include "swv_image.h"
+#include "swi_compare.h"
+#include "swi_image.h"
 #include "swo_out.h"
 
 #include <errno.h>
@@ -12,8 +12,8 @@
 #include <unistd.h>
 
 /* accepted --parcel-mass [kg] */
-#define SWV_PARCEL_MASS_MIN 1e-20
-#define SWV_PARCEL_MASS_MAX 1e3
+#define SWI_PARCEL_MASS_MIN 1e-20
+#define SWI_PARCEL_MASS_MAX 1e3
 
 static const char *usage =
 "NAME\n"
@@ -182,8 +182,8 @@ int main(int argc, char **argv)
         fprintf(stderr, "snowphoto: unknown command '%s' (compare or regions); see snowphoto --help\n", cmd);
         return 2;
     }
-    swv_config cfg;
-    swv_config_defaults(&cfg);
+    swi_config cfg;
+    swi_config_defaults(&cfg);
     const char *photo_path = NULL, *sim_path = NULL, *out_path = NULL, *label = NULL;
     const char *corners_arg = NULL;
     int have_corners = 0;
@@ -254,10 +254,10 @@ int main(int argc, char **argv)
             if (parse_double(o, a, &d)) return 2;
             /* from one 0.1 um ice sphere (4.8e-19 kg) to a tonne: outside it the
              * parcel counts mass / parcel mass are not counts of anything
-             * (issue 22: 1e-300 and 1e300 were taken) */
-            if (!(d >= SWV_PARCEL_MASS_MIN && d <= SWV_PARCEL_MASS_MAX)) {
+             * (1e-300 and 1e300 are refused) */
+            if (!(d >= SWI_PARCEL_MASS_MIN && d <= SWI_PARCEL_MASS_MAX)) {
                 fprintf(stderr, "snowphoto: --parcel-mass %s is outside [%g, %g] kg\n", a,
-                        SWV_PARCEL_MASS_MIN, SWV_PARCEL_MASS_MAX);
+                        SWI_PARCEL_MASS_MIN, SWI_PARCEL_MASS_MAX);
                 return 2;
             }
             parcel_mass = d;
@@ -281,34 +281,34 @@ int main(int argc, char **argv)
     }
     swo_signals_on();   /* interrupted, the run leaves no temporary of --out behind */
     char err[1024] = "";
-    swv_simmap *sim = NULL;
-    int rc = swv_simmap_read(sim_path, &sim, err, sizeof err);
+    swi_simmap *sim = NULL;
+    int rc = swi_simmap_read(sim_path, &sim, err, sizeof err);
     if (rc) {
         fprintf(stderr, "snowphoto: --sim %s\n", err);
         return rc;
     }
     if (is_regions) {
         double thr = cfg.simThreshold >= 0 ? cfg.simThreshold : cfg.simRelThreshold * sim->vmax;
-        swv_region_stats st;
-        rc = swv_regions(sim, thr, band, hold, &st, err, sizeof err);
+        swi_region_stats st;
+        rc = swi_regions(sim, thr, band, hold, &st, err, sizeof err);
         if (rc) {
             fprintf(stderr, "snowphoto: %s: %s\n", sim_path, err);
-            swv_simmap_free(sim);
+            swi_simmap_free(sim);
             return rc;
         }
         /* the label (or path) as a table cell: a '|' or newline in it cannot break the table */
         const char *text = label ? label : sim_path;
-        size_t need = swv_md_cell(text, NULL, 0) + 1;
+        size_t need = swi_md_cell(text, NULL, 0) + 1;
         char *cell = malloc(need);
         if (!cell) {
             fprintf(stderr, "snowphoto: out of memory\n");
-            swv_simmap_free(sim);
+            swi_simmap_free(sim);
             return 1;
         }
-        swv_md_cell(text, cell, need);
+        swi_md_cell(text, cell, need);
         printf("| %s |", cell);
         free(cell);
-        for (int r = 0; r < SWV_NREGIONS; r++) {
+        for (int r = 0; r < SWI_NREGIONS; r++) {
             printf(" %s (%.0f %%, %.3g kg/m2", st.holds[r] ? "**snow**" : "no", 100 * st.covered[r], st.mean[r]);
             if (parcel_mass > 0) {
                 double n = st.mass[r] / parcel_mass;
@@ -320,31 +320,31 @@ int main(int argc, char **argv)
             printf(") |");
         }
         printf(" %.3g |\n", thr);
-        swv_simmap_free(sim);
+        swi_simmap_free(sim);
         return finish_stdout(0);
     }
-    swv_image *photo = NULL;
-    rc = swv_image_read(photo_path, &photo, err, sizeof err);
+    swi_image *photo = NULL;
+    rc = swi_image_read(photo_path, &photo, err, sizeof err);
     if (rc) {
         fprintf(stderr, "snowphoto: --photo %s\n", err);
-        swv_simmap_free(sim);
+        swi_simmap_free(sim);
         return rc;
     }
-    rc = swv_corners_check(cfg.corners, photo->width, photo->height, err, sizeof err);
+    rc = swi_corners_check(cfg.corners, photo->width, photo->height, err, sizeof err);
     if (rc) {
         fprintf(stderr, "snowphoto: --corners %s: %s\n", corners_arg, err);
-        swv_image_free(photo);
-        swv_simmap_free(sim);
+        swi_image_free(photo);
+        swi_simmap_free(sim);
         return rc;
     }
-    swv_metrics m;
-    swv_image *side = NULL;
-    rc = swv_compare_run(&cfg, photo, sim, &m, out_path ? &side : NULL, err, sizeof err);
+    swi_metrics m;
+    swi_image *side = NULL;
+    rc = swi_compare_run(&cfg, photo, sim, &m, out_path ? &side : NULL, err, sizeof err);
     if (rc) {
         fprintf(stderr, "snowphoto: %s: %s\n", photo_path, err);
     } else {
         if (out_path) {
-            rc = swv_image_write_png(out_path, side, err, sizeof err);
+            rc = swi_image_write_png(out_path, side, err, sizeof err);
             if (rc) fprintf(stderr, "snowphoto: --out: %s\n", err);
         }
         if (!rc) {
@@ -359,8 +359,8 @@ int main(int argc, char **argv)
             if (out_path) printf("side_by_side = %s\n", out_path);
         }
     }
-    swv_image_free(side);
-    swv_image_free(photo);
-    swv_simmap_free(sim);
+    swi_image_free(side);
+    swi_image_free(photo);
+    swi_simmap_free(sim);
     return finish_stdout(rc);
 }

@@ -1,7 +1,7 @@
-/* swv_compare.c - simulated map input, rectification, segmentation, metrics, regions. */
-#include "swv_compare.h"
-#include "swv_error.h"
-#include "swv_homography.h"
+/* swi_compare.c - simulated map input, rectification, segmentation, metrics, regions. */
+#include "swi_compare.h"
+#include "swi_error.h"
+#include "swi_homography.h"
 
 #include <errno.h>
 #include <math.h>
@@ -11,7 +11,7 @@
 #include <string.h>
 
 
-void swv_simmap_free(swv_simmap *m)
+void swi_simmap_free(swi_simmap *m)
 {
     if (!m)
         return;
@@ -80,23 +80,23 @@ static int read_line(FILE *f, char *buf, size_t len, int *bad)
 }
 
 /* The one CSV parser, on an open stream (path: the name in messages). */
-static int simmap_read_stream(FILE *f, const char *path, swv_simmap **out, char *err, size_t errlen)
+static int simmap_read_stream(FILE *f, const char *path, swi_simmap **out, char *err, size_t errlen)
 {
     size_t cap = 256, n = 0;
     double *y = malloc(cap * sizeof *y), *z = malloc(cap * sizeof *z), *v = malloc(cap * sizeof *v);
     char line[1024];
     long lineno = 0;
     int rc = 0;
-    swv_simmap *m = NULL;
+    swi_simmap *m = NULL;
     double *uy = NULL, *uz = NULL, *sy = NULL, *sz = NULL;
-    if (!y || !z || !v) { rc = swv_fail(err, errlen, 1, "%s: out of memory", path); goto done; }
+    if (!y || !z || !v) { rc = swi_fail(err, errlen, 1, "%s: out of memory", path); goto done; }
     int bad;
     while (read_line(f, line, sizeof line, &bad) == 0) {
         lineno++;
         if (bad) {
-            rc = bad == 1 ? swv_fail(err, errlen, 2, "%s:%ld: line longer than %d characters", path,
+            rc = bad == 1 ? swi_fail(err, errlen, 2, "%s:%ld: line longer than %d characters", path,
                                      lineno, (int)sizeof line - 1)
-                          : swv_fail(err, errlen, 2, "%s:%ld: NUL byte in the line (not a text file?)",
+                          : swi_fail(err, errlen, 2, "%s:%ld: NUL byte in the line (not a text file?)",
                                      path, lineno);
             goto done;
         }
@@ -107,18 +107,18 @@ static int simmap_read_stream(FILE *f, const char *path, swv_simmap **out, char 
         if (sscanf(line, " %lf , %lf , %lf %c", &a, &b, &c, &extra) != 3) {
             char shown[80];
             printable(shown, sizeof shown, line);
-            rc = swv_fail(err, errlen, 2, "%s:%ld: expected 'y,z,value', got '%s'", path, lineno,
+            rc = swi_fail(err, errlen, 2, "%s:%ld: expected 'y,z,value', got '%s'", path, lineno,
                           shown);
             goto done;
         }
         if (!isfinite(a) || !isfinite(b) || !isfinite(c) || c < 0) {
-            rc = swv_fail(err, errlen, 2, "%s:%ld: non-finite or negative value (y %g, z %g, value %g)",
+            rc = swi_fail(err, errlen, 2, "%s:%ld: non-finite or negative value (y %g, z %g, value %g)",
                       path, lineno, a, b, c);
             goto done;
         }
-        if (n == SWV_SIMMAP_MAX_FACES) {
-            rc = swv_fail(err, errlen, 2, "%s:%ld: more than %d faces", path, lineno,
-                          SWV_SIMMAP_MAX_FACES);
+        if (n == SWI_SIMMAP_MAX_FACES) {
+            rc = swi_fail(err, errlen, 2, "%s:%ld: more than %d faces", path, lineno,
+                          SWI_SIMMAP_MAX_FACES);
             goto done;
         }
         if (n == cap) {
@@ -126,49 +126,49 @@ static int simmap_read_stream(FILE *f, const char *path, swv_simmap **out, char 
             double *ny = realloc(y, cap * sizeof *y); if (ny) y = ny;
             double *nz = realloc(z, cap * sizeof *z); if (nz) z = nz;
             double *nv = realloc(v, cap * sizeof *v); if (nv) v = nv;
-            if (!ny || !nz || !nv) { rc = swv_fail(err, errlen, 1, "%s: out of memory", path); goto done; }
+            if (!ny || !nz || !nv) { rc = swi_fail(err, errlen, 1, "%s: out of memory", path); goto done; }
         }
         y[n] = a; z[n] = b; v[n] = c; n++;
     }
-    if (ferror(f)) { rc = swv_fail(err, errlen, 2, "%s: read error (%s)", path, strerror(errno)); goto done; }
-    if (n < 4) { rc = swv_fail(err, errlen, 2, "%s: %zu face values, need a grid of at least 2x2", path, n); goto done; }
+    if (ferror(f)) { rc = swi_fail(err, errlen, 2, "%s: read error (%s)", path, strerror(errno)); goto done; }
+    if (n < 4) { rc = swi_fail(err, errlen, 2, "%s: %zu face values, need a grid of at least 2x2", path, n); goto done; }
     sy = malloc(n * sizeof *sy); sz = malloc(n * sizeof *sz);
     uy = malloc(n * sizeof *uy); uz = malloc(n * sizeof *uz);
-    if (!sy || !sz || !uy || !uz) { rc = swv_fail(err, errlen, 1, "%s: out of memory", path); goto done; }
+    if (!sy || !sz || !uy || !uz) { rc = swi_fail(err, errlen, 1, "%s: out of memory", path); goto done; }
     memcpy(sy, y, n * sizeof *sy); memcpy(sz, z, n * sizeof *sz);
     qsort(sy, n, sizeof *sy, cmp_double); qsort(sz, n, sizeof *sz, cmp_double);
     double span = fmax(sy[n - 1] - sy[0], sz[n - 1] - sz[0]);
     double tol = 1e-6 * (span > 0 ? span : 1);
     int ny = distinct(sy, (int)n, tol, uy), nz = distinct(sz, (int)n, tol, uz);
     if (ny < 2 || nz < 2 || (size_t)ny * (size_t)nz != n) {
-        rc = swv_fail(err, errlen, 2, "%s: %zu faces do not form a full regular grid (%d distinct y x %d distinct z)",
+        rc = swi_fail(err, errlen, 2, "%s: %zu faces do not form a full regular grid (%d distinct y x %d distinct z)",
                   path, n, ny, nz);
         goto done;
     }
     double dy = (uy[ny - 1] - uy[0]) / (ny - 1), dz = (uz[nz - 1] - uz[0]) / (nz - 1);
     for (int i = 1; i < ny; i++)
         if (fabs(uy[i] - uy[i - 1] - dy) > 1e-3 * dy) {
-            rc = swv_fail(err, errlen, 2, "%s: face centres are not evenly spaced in y (%g .. %g)", path, uy[i - 1], uy[i]);
+            rc = swi_fail(err, errlen, 2, "%s: face centres are not evenly spaced in y (%g .. %g)", path, uy[i - 1], uy[i]);
             goto done;
         }
     for (int i = 1; i < nz; i++)
         if (fabs(uz[i] - uz[i - 1] - dz) > 1e-3 * dz) {
-            rc = swv_fail(err, errlen, 2, "%s: face centres are not evenly spaced in z (%g .. %g)", path, uz[i - 1], uz[i]);
+            rc = swi_fail(err, errlen, 2, "%s: face centres are not evenly spaced in z (%g .. %g)", path, uz[i - 1], uz[i]);
             goto done;
         }
     m = calloc(1, sizeof *m);
-    if (!m || !(m->val = calloc(n, sizeof *m->val))) { rc = swv_fail(err, errlen, 1, "%s: out of memory", path); goto done; }
+    if (!m || !(m->val = calloc(n, sizeof *m->val))) { rc = swi_fail(err, errlen, 1, "%s: out of memory", path); goto done; }
     m->ny = ny; m->nz = nz;
     m->y0 = uy[0] - dy / 2; m->y1 = uy[ny - 1] + dy / 2;
     m->z0 = uz[0] - dz / 2; m->z1 = uz[nz - 1] + dz / 2;
     char *seen = calloc(n, 1);
-    if (!seen) { rc = swv_fail(err, errlen, 1, "%s: out of memory", path); goto done; }
+    if (!seen) { rc = swi_fail(err, errlen, 1, "%s: out of memory", path); goto done; }
     for (size_t i = 0; i < n; i++) {
         int iy = find_index(uy, ny, y[i], tol), iz = find_index(uz, nz, z[i], tol);
         size_t k = (size_t)iy + (size_t)ny * (size_t)iz;
         if (iy < 0 || iz < 0 || seen[k]) {
             free(seen);
-            rc = swv_fail(err, errlen, 2, "%s: face (%g, %g) appears twice", path, y[i], z[i]);
+            rc = swi_fail(err, errlen, 2, "%s: face (%g, %g) appears twice", path, y[i], z[i]);
             goto done;
         }
         seen[k] = 1;
@@ -180,39 +180,39 @@ static int simmap_read_stream(FILE *f, const char *path, swv_simmap **out, char 
     m = NULL;
 done:
     free(y); free(z); free(v); free(sy); free(sz); free(uy); free(uz);
-    swv_simmap_free(m);
+    swi_simmap_free(m);
     return rc;
 }
 
-int swv_simmap_read(const char *path, swv_simmap **out, char *err, size_t errlen)
+int swi_simmap_read(const char *path, swi_simmap **out, char *err, size_t errlen)
 {
     *out = NULL;
     FILE *f = fopen(path, "r");
     if (!f)
-        return swv_fail(err, errlen, 2, "%s: cannot open (%s)", path, strerror(errno));
+        return swi_fail(err, errlen, 2, "%s: cannot open (%s)", path, strerror(errno));
     int rc = simmap_read_stream(f, path, out, err, errlen);
     fclose(f);
     return rc;
 }
 
-int swv_simmap_read_mem(const char *data, size_t n, const char *name, swv_simmap **out,
+int swi_simmap_read_mem(const char *data, size_t n, const char *name, swi_simmap **out,
                         char *err, size_t errlen)
 {
     *out = NULL;
     if (!name)
         name = "(memory)";
     if (!data || n == 0)
-        return swv_fail(err, errlen, 2, "%s: empty, need a header and a grid of at least 2x2", name);
+        return swi_fail(err, errlen, 2, "%s: empty, need a header and a grid of at least 2x2", name);
     /* read-only use of data: fmemopen's buffer is not const in its prototype */
     FILE *f = fmemopen((void *)(uintptr_t)data, n, "r");
     if (!f)
-        return swv_fail(err, errlen, 1, "%s: fmemopen failed (%s)", name, strerror(errno));
+        return swi_fail(err, errlen, 1, "%s: fmemopen failed (%s)", name, strerror(errno));
     int rc = simmap_read_stream(f, name, out, err, errlen);
     fclose(f);
     return rc;
 }
 
-double swv_simmap_at(const swv_simmap *m, double u, double v)
+double swi_simmap_at(const swi_simmap *m, double u, double v)
 {
     int iy = (int)floor(u * m->ny), iz = (int)floor((1 - v) * m->nz);
     if (iy < 0) iy = 0;
@@ -222,7 +222,7 @@ double swv_simmap_at(const swv_simmap *m, double u, double v)
     return m->val[iy + m->ny * iz];
 }
 
-void swv_config_defaults(swv_config *c)
+void swi_config_defaults(swi_config *c)
 {
     memset(c, 0, sizeof *c);
     c->photoThreshold = 0.5;
@@ -238,15 +238,15 @@ static double cross3(const double a[2], const double b[2], const double c[2])
     return (b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0]);
 }
 
-int swv_corners_check(const double c[4][2], int width, int height, char *err, size_t errlen)
+int swi_corners_check(const double c[4][2], int width, int height, char *err, size_t errlen)
 {
     for (int i = 0; i < 4; i++) {
         double x = c[i][0], y = c[i][1];
         if (!isfinite(x) || !isfinite(y))
-            return swv_fail(err, errlen, 2, "corner %d (%s, %g,%g) is not a finite point", i + 1,
+            return swi_fail(err, errlen, 2, "corner %d (%s, %g,%g) is not a finite point", i + 1,
                             corner_name[i], x, y);
         if (x < 0 || y < 0 || x > width || y > height)
-            return swv_fail(err, errlen, 2, "corner %d (%s, %g,%g) lies outside the %dx%d photo",
+            return swi_fail(err, errlen, 2, "corner %d (%s, %g,%g) lies outside the %dx%d photo",
                             i + 1, corner_name[i], x, y, width, height);
     }
     /* turn at every corner: > 0 clockwise on the image (y down), the order
@@ -260,7 +260,7 @@ int swv_corners_check(const double c[4][2], int width, int height, char *err, si
         int a = (i + 3) % 4, b = (i + 1) % 4;
         turn[i] = cross3(c[a], c[i], c[b]);
         if (!(fabs(turn[i]) > 1e-12 * scale * scale))
-            return swv_fail(err, errlen, 2,
+            return swi_fail(err, errlen, 2,
                             "corners %d, %d, %d (%s, %s, %s) lie on one line or coincide: no "
                             "quadrilateral",
                             a + 1, i + 1, b + 1, corner_name[a], corner_name[i], corner_name[b]);
@@ -269,7 +269,7 @@ int swv_corners_check(const double c[4][2], int width, int height, char *err, si
     if (pos == 2) {
         /* two left and two right turns: two opposite sides cross */
         int k = (turn[0] > 0) == (turn[1] > 0) ? 1 : 0;   /* sides k..k+1 and k+2..k+3 */
-        return swv_fail(err, errlen, 2,
+        return swi_fail(err, errlen, 2,
                         "the side from corner %d to %d crosses the side from corner %d to %d (a "
                         "bow-tie): give top-left, top-right, bottom-right, bottom-left in this order",
                         k + 1, k + 2, k + 3, (k + 3) % 4 + 1);
@@ -279,13 +279,13 @@ int swv_corners_check(const double c[4][2], int width, int height, char *err, si
         for (int i = 0; i < 4; i++)
             if ((turn[i] > 0) == (pos == 1))
                 r = i;
-        return swv_fail(err, errlen, 2,
+        return swi_fail(err, errlen, 2,
                         "the quadrilateral is concave at corner %d (%s, %g,%g): a face seen in "
                         "perspective is convex",
                         r + 1, corner_name[r], c[r][0], c[r][1]);
     }
     if (neg == 4)
-        return swv_fail(err, errlen, 2,
+        return swi_fail(err, errlen, 2,
                         "the corners run counter-clockwise on the image (a mirrored face): give "
                         "top-left, top-right, bottom-right, bottom-left as seen from behind");
     /* convex: the width is the smallest extent across a side's direction */
@@ -300,17 +300,17 @@ int swv_corners_check(const double c[4][2], int width, int height, char *err, si
         area += c[i][0] * c[b][1] - c[b][0] * c[i][1];
     }
     area = fabs(area) / 2;
-    if (wmin < SWV_CORNERS_MIN_WIDTH || area < SWV_CORNERS_MIN_AREA)
-        return swv_fail(err, errlen, 2,
+    if (wmin < SWI_CORNERS_MIN_WIDTH || area < SWI_CORNERS_MIN_AREA)
+        return swi_fail(err, errlen, 2,
                         "the face covers %.3g px^2 and is %.3g px wide in the photo; at least %g "
                         "px^2 and %g px are needed",
-                        area, wmin, SWV_CORNERS_MIN_AREA, SWV_CORNERS_MIN_WIDTH);
+                        area, wmin, SWI_CORNERS_MIN_AREA, SWI_CORNERS_MIN_WIDTH);
     return 0;
 }
 
 static double ratio1(long num, long den) { return den > 0 ? (double)num / (double)den : 1.0; }
 
-void swv_metrics_from_counts(swv_metrics *m)
+void swi_metrics_from_counts(swi_metrics *m)
 {
     m->precision = ratio1(m->tp, m->tp + m->fp);
     m->recall = ratio1(m->tp, m->tp + m->fn);
@@ -321,7 +321,7 @@ void swv_metrics_from_counts(swv_metrics *m)
     m->simSnowFraction = all > 0 ? (double)(m->tp + m->fp) / (double)all : 0;
 }
 
-static void put(swv_image *img, int x, int y, unsigned char r, unsigned char g, unsigned char b)
+static void put(swi_image *img, int x, int y, unsigned char r, unsigned char g, unsigned char b)
 {
     unsigned char *p = img->rgb + ((size_t)y * (size_t)img->width + (size_t)x) * 3u;
     p[0] = r; p[1] = g; p[2] = b;
@@ -337,47 +337,47 @@ static void cmap(double t, unsigned char *r, unsigned char *g, unsigned char *b)
     *b = (unsigned char)lround(255 + t * (107 - 255));
 }
 
-int swv_compare_run(const swv_config *c, const swv_image *photo, const swv_simmap *sim,
-                    swv_metrics *m, swv_image **side, char *err, size_t errlen)
+int swi_compare_run(const swi_config *c, const swi_image *photo, const swi_simmap *sim,
+                    swi_metrics *m, swi_image **side, char *err, size_t errlen)
 {
     if (side) *side = NULL;
     memset(m, 0, sizeof *m);
     if (!(c->photoThreshold >= 0 && c->photoThreshold <= 1))
-        return swv_fail(err, errlen, 2, "photo threshold %g outside [0, 1]", c->photoThreshold);
+        return swi_fail(err, errlen, 2, "photo threshold %g outside [0, 1]", c->photoThreshold);
     if (c->simThreshold < 0 && !(c->simRelThreshold > 0 && c->simRelThreshold <= 1))
-        return swv_fail(err, errlen, 2, "relative simulation threshold %g outside (0, 1]", c->simRelThreshold);
+        return swi_fail(err, errlen, 2, "relative simulation threshold %g outside (0, 1]", c->simRelThreshold);
     if (!isfinite(c->simThreshold))
-        return swv_fail(err, errlen, 2, "simulation threshold %g is not finite", c->simThreshold);
+        return swi_fail(err, errlen, 2, "simulation threshold %g is not finite", c->simThreshold);
     if (c->res < 2 || c->res > 4000)
-        return swv_fail(err, errlen, 2, "comparison resolution %d outside 2..4000", c->res);
-    int rc = swv_corners_check(c->corners, photo->width, photo->height, err, errlen);
+        return swi_fail(err, errlen, 2, "comparison resolution %d outside 2..4000", c->res);
+    int rc = swi_corners_check(c->corners, photo->width, photo->height, err, errlen);
     if (rc)
         return rc;
     const double unit[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
     double H[9];
-    rc = swv_homography_solve(unit, c->corners, H, err, errlen);
+    rc = swi_homography_solve(unit, c->corners, H, err, errlen);
     if (rc)
         return rc;
     double thr = c->simThreshold >= 0 ? c->simThreshold : c->simRelThreshold * sim->vmax;
     m->simThresholdUsed = thr;
     int R = c->res;
-    swv_image *img = NULL;
+    swi_image *img = NULL;
     if (side) {
-        img = swv_image_alloc(3 * R + 2 * 8, R);
+        img = swi_image_alloc(3 * R + 2 * 8, R);
         if (!img)
-            return swv_fail(err, errlen, 1, "out of memory for the %dx%d side-by-side image", 3 * R + 16, R);
+            return swi_fail(err, errlen, 1, "out of memory for the %dx%d side-by-side image", 3 * R + 16, R);
         memset(img->rgb, 255, (size_t)img->width * (size_t)img->height * 3u);
     }
     for (int j = 0; j < R; j++) {
         for (int i = 0; i < R; i++) {
             double u = (i + 0.5) / R, v = (j + 0.5) / R, px, py;
-            if (swv_homography_apply(H, u, v, &px, &py)) {
-                swv_image_free(img);
-                return swv_fail(err, errlen, 2, "corners give a map that sends face point (%g, %g) to infinity", u, v);
+            if (swi_homography_apply(H, u, v, &px, &py)) {
+                swi_image_free(img);
+                return swi_fail(err, errlen, 2, "corners give a map that sends face point (%g, %g) to infinity", u, v);
             }
-            double L = swv_image_luma(photo, px, py);
+            double L = swi_image_luma(photo, px, py);
             int ps = L >= c->photoThreshold;
-            double sv = swv_simmap_at(sim, u, v);
+            double sv = swi_simmap_at(sim, u, v);
             int ss = sim->vmax > 0 ? sv >= thr : 0;
             if (ps && ss) m->tp++;
             else if (ss) m->fp++;
@@ -396,12 +396,12 @@ int swv_compare_run(const swv_config *c, const swv_image *photo, const swv_simma
             }
         }
     }
-    swv_metrics_from_counts(m);
+    swi_metrics_from_counts(m);
     if (side) *side = img;
     return 0;
 }
 
-size_t swv_md_cell(const char *text, char *out, size_t outlen)
+size_t swi_md_cell(const char *text, char *out, size_t outlen)
 {
     size_t k = 0;
     for (const unsigned char *p = (const unsigned char *)text; *p; p++) {
@@ -423,33 +423,33 @@ size_t swv_md_cell(const char *text, char *out, size_t outlen)
     return k;
 }
 
-const char *swv_region_name(int r)
+const char *swi_region_name(int r)
 {
-    static const char *names[SWV_NREGIONS] = {"left side", "right side", "centre", "edges"};
-    return r >= 0 && r < SWV_NREGIONS ? names[r] : "?";
+    static const char *names[SWI_NREGIONS] = {"left side", "right side", "centre", "edges"};
+    return r >= 0 && r < SWI_NREGIONS ? names[r] : "?";
 }
 
-int swv_regions(const swv_simmap *sim, double threshold, double band, double holdFraction,
-                swv_region_stats *s, char *err, size_t errlen)
+int swi_regions(const swi_simmap *sim, double threshold, double band, double holdFraction,
+                swi_region_stats *s, char *err, size_t errlen)
 {
     memset(s, 0, sizeof *s);
     if (!(threshold >= 0) || !isfinite(threshold))
-        return swv_fail(err, errlen, 2, "region threshold %g must be >= 0", threshold);
+        return swi_fail(err, errlen, 2, "region threshold %g must be >= 0", threshold);
     if (!(band > 0 && band < 0.3))
-        return swv_fail(err, errlen, 2, "edge band %g outside (0, 0.3)", band);
+        return swi_fail(err, errlen, 2, "edge band %g outside (0, 0.3)", band);
     if (!(holdFraction > 0 && holdFraction <= 1))
-        return swv_fail(err, errlen, 2, "hold fraction %g outside (0, 1]", holdFraction);
-    int hit[SWV_NREGIONS] = {0};
+        return swi_fail(err, errlen, 2, "hold fraction %g outside (0, 1]", holdFraction);
+    int hit[SWI_NREGIONS] = {0};
     const double faceArea = (sim->y1 - sim->y0) / sim->ny * ((sim->z1 - sim->z0) / sim->nz);
     for (int iz = 0; iz < sim->nz; iz++) {
         for (int iy = 0; iy < sim->ny; iy++) {
             double u = (iy + 0.5) / sim->ny, v = 1 - (iz + 0.5) / sim->nz;
             double val = sim->val[iy + sim->ny * iz];
             int r;
-            if (u < band || u > 1 - band || v < band || v > 1 - band) r = SWV_REGION_EDGES;
-            else if (u < 0.35) r = SWV_REGION_LEFT;
-            else if (u > 0.65) r = SWV_REGION_RIGHT;
-            else if (v >= 0.3 && v <= 0.7) r = SWV_REGION_CENTRE;
+            if (u < band || u > 1 - band || v < band || v > 1 - band) r = SWI_REGION_EDGES;
+            else if (u < 0.35) r = SWI_REGION_LEFT;
+            else if (u > 0.65) r = SWI_REGION_RIGHT;
+            else if (v >= 0.3 && v <= 0.7) r = SWI_REGION_CENTRE;
             else continue;      /* above / below the centre: in no region */
             s->nfaces[r]++;
             s->mean[r] += val;
@@ -457,10 +457,10 @@ int swv_regions(const swv_simmap *sim, double threshold, double band, double hol
             if (val >= threshold && val > 0) hit[r]++;
         }
     }
-    for (int r = 0; r < SWV_NREGIONS; r++) {
+    for (int r = 0; r < SWI_NREGIONS; r++) {
         if (s->nfaces[r] == 0)
-            return swv_fail(err, errlen, 2, "the %dx%d map has no face in region '%s' (too coarse)",
-                        sim->ny, sim->nz, swv_region_name(r));
+            return swi_fail(err, errlen, 2, "the %dx%d map has no face in region '%s' (too coarse)",
+                        sim->ny, sim->nz, swi_region_name(r));
         s->mean[r] /= s->nfaces[r];
         s->covered[r] = (double)hit[r] / s->nfaces[r];
         s->holds[r] = s->covered[r] >= holdFraction;

@@ -1,32 +1,32 @@
-/* swv_synth.h - synthetic rear-face photos and simulated maps with a known overlap
- * (shared by the cmocka tests and the swv_testimg generator). */
-#ifndef SWV_SYNTH_H
-#define SWV_SYNTH_H
+/* swi_synth.h - synthetic rear-face photos and simulated maps with a known overlap
+ * (shared by the cmocka tests and the swi_testimg generator). */
+#ifndef SWI_SYNTH_H
+#define SWI_SYNTH_H
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "swv_compare.h"
-#include "swv_homography.h"
-#include "swv_image.h"
+#include "swi_compare.h"
+#include "swi_homography.h"
+#include "swi_image.h"
 
 /* The face seen in perspective in a 640 x 480 photo. */
 static const double synth_corners[4][2] = {{100, 80}, {540, 60}, {580, 420}, {60, 400}};
 
 /* Photo: background luminance 0.15, face 0.3, snow 0.9 where u < su and v < sv. */
-static inline swv_image *synth_photo(double su, double sv)
+static inline swi_image *synth_photo(double su, double sv)
 {
     const double unit[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
     double Hinv[9];
-    if (swv_homography_solve(synth_corners, unit, Hinv, NULL, 0))
+    if (swi_homography_solve(synth_corners, unit, Hinv, NULL, 0))
         return NULL;
-    swv_image *img = swv_image_alloc(640, 480);
+    swi_image *img = swi_image_alloc(640, 480);
     if (!img)
         return NULL;
     for (int y = 0; y < img->height; y++)
         for (int x = 0; x < img->width; x++) {
             double u, v, L = 0.15;
-            if (!swv_homography_apply(Hinv, x + 0.5, y + 0.5, &u, &v) && u >= 0 && u <= 1 &&
+            if (!swi_homography_apply(Hinv, x + 0.5, y + 0.5, &u, &v) && u >= 0 && u <= 1 &&
                 v >= 0 && v <= 1)
                 L = (u < su && v < sv) ? 0.9 : 0.3;
             unsigned char g = (unsigned char)lround(L * 255);
@@ -95,9 +95,9 @@ static inline void synth_be(unsigned char *p, unsigned long v, int bytes)
 
 /* A w0 x h0 image of deterministic noise (compresses badly: a JPEG of 96 x 96 at
  * quality 95 is about 12 KB). */
-static inline swv_image *synth_noise(int w0, int h0)
+static inline swi_image *synth_noise(int w0, int h0)
 {
-    swv_image *img = swv_image_alloc(w0, h0);
+    swi_image *img = swi_image_alloc(w0, h0);
     unsigned long r = 12345;
     for (size_t i = 0; img && i < (size_t)w0 * (size_t)h0 * 3u; i++) {
         r = r * 1103515245UL + 12345UL;
@@ -109,9 +109,9 @@ static inline swv_image *synth_noise(int w0, int h0)
 /* A real 1 x 1 PNG whose IHDR (CRC recomputed) claims w x h pixels. */
 static inline int synth_png_claiming(const char *path, unsigned long w, unsigned long h)
 {
-    swv_image *img = synth_noise(1, 1);
-    int rc = !img || swv_image_write_png(path, img, NULL, 0);
-    swv_image_free(img);
+    swi_image *img = synth_noise(1, 1);
+    int rc = !img || swi_image_write_png(path, img, NULL, 0);
+    swi_image_free(img);
     size_t n = 0;
     unsigned char *b = rc ? NULL : synth_slurp(path, &n);
     if (!b || n < 33 || memcmp(b + 12, "IHDR", 4) != 0) {
@@ -131,9 +131,9 @@ static inline int synth_png_claiming(const char *path, unsigned long w, unsigned
 static inline int synth_jpeg_claiming(const char *path, int w0, int h0, unsigned long w,
                                       unsigned long h)
 {
-    swv_image *img = synth_noise(w0, h0);
-    int rc = !img || swv_image_write_jpeg(path, img, 95, NULL, 0);
-    swv_image_free(img);
+    swi_image *img = synth_noise(w0, h0);
+    int rc = !img || swi_image_write_jpeg(path, img, 95, NULL, 0);
+    swi_image_free(img);
     size_t n = 0;
     unsigned char *b = rc ? NULL : synth_slurp(path, &n);
     rc = 1;

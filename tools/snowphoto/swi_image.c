@@ -1,6 +1,6 @@
-/* swv_image.c - PNG (libpng simplified API) and JPEG (libjpeg) reading/writing. */
-#include "swv_image.h"
-#include "swv_error.h"
+/* swi_image.c - PNG (libpng simplified API) and JPEG (libjpeg) reading/writing. */
+#include "swi_image.h"
+#include "swi_error.h"
 #include "swo_out.h"
 
 #include <errno.h>
@@ -15,25 +15,25 @@
 #include <unistd.h>
 
 
-int swv_image_check_size(const char *name, const char *what, unsigned long width,
+int swi_image_check_size(const char *name, const char *what, unsigned long width,
                           unsigned long height, char *err, size_t errlen)
 {
-    if (width >= 1 && height >= 1 && width <= SWV_IMAGE_MAX_SIDE && height <= SWV_IMAGE_MAX_SIDE &&
-        width * height <= SWV_IMAGE_MAX_PIXELS)
+    if (width >= 1 && height >= 1 && width <= SWI_IMAGE_MAX_SIDE && height <= SWI_IMAGE_MAX_SIDE &&
+        width * height <= SWI_IMAGE_MAX_PIXELS)
         return 0;
-    return swv_fail(err, errlen, 2,
+    return swi_fail(err, errlen, 2,
                     "%s: %s header claims %lu x %lu pixels (%.1f MP); the limit is 1 .. %d px per "
                     "side and %g MP",
                     name, what, width, height, (double)width * (double)height / 1e6,
-                    SWV_IMAGE_MAX_SIDE, SWV_IMAGE_MAX_PIXELS / 1e6);
+                    SWI_IMAGE_MAX_SIDE, SWI_IMAGE_MAX_PIXELS / 1e6);
 }
 
-swv_image *swv_image_alloc(int width, int height)
+swi_image *swi_image_alloc(int width, int height)
 {
     if (width < 1 || height < 1 ||
-        swv_image_check_size("", "", (unsigned long)width, (unsigned long)height, NULL, 0))
+        swi_image_check_size("", "", (unsigned long)width, (unsigned long)height, NULL, 0))
         return NULL;
-    swv_image *img = malloc(sizeof *img);
+    swi_image *img = malloc(sizeof *img);
     if (!img)
         return NULL;
     img->width = width;
@@ -46,7 +46,7 @@ swv_image *swv_image_alloc(int width, int height)
     return img;
 }
 
-void swv_image_free(swv_image *img)
+void swi_image_free(swi_image *img)
 {
     if (!img)
         return;
@@ -58,28 +58,28 @@ void swv_image_free(swv_image *img)
  * its size checked before the pixel buffer exists. A truncated or corrupt stream
  * fails in finish_read (libpng reports it in pi.message, never on stderr).
  * Ancillary-chunk warnings (a bad sRGB profile, say) stay warnings. */
-static int read_png(FILE *f, const char *name, swv_image **out, char *err, size_t errlen)
+static int read_png(FILE *f, const char *name, swi_image **out, char *err, size_t errlen)
 {
     png_image pi;
     memset(&pi, 0, sizeof pi);
     pi.version = PNG_IMAGE_VERSION;
     if (!png_image_begin_read_from_stdio(&pi, f))
-        return swv_fail(err, errlen, 2, "%s: not a readable PNG (%s)", name, pi.message);
-    int rc = swv_image_check_size(name, "PNG", pi.width, pi.height, err, errlen);
+        return swi_fail(err, errlen, 2, "%s: not a readable PNG (%s)", name, pi.message);
+    int rc = swi_image_check_size(name, "PNG", pi.width, pi.height, err, errlen);
     if (rc) {
         png_image_free(&pi);
         return rc;
     }
     pi.format = PNG_FORMAT_RGB;
-    swv_image *img = swv_image_alloc((int)pi.width, (int)pi.height);
+    swi_image *img = swi_image_alloc((int)pi.width, (int)pi.height);
     if (!img) {
         png_image_free(&pi);
-        return swv_fail(err, errlen, 1, "%s: out of memory for %ux%u pixels", name, pi.width,
+        return swi_fail(err, errlen, 1, "%s: out of memory for %ux%u pixels", name, pi.width,
                         pi.height);
     }
     if (!png_image_finish_read(&pi, NULL, img->rgb, 0, NULL)) {
-        swv_image_free(img);
-        return swv_fail(err, errlen, 2, "%s: PNG decoding failed (%s%s)", name, pi.message,
+        swi_image_free(img);
+        return swi_fail(err, errlen, 2, "%s: PNG decoding failed (%s%s)", name, pi.message,
                         feof(f) ? ": the file ends early, truncated?" : "");
     }
     *out = img;
@@ -125,7 +125,7 @@ static void jerr_init(struct jpeg_error_mgr *pub)
 /* A progressive JPEG may hold any number of scans, and the decoder passes over
  * the image's coefficients for each: a small file of many near-empty scans of a
  * large image costs scans x pixels. Photos have about 10 scans; more than
- * SWV_JPEG_MAX_SCANS is an error (libjpeg-turbo's own fuzzers use a limit too). */
+ * SWI_JPEG_MAX_SCANS is an error (libjpeg-turbo's own fuzzers use a limit too). */
 struct jprog {
     struct jpeg_progress_mgr pub;
     struct jerr *je;
@@ -135,24 +135,24 @@ static void jprog_monitor(j_common_ptr cinfo)
 {
     struct jprog *p = (struct jprog *)cinfo->progress;
     if (cinfo->is_decompressor &&
-        ((j_decompress_ptr)cinfo)->input_scan_number > SWV_JPEG_MAX_SCANS) {
-        snprintf(p->je->msg, sizeof p->je->msg, "more than %d scans", SWV_JPEG_MAX_SCANS);
+        ((j_decompress_ptr)cinfo)->input_scan_number > SWI_JPEG_MAX_SCANS) {
+        snprintf(p->je->msg, sizeof p->je->msg, "more than %d scans", SWI_JPEG_MAX_SCANS);
         longjmp(p->je->jb, 1);
     }
 }
 
-static int read_jpeg(FILE *f, const char *name, swv_image **out, char *err, size_t errlen)
+static int read_jpeg(FILE *f, const char *name, swi_image **out, char *err, size_t errlen)
 {
     struct jpeg_decompress_struct ci;
     struct jerr je;
     struct jprog prog;
-    swv_image *volatile img = NULL;
+    swi_image *volatile img = NULL;
     ci.err = &je.pub;
     jerr_init(&je.pub);
     if (setjmp(je.jb)) {
         jpeg_destroy_decompress(&ci);
-        swv_image_free(img);
-        return swv_fail(err, errlen, 2, "%s: JPEG decoding failed (%s)", name, je.msg);
+        swi_image_free(img);
+        return swi_fail(err, errlen, 2, "%s: JPEG decoding failed (%s)", name, je.msg);
     }
     jpeg_create_decompress(&ci);
     prog.pub.progress_monitor = jprog_monitor;
@@ -161,7 +161,7 @@ static int read_jpeg(FILE *f, const char *name, swv_image **out, char *err, size
     jpeg_stdio_src(&ci, f);
     jpeg_read_header(&ci, TRUE);
     /* the size from the frame header, before libjpeg or we allocate anything for it */
-    int rc = swv_image_check_size(name, "JPEG", ci.image_width, ci.image_height, err, errlen);
+    int rc = swi_image_check_size(name, "JPEG", ci.image_width, ci.image_height, err, errlen);
     if (rc) {
         jpeg_destroy_decompress(&ci);
         return rc;
@@ -170,13 +170,13 @@ static int read_jpeg(FILE *f, const char *name, swv_image **out, char *err, size
     jpeg_start_decompress(&ci);
     if (ci.output_components != 3) {
         jpeg_destroy_decompress(&ci);
-        return swv_fail(err, errlen, 2, "%s: JPEG with %d components, expected RGB", name,
+        return swi_fail(err, errlen, 2, "%s: JPEG with %d components, expected RGB", name,
                         ci.output_components);
     }
-    img = swv_image_alloc((int)ci.output_width, (int)ci.output_height);
+    img = swi_image_alloc((int)ci.output_width, (int)ci.output_height);
     if (!img) {
         jpeg_destroy_decompress(&ci);
-        return swv_fail(err, errlen, 1, "%s: out of memory for %ux%u pixels", name,
+        return swi_fail(err, errlen, 1, "%s: out of memory for %ux%u pixels", name,
                         ci.output_width, ci.output_height);
     }
     while (ci.output_scanline < ci.output_height) {
@@ -191,45 +191,45 @@ static int read_jpeg(FILE *f, const char *name, swv_image **out, char *err, size
 
 /* The one decoding path: a PNG or JPEG from an open stream, detected from its
  * first bytes. */
-static int read_stream(FILE *f, const char *name, swv_image **out, char *err, size_t errlen)
+static int read_stream(FILE *f, const char *name, swi_image **out, char *err, size_t errlen)
 {
     unsigned char magic[8] = {0};
     size_t n = fread(magic, 1, sizeof magic, f);
     if (ferror(f) || fseek(f, 0, SEEK_SET) != 0)
-        return swv_fail(err, errlen, 2, "%s: cannot read (%s)", name, strerror(errno));
+        return swi_fail(err, errlen, 2, "%s: cannot read (%s)", name, strerror(errno));
     static const unsigned char png_sig[8] = {0x89, 'P', 'N', 'G', 0x0d, 0x0a, 0x1a, 0x0a};
     if (n == 8 && memcmp(magic, png_sig, 8) == 0)
         return read_png(f, name, out, err, errlen);
     if (n >= 3 && magic[0] == 0xff && magic[1] == 0xd8 && magic[2] == 0xff)
         return read_jpeg(f, name, out, err, errlen);
     if (n == 0)
-        return swv_fail(err, errlen, 2, "%s: empty file (neither PNG nor JPEG)", name);
-    return swv_fail(err, errlen, 2, "%s: neither PNG nor JPEG (unknown file signature)", name);
+        return swi_fail(err, errlen, 2, "%s: empty file (neither PNG nor JPEG)", name);
+    return swi_fail(err, errlen, 2, "%s: neither PNG nor JPEG (unknown file signature)", name);
 }
 
-int swv_image_read(const char *path, swv_image **out, char *err, size_t errlen)
+int swi_image_read(const char *path, swi_image **out, char *err, size_t errlen)
 {
     *out = NULL;
     FILE *f = fopen(path, "rb");
     if (!f)
-        return swv_fail(err, errlen, 2, "%s: cannot open (%s)", path, strerror(errno));
+        return swi_fail(err, errlen, 2, "%s: cannot open (%s)", path, strerror(errno));
     int rc = read_stream(f, path, out, err, errlen);
     fclose(f);
     return rc;
 }
 
-int swv_image_read_mem(const unsigned char *data, size_t n, const char *name, swv_image **out,
+int swi_image_read_mem(const unsigned char *data, size_t n, const char *name, swi_image **out,
                        char *err, size_t errlen)
 {
     *out = NULL;
     if (!name)
         name = "(memory)";
     if (!data || n == 0)
-        return swv_fail(err, errlen, 2, "%s: empty file (neither PNG nor JPEG)", name);
+        return swi_fail(err, errlen, 2, "%s: empty file (neither PNG nor JPEG)", name);
     /* read-only use of data: fmemopen's buffer is not const in its prototype */
     FILE *f = fmemopen((void *)(uintptr_t)data, n, "rb");
     if (!f)
-        return swv_fail(err, errlen, 1, "%s: fmemopen failed (%s)", name, strerror(errno));
+        return swi_fail(err, errlen, 1, "%s: fmemopen failed (%s)", name, strerror(errno));
     int rc = read_stream(f, name, out, err, errlen);
     fclose(f);
     return rc;
@@ -247,7 +247,7 @@ static FILE *open_out(const char *path, swo_set **set, int *code, char *err, siz
     int rc = swo_alloc(&spec, set, e, sizeof e);
     FILE *f = rc == SWO_OK ? swo_open(*set, path, e, sizeof e) : NULL;
     if (!f) {
-        *code = swv_fail(err, errlen, *set ? swo_code(*set) : rc, "%s", e);
+        *code = swi_fail(err, errlen, *set ? swo_code(*set) : rc, "%s", e);
         swo_free(*set);
         *set = NULL;
     }
@@ -259,7 +259,7 @@ static int finish_out(swo_set *set, char *err, size_t errlen)
     char e[600];
     int rc = swo_commit(set, e, sizeof e);
     if (rc != SWO_OK)
-        swv_fail(err, errlen, rc, "%s", e);
+        swi_fail(err, errlen, rc, "%s", e);
     swo_free(set);
     return rc;
 }
@@ -271,7 +271,7 @@ static int drop_out(swo_set *set)
     return 1;
 }
 
-int swv_image_write_png(const char *path, const swv_image *img, char *err, size_t errlen)
+int swi_image_write_png(const char *path, const swi_image *img, char *err, size_t errlen)
 {
     swo_set *set;
     int code;
@@ -286,16 +286,16 @@ int swv_image_write_png(const char *path, const swv_image *img, char *err, size_
     pi.format = PNG_FORMAT_RGB;
     if (!png_image_write_to_stdio(&pi, f, 0, img->rgb, 0, NULL)) {
         drop_out(set);
-        return swv_fail(err, errlen, 1, "%s: PNG encoding failed (%s)", path, pi.message);
+        return swi_fail(err, errlen, 1, "%s: PNG encoding failed (%s)", path, pi.message);
     }
     return finish_out(set, err, errlen);
 }
 
-int swv_image_write_jpeg(const char *path, const swv_image *img, int quality, char *err,
+int swi_image_write_jpeg(const char *path, const swi_image *img, int quality, char *err,
                          size_t errlen)
 {
     if (quality < 1 || quality > 100)
-        return swv_fail(err, errlen, 2, "JPEG quality %d outside 1..100", quality);
+        return swi_fail(err, errlen, 2, "JPEG quality %d outside 1..100", quality);
     swo_set *set;
     int code;
     FILE *f = open_out(path, &set, &code, err, errlen);
@@ -308,7 +308,7 @@ int swv_image_write_jpeg(const char *path, const swv_image *img, int quality, ch
     if (setjmp(je.jb)) {
         jpeg_destroy_compress(&ci);
         drop_out(set);
-        return swv_fail(err, errlen, 1, "%s: JPEG encoding failed (%s)", path, je.msg);
+        return swi_fail(err, errlen, 1, "%s: JPEG encoding failed (%s)", path, je.msg);
     }
     jpeg_create_compress(&ci);
     jpeg_stdio_dest(&ci, f);
@@ -328,13 +328,13 @@ int swv_image_write_jpeg(const char *path, const swv_image *img, int quality, ch
     return finish_out(set, err, errlen);
 }
 
-static double luma_px(const swv_image *img, int x, int y)
+static double luma_px(const swi_image *img, int x, int y)
 {
     const unsigned char *p = img->rgb + ((size_t)y * (size_t)img->width + (size_t)x) * 3u;
     return (0.299 * p[0] + 0.587 * p[1] + 0.114 * p[2]) / 255.0;
 }
 
-double swv_image_luma(const swv_image *img, double x, double y)
+double swi_image_luma(const swi_image *img, double x, double y)
 {
     /* pixel i covers [i, i+1): centre at i + 0.5 */
     double fx = x - 0.5, fy = y - 0.5;

@@ -1,5 +1,5 @@
 /* swl_main.c - snowlammps: the rough-wall impacts of the kernel checked against
- * LAMMPS (issue 24); options, help, exit status. The work is in swl_compare.c. */
+ * LAMMPS; options, help, exit status. The work is in swl_compare.c. */
 #include "swl_lammps.h"
 #include "swo_out.h"
 
@@ -14,7 +14,7 @@
 
 static const char *usage =
 "NAME\n"
-"    snowlammps - the rough-wall impacts of the kernel checked against LAMMPS (issue 24)\n"
+"    snowlammps - the rough-wall impacts of the kernel checked against LAMMPS\n"
 "\n"
 "SYNOPSIS\n"
 "    snowlammps --out DIR [--force] [--lmp LMP] [--deck FILE] [--d D] [--grid K] [--angles LIST]\n"
@@ -33,8 +33,8 @@ static const char *usage =
 "    number of contacts made and stick/bounce (x along the incoming tangential\n"
 "    motion, z the wall normal). In LAMMPS the asperities are frozen spheres of\n"
 "    radius r centred on z = 0, the base plane is fix wall/gran, the sphere is\n"
-"    integrated by nve/sphere (the input deck validation/lammps/impact.lmp). Both\n"
-"    codes use the kernel's default material constants. Normally run through\n"
+"    integrated by nve/sphere (the input deck tools/snowlammps/impact.lmp).\n"
+"    Both codes use the kernel's default material constants. Normally run through\n"
 "    validation/lammps-rough.sh, which adds --quick and an output folder that\n"
 "    appears whole or not at all.\n"
 "\n"
@@ -61,7 +61,7 @@ static const char *usage =
 "                         replaced, nothing else is touched, no marker is added)\n"
 "    --lmp LMP            the LAMMPS binary, a path or a name on PATH (default lmp)\n"
 "    --deck FILE          LAMMPS input deck of one impact (default\n"
-"                         ../validation/lammps/impact.lmp beside this program's folder,\n"
+"                         ../tools/snowlammps/impact.lmp beside this program's folder,\n"
 "                         else the source tree's)\n"
 "    --d D                particle diameter [m] (default 10e-6; 2e-6 .. 1e-4)\n"
 "    --grid K             K x K impact points over the lattice's unit cell,\n"
@@ -179,19 +179,19 @@ static int list(const char *opt, const char *s, double lo, double hi, int lo_ope
     return 0;
 }
 
-/* the deck beside the program: <dir of the executable>/../validation/lammps/impact.lmp */
+/* the deck beside the program: <dir of the executable>/../tools/snowlammps/impact.lmp */
 static void default_deck(char *buf, size_t n)
 {
     char exe[PATH_MAX];
     const ssize_t k = readlink("/proc/self/exe", exe, sizeof exe - 1);
     if (k <= 0) {
-        snprintf(buf, n, "validation/lammps/impact.lmp");
+        snprintf(buf, n, "tools/snowlammps/impact.lmp");
         return;
     }
     exe[k] = '\0';
     char *sl = strrchr(exe, '/');
     if (sl) *sl = '\0';
-    snprintf(buf, n, "%s/../validation/lammps/impact.lmp", exe);
+    snprintf(buf, n, "%s/../tools/snowlammps/impact.lmp", exe);
 #ifdef SWL_SOURCE_DECK
     if (access(buf, R_OK) != 0) /* in the build tree: the source's */
         snprintf(buf, n, "%s", SWL_SOURCE_DECK);

@@ -1,10 +1,10 @@
 /* swl_lammps.h - snowlammps: the rough-wall impacts of the kernel's 3-D
  * multi-contact integrator (regime/kernel/swr_rough.c) run again in LAMMPS
- * (issue 24, item 1; doc/kernel.md, "Cross-check against LAMMPS").
+ * (doc/kernel.md, "Cross-check against LAMMPS").
  *
  * The wall: the kernel's default lattice (square, hemispherical asperities of
  * radius r at spacing s on the plane z = 0), in LAMMPS frozen spheres of radius r
- * centred on z = 0 plus the base plane as fix wall/gran (validation/lammps/
+ * centred on z = 0 plus the base plane as fix wall/gran (tools/snowlammps/
  * impact.lmp). The material constants are the kernel's defaults
  * (swr_params_default with wall lattice), so both codes use the same numbers.
  *
@@ -84,7 +84,7 @@ typedef struct {
 
 typedef struct {
     const char *lmp;      /* the LAMMPS binary (a path, or a name on PATH) */
-    const char *deck;     /* validation/lammps/impact.lmp */
+    const char *deck;     /* tools/snowlammps/impact.lmp */
     const char *work;     /* work folder */
     const swl_model *m;
     double steps;         /* steps per flat-wall contact time */

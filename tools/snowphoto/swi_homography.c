@@ -1,12 +1,12 @@
-/* swv_homography.c - 4-point homography: the 8x8 linear system, GSL LU. */
-#include "swv_homography.h"
+/* swi_homography.c - 4-point homography: the 8x8 linear system, GSL LU. */
+#include "swi_homography.h"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_linalg.h>
 #include <math.h>
 #include <stdio.h>
 
-int swv_homography_solve(const double src[4][2], const double dst[4][2], double H[9],
+int swi_homography_solve(const double src[4][2], const double dst[4][2], double H[9],
                          char *err, size_t errlen)
 {
     for (int i = 0; i < 4; i++)
@@ -89,7 +89,7 @@ done:
     return rc;
 }
 
-int swv_homography_apply(const double H[9], double x, double y, double *xo, double *yo)
+int swi_homography_apply(const double H[9], double x, double y, double *xo, double *yo)
 {
     double w = H[6] * x + H[7] * y + H[8];
     if (!(fabs(w) > 1e-300))

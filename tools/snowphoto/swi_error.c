@@ -1,10 +1,10 @@
-/* swv_error.c - the validation module's error reporting (see swv_error.h). */
-#include "swv_error.h"
+/* swi_error.c - the photo comparison's error reporting (see swi_error.h). */
+#include "swi_error.h"
 
 #include <stdarg.h>
 #include <stdio.h>
 
-int swv_fail(char *err, size_t errlen, int code, const char *fmt, ...)
+int swi_fail(char *err, size_t errlen, int code, const char *fmt, ...)
 {
     if (err && errlen) {
         va_list ap;

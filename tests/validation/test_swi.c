@@ -1,4 +1,4 @@
-/* test_swv.c - cmocka tests of the photo comparison (validation/swv_*). */
+/* test_swi.c - cmocka tests of the photo comparison (tools/snowphoto/swi_*). */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -10,8 +10,8 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "swv_synth.h"
-#include <jpeglib.h>   /* after stdio.h (swv_synth.h): the many-scans JPEG */
+#include "swi_synth.h"
+#include <jpeglib.h>   /* after stdio.h (swi_synth.h): the many-scans JPEG */
 
 static char tmpdir[256];
 
@@ -27,17 +27,17 @@ static void test_homography_known(void **state)
     const double Href[9] = {1.3, 0.2, 10, -0.1, 0.9, 5, 1e-3, -2e-3, 1};
     double src[4][2] = {{0, 0}, {100, 0}, {100, 80}, {0, 80}}, dst[4][2];
     for (int i = 0; i < 4; i++)
-        assert_int_equal(swv_homography_apply(Href, src[i][0], src[i][1], &dst[i][0], &dst[i][1]), 0);
+        assert_int_equal(swi_homography_apply(Href, src[i][0], src[i][1], &dst[i][0], &dst[i][1]), 0);
     double H[9];
     char err[256];
-    assert_int_equal(swv_homography_solve(src, dst, H, err, sizeof err), 0);
+    assert_int_equal(swi_homography_solve(src, dst, H, err, sizeof err), 0);
     for (int k = 0; k < 9; k++)
         assert_true(fabs(H[k] - Href[k]) < 1e-9 * (1 + fabs(Href[k])));
     for (double x = -20; x <= 120; x += 17)
         for (double y = -10; y <= 90; y += 13) {
             double a, b, c, d;
-            swv_homography_apply(Href, x, y, &a, &b);
-            swv_homography_apply(H, x, y, &c, &d);
+            swi_homography_apply(Href, x, y, &a, &b);
+            swi_homography_apply(H, x, y, &c, &d);
             assert_true(fabs(a - c) < 1e-8 && fabs(b - d) < 1e-8);
         }
 }
@@ -49,25 +49,25 @@ static void test_homography_degenerate(void **state)
     double collinear[4][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 5}};
     double H[9];
     char err[256] = "";
-    assert_int_not_equal(swv_homography_solve(src, collinear, H, err, sizeof err), 0);
+    assert_int_not_equal(swi_homography_solve(src, collinear, H, err, sizeof err), 0);
     assert_non_null(strstr(err, "collinear"));
     double nanpts[4][2] = {{0, 0}, {1, 0}, {1, NAN}, {0, 1}};
-    assert_int_not_equal(swv_homography_solve(src, nanpts, H, err, sizeof err), 0);
+    assert_int_not_equal(swi_homography_solve(src, nanpts, H, err, sizeof err), 0);
     assert_non_null(strstr(err, "not finite"));
 }
 
 static void test_metrics_counts(void **state)
 {
     (void)state;
-    swv_metrics m = {.tp = 30, .fp = 10, .fn = 20, .tn = 40};
-    swv_metrics_from_counts(&m);
+    swi_metrics m = {.tp = 30, .fp = 10, .fn = 20, .tn = 40};
+    swi_metrics_from_counts(&m);
     assert_true(fabs(m.iou - 0.5) < 1e-12);
     assert_true(fabs(m.dice - 2.0 / 3) < 1e-12);
     assert_true(fabs(m.precision - 0.75) < 1e-12);
     assert_true(fabs(m.recall - 0.6) < 1e-12);
     assert_true(fabs(m.photoSnowFraction - 0.5) < 1e-12);
-    swv_metrics e = {.tn = 5};
-    swv_metrics_from_counts(&e);
+    swi_metrics e = {.tn = 5};
+    swi_metrics_from_counts(&e);
     assert_true(e.iou == 1 && e.dice == 1 && e.precision == 1 && e.recall == 1);
 }
 
@@ -78,31 +78,31 @@ static void compare_file(const char *photo_name, int jpeg, double ulo, double uh
     char photo_path[512], csv_path[512], err[512];
     path_in_tmp(photo_path, sizeof photo_path, photo_name);
     path_in_tmp(csv_path, sizeof csv_path, "sim.csv");
-    swv_image *img = synth_photo(0.5, 0.5);
+    swi_image *img = synth_photo(0.5, 0.5);
     assert_non_null(img);
-    int rc = jpeg ? swv_image_write_jpeg(photo_path, img, 95, err, sizeof err)
-                  : swv_image_write_png(photo_path, img, err, sizeof err);
+    int rc = jpeg ? swi_image_write_jpeg(photo_path, img, 95, err, sizeof err)
+                  : swi_image_write_png(photo_path, img, err, sizeof err);
     assert_int_equal(rc, 0);
-    swv_image_free(img);
+    swi_image_free(img);
     assert_int_equal(synth_csv(csv_path, 8, ulo, uhi, 0.5), 0);
 
-    swv_image *photo = NULL;
-    assert_int_equal(swv_image_read(photo_path, &photo, err, sizeof err), 0);
+    swi_image *photo = NULL;
+    assert_int_equal(swi_image_read(photo_path, &photo, err, sizeof err), 0);
     assert_int_equal(photo->width, 640);
     assert_int_equal(photo->height, 480);
-    swv_simmap *sim = NULL;
-    assert_int_equal(swv_simmap_read(csv_path, &sim, err, sizeof err), 0);
+    swi_simmap *sim = NULL;
+    assert_int_equal(swi_simmap_read(csv_path, &sim, err, sizeof err), 0);
     assert_int_equal(sim->ny, 8);
     assert_int_equal(sim->nz, 8);
     assert_true(fabs(sim->y0 + 0.06) < 1e-9 && fabs(sim->z1 - 0.06) < 1e-9);
 
-    swv_config c;
-    swv_config_defaults(&c);
+    swi_config c;
+    swi_config_defaults(&c);
     memcpy(c.corners, synth_corners, sizeof c.corners);
     c.res = 160;
-    swv_metrics m;
-    swv_image *side = NULL;
-    assert_int_equal(swv_compare_run(&c, photo, sim, &m, &side, err, sizeof err), 0);
+    swi_metrics m;
+    swi_image *side = NULL;
+    assert_int_equal(swi_compare_run(&c, photo, sim, &m, &side, err, sizeof err), 0);
     print_message("%s u in [%g,%g): IoU %.4f Dice %.4f precision %.4f recall %.4f\n", photo_name,
                   ulo, uhi, m.iou, m.dice, m.precision, m.recall);
     assert_true(fabs(m.iou - iou) < tol);
@@ -112,9 +112,9 @@ static void compare_file(const char *photo_name, int jpeg, double ulo, double uh
     assert_true(fabs(m.simThresholdUsed - 0.2) < 1e-12);   /* 10 % of the 2.0 maximum */
     assert_non_null(side);
     assert_int_equal(side->width, 3 * 160 + 16);
-    swv_image_free(side);
-    swv_image_free(photo);
-    swv_simmap_free(sim);
+    swi_image_free(side);
+    swi_image_free(photo);
+    swi_simmap_free(sim);
     unlink(photo_path);
     unlink(csv_path);
 }
@@ -142,27 +142,27 @@ static void test_compare_jpeg(void **state)
 static void test_compare_bad_input(void **state)
 {
     (void)state;
-    swv_image *photo = synth_photo(0.5, 0.5);
+    swi_image *photo = synth_photo(0.5, 0.5);
     char csv_path[512], err[512] = "";
     path_in_tmp(csv_path, sizeof csv_path, "sim2.csv");
     assert_int_equal(synth_csv(csv_path, 4, 0, 1, 1), 0);
-    swv_simmap *sim = NULL;
-    assert_int_equal(swv_simmap_read(csv_path, &sim, err, sizeof err), 0);
-    swv_config c;
-    swv_config_defaults(&c);
+    swi_simmap *sim = NULL;
+    assert_int_equal(swi_simmap_read(csv_path, &sim, err, sizeof err), 0);
+    swi_config c;
+    swi_config_defaults(&c);
     memcpy(c.corners, synth_corners, sizeof c.corners);
-    swv_metrics m;
+    swi_metrics m;
     c.corners[2][0] = 700;   /* outside the 640 px wide photo */
-    assert_int_equal(swv_compare_run(&c, photo, sim, &m, NULL, err, sizeof err), 2);
+    assert_int_equal(swi_compare_run(&c, photo, sim, &m, NULL, err, sizeof err), 2);
     assert_non_null(strstr(err, "corner 3"));
     memcpy(c.corners, synth_corners, sizeof c.corners);
     c.photoThreshold = 1.5;
-    assert_int_equal(swv_compare_run(&c, photo, sim, &m, NULL, err, sizeof err), 2);
+    assert_int_equal(swi_compare_run(&c, photo, sim, &m, NULL, err, sizeof err), 2);
     c.photoThreshold = 0.5;
     c.corners[1][0] = 100; c.corners[1][1] = 80;   /* two corners coincide */
-    assert_int_not_equal(swv_compare_run(&c, photo, sim, &m, NULL, err, sizeof err), 0);
-    swv_simmap_free(sim);
-    swv_image_free(photo);
+    assert_int_not_equal(swi_compare_run(&c, photo, sim, &m, NULL, err, sizeof err), 0);
+    swi_simmap_free(sim);
+    swi_image_free(photo);
     unlink(csv_path);
 }
 
@@ -178,29 +178,29 @@ static void test_simmap_errors(void **state)
 {
     (void)state;
     char p[512], err[512];
-    swv_simmap *m = NULL;
+    swi_simmap *m = NULL;
     path_in_tmp(p, sizeof p, "bad.csv");
     write_text(p, "y,z,d\n0,0,1\n1,0,1\n0,1,1\n");   /* 3 faces: not a grid */
-    assert_int_equal(swv_simmap_read(p, &m, err, sizeof err), 2);
+    assert_int_equal(swi_simmap_read(p, &m, err, sizeof err), 2);
     write_text(p, "y,z,d\n0,0,1\n1,0,nan\n0,1,1\n1,1,1\n");
-    assert_int_equal(swv_simmap_read(p, &m, err, sizeof err), 2);
+    assert_int_equal(swi_simmap_read(p, &m, err, sizeof err), 2);
     assert_non_null(strstr(err, ":3:"));
     write_text(p, "y,z,d\n0,0,1\n1,0,-1\n0,1,1\n1,1,1\n");
-    assert_int_equal(swv_simmap_read(p, &m, err, sizeof err), 2);
+    assert_int_equal(swi_simmap_read(p, &m, err, sizeof err), 2);
     write_text(p, "y,z,d\n0,0,1\n1;0;1\n");
-    assert_int_equal(swv_simmap_read(p, &m, err, sizeof err), 2);
+    assert_int_equal(swi_simmap_read(p, &m, err, sizeof err), 2);
     assert_non_null(strstr(err, "expected"));
     write_text(p, "y,z,d\n0,0,1\n1,0,1\n3,0,1\n0,1,1\n1,1,1\n3,1,1\n");   /* uneven */
-    assert_int_equal(swv_simmap_read(p, &m, err, sizeof err), 2);
+    assert_int_equal(swi_simmap_read(p, &m, err, sizeof err), 2);
     assert_non_null(strstr(err, "evenly"));
     assert_null(m);
     unlink(p);
     path_in_tmp(p, sizeof p, "missing.csv");
-    assert_int_equal(swv_simmap_read(p, &m, err, sizeof err), 2);
-    swv_image *img = NULL;
+    assert_int_equal(swi_simmap_read(p, &m, err, sizeof err), 2);
+    swi_image *img = NULL;
     path_in_tmp(p, sizeof p, "notimage.png");
     write_text(p, "hello, not an image\n");
-    assert_int_equal(swv_image_read(p, &img, err, sizeof err), 2);
+    assert_int_equal(swi_image_read(p, &img, err, sizeof err), 2);
     assert_non_null(strstr(err, "neither PNG nor JPEG"));
     unlink(p);
 }
@@ -220,32 +220,32 @@ static void test_regions(void **state)
             fprintf(f, "%d,%d,%g\n", iy, iz, edge ? 1.0 : 0.0);
         }
     fclose(f);
-    swv_simmap *m = NULL;
-    assert_int_equal(swv_simmap_read(p, &m, err, sizeof err), 0);
-    swv_region_stats s;
-    assert_int_equal(swv_regions(m, 0.1, 0.1, 0.3, &s, err, sizeof err), 0);
-    assert_int_equal(s.holds[SWV_REGION_EDGES], 1);
-    assert_true(fabs(s.covered[SWV_REGION_EDGES] - 1) < 1e-12);
-    assert_int_equal(s.holds[SWV_REGION_LEFT], 0);
-    assert_int_equal(s.holds[SWV_REGION_RIGHT], 0);
-    assert_int_equal(s.holds[SWV_REGION_CENTRE], 0);
-    assert_int_equal(s.nfaces[SWV_REGION_EDGES], 400 - 16 * 16);
+    swi_simmap *m = NULL;
+    assert_int_equal(swi_simmap_read(p, &m, err, sizeof err), 0);
+    swi_region_stats s;
+    assert_int_equal(swi_regions(m, 0.1, 0.1, 0.3, &s, err, sizeof err), 0);
+    assert_int_equal(s.holds[SWI_REGION_EDGES], 1);
+    assert_true(fabs(s.covered[SWI_REGION_EDGES] - 1) < 1e-12);
+    assert_int_equal(s.holds[SWI_REGION_LEFT], 0);
+    assert_int_equal(s.holds[SWI_REGION_RIGHT], 0);
+    assert_int_equal(s.holds[SWI_REGION_CENTRE], 0);
+    assert_int_equal(s.nfaces[SWI_REGION_EDGES], 400 - 16 * 16);
     /* unit face spacing: region mass = number of faces x value */
-    assert_true(fabs(s.mass[SWV_REGION_EDGES] - 144) < 1e-9);
-    assert_true(fabs(s.mass[SWV_REGION_LEFT]) < 1e-12);
+    assert_true(fabs(s.mass[SWI_REGION_EDGES] - 144) < 1e-9);
+    assert_true(fabs(s.mass[SWI_REGION_LEFT]) < 1e-12);
     /* left side only: faces iy 2..6 (u 0.125 .. 0.325) */
     for (int i = 0; i < 400; i++) {
         int iy = i % 20;
         m->val[i] = (iy >= 2 && iy <= 6) ? 1.0 : 0.0;
     }
-    assert_int_equal(swv_regions(m, 0.1, 0.1, 0.3, &s, err, sizeof err), 0);
-    assert_int_equal(s.holds[SWV_REGION_LEFT], 1);
-    assert_int_equal(s.holds[SWV_REGION_RIGHT], 0);
-    assert_int_equal(s.holds[SWV_REGION_CENTRE], 0);
-    assert_true(fabs(s.mass[SWV_REGION_LEFT] - 5 * 16) < 1e-9);     /* iy 2..6, iz 2..17 */
-    assert_true(fabs(s.mass[SWV_REGION_EDGES] - 5 * 4) < 1e-9);     /* iy 2..6 in the band rows */
-    assert_int_equal(swv_regions(m, 0.1, 0.5, 0.3, &s, err, sizeof err), 2);
-    swv_simmap_free(m);
+    assert_int_equal(swi_regions(m, 0.1, 0.1, 0.3, &s, err, sizeof err), 0);
+    assert_int_equal(s.holds[SWI_REGION_LEFT], 1);
+    assert_int_equal(s.holds[SWI_REGION_RIGHT], 0);
+    assert_int_equal(s.holds[SWI_REGION_CENTRE], 0);
+    assert_true(fabs(s.mass[SWI_REGION_LEFT] - 5 * 16) < 1e-9);     /* iy 2..6, iz 2..17 */
+    assert_true(fabs(s.mass[SWI_REGION_EDGES] - 5 * 4) < 1e-9);     /* iy 2..6 in the band rows */
+    assert_int_equal(swi_regions(m, 0.1, 0.5, 0.3, &s, err, sizeof err), 2);
+    swi_simmap_free(m);
     unlink(p);
 }
 
@@ -261,30 +261,30 @@ static void test_image_size_check(void **state)
 {
     (void)state;
     char err[512] = "";
-    assert_int_equal(swv_image_check_size("a", "PNG", 10000, 10000, err, sizeof err), 0);
-    assert_int_equal(swv_image_check_size("a", "PNG", 30000, 3333, err, sizeof err), 0);
-    assert_int_equal(swv_image_check_size("a", "PNG", 1, 30000, err, sizeof err), 0);
-    assert_int_equal(swv_image_check_size("a", "PNG", 30001, 1, err, sizeof err), 2);
-    assert_int_equal(swv_image_check_size("a", "PNG", 1, 30001, err, sizeof err), 2);
-    assert_int_equal(swv_image_check_size("a", "PNG", 10001, 10000, err, sizeof err), 2);
-    assert_int_equal(swv_image_check_size("a", "PNG", 0, 5, err, sizeof err), 2);
-    assert_int_equal(swv_image_check_size("x.jpg", "JPEG", 4294967295UL, 4294967295UL, err,
+    assert_int_equal(swi_image_check_size("a", "PNG", 10000, 10000, err, sizeof err), 0);
+    assert_int_equal(swi_image_check_size("a", "PNG", 30000, 3333, err, sizeof err), 0);
+    assert_int_equal(swi_image_check_size("a", "PNG", 1, 30000, err, sizeof err), 0);
+    assert_int_equal(swi_image_check_size("a", "PNG", 30001, 1, err, sizeof err), 2);
+    assert_int_equal(swi_image_check_size("a", "PNG", 1, 30001, err, sizeof err), 2);
+    assert_int_equal(swi_image_check_size("a", "PNG", 10001, 10000, err, sizeof err), 2);
+    assert_int_equal(swi_image_check_size("a", "PNG", 0, 5, err, sizeof err), 2);
+    assert_int_equal(swi_image_check_size("x.jpg", "JPEG", 4294967295UL, 4294967295UL, err,
                                           sizeof err), 2);
     assert_non_null(strstr(err, "x.jpg: JPEG header claims 4294967295 x 4294967295 pixels"));
-    assert_null(swv_image_alloc(30001, 1));
-    assert_null(swv_image_alloc(10001, 10000));
+    assert_null(swi_image_alloc(30001, 1));
+    assert_null(swi_image_alloc(10001, 10000));
 }
 
 /* read a file both ways (path and bytes in memory); both must agree */
-static int read_both(const char *path, swv_image **img, char *err, size_t errlen)
+static int read_both(const char *path, swi_image **img, char *err, size_t errlen)
 {
-    int rc = swv_image_read(path, img, err, errlen);
+    int rc = swi_image_read(path, img, err, errlen);
     size_t n = 0;
     unsigned char *b = synth_slurp(path, &n);
     assert_non_null(b);
-    swv_image *m = NULL;
+    swi_image *m = NULL;
     char err2[512] = "";
-    int rc2 = swv_image_read_mem(b, n, path, &m, err2, sizeof err2);
+    int rc2 = swi_image_read_mem(b, n, path, &m, err2, sizeof err2);
     free(b);
     assert_int_equal(rc, rc2);
     if (rc) {
@@ -296,16 +296,16 @@ static int read_both(const char *path, swv_image **img, char *err, size_t errlen
         assert_int_equal(m->height, (*img)->height);
         assert_memory_equal(m->rgb, (*img)->rgb, (size_t)m->width * (size_t)m->height * 3u);
     }
-    swv_image_free(m);
+    swi_image_free(m);
     return rc;
 }
 
-/* issue 13: a small file claiming a huge size is refused from its header, at once */
+/* a small file claiming a huge size is refused from its header, at once */
 static void test_image_huge_header(void **state)
 {
     (void)state;
     char p[512], err[512] = "";
-    swv_image *img = NULL;
+    swi_image *img = NULL;
     path_in_tmp(p, sizeof p, "huge.jpg");
     assert_int_equal(synth_jpeg_claiming(p, 96, 96, 60000, 60000), 0);
     double t0 = now_s();
@@ -337,21 +337,22 @@ static void test_image_huge_header(void **state)
     /* the patched 1 x 1 file itself still reads */
     assert_int_equal(synth_png_claiming(p, 1, 1), 0);
     assert_int_equal(read_both(p, &img, err, sizeof err), 0);
-    swv_image_free(img);
+    swi_image_free(img);
     unlink(p);
 }
 
-/* issue 13: a truncated JPEG used to decode (grey rest, a warning on stderr), exit 0 */
+/* a truncated JPEG is refused, named (libjpeg alone decodes it: a grey rest and a
+ * warning on stderr) */
 static void test_image_truncated(void **state)
 {
     (void)state;
     char p[512], q[512], err[512] = "";
-    swv_image *img = synth_photo(0.5, 0.5), *back = NULL;
+    swi_image *img = synth_photo(0.5, 0.5), *back = NULL;
     path_in_tmp(p, sizeof p, "full.jpg");
     path_in_tmp(q, sizeof q, "half.jpg");
-    assert_int_equal(swv_image_write_jpeg(p, img, 95, err, sizeof err), 0);
+    assert_int_equal(swi_image_write_jpeg(p, img, 95, err, sizeof err), 0);
     assert_int_equal(read_both(p, &back, err, sizeof err), 0);
-    swv_image_free(back);
+    swi_image_free(back);
     assert_int_equal(synth_truncate(p, q, 0.5), 0);
     assert_int_equal(read_both(q, &back, err, sizeof err), 2);
     print_message("%s\n", err);
@@ -362,7 +363,7 @@ static void test_image_truncated(void **state)
     assert_non_null(b);
     for (size_t i = n / 2; i < n / 2 + 64; i++)
         b[i] = (unsigned char)(i * 37);
-    assert_int_equal(swv_image_read_mem(b, n, "corrupt.jpg", &back, err, sizeof err), 2);
+    assert_int_equal(swi_image_read_mem(b, n, "corrupt.jpg", &back, err, sizeof err), 2);
     print_message("%s\n", err);
     assert_non_null(strstr(err, "corrupt.jpg: JPEG decoding failed"));
     free(b);
@@ -370,7 +371,7 @@ static void test_image_truncated(void **state)
     unlink(q);
     path_in_tmp(p, sizeof p, "full.png");
     path_in_tmp(q, sizeof q, "half.png");
-    assert_int_equal(swv_image_write_png(p, img, err, sizeof err), 0);
+    assert_int_equal(swi_image_write_png(p, img, err, sizeof err), 0);
     assert_int_equal(synth_truncate(p, q, 0.5), 0);
     assert_int_equal(read_both(q, &back, err, sizeof err), 2);
     print_message("%s\n", err);
@@ -385,15 +386,15 @@ static void test_image_truncated(void **state)
     assert_int_equal(synth_truncate(p, q, 0.002), 0);   /* 5 bytes of the signature */
     assert_int_equal(read_both(q, &back, err, sizeof err), 2);
     assert_non_null(strstr(err, "neither PNG nor JPEG"));
-    assert_int_equal(swv_image_read_mem(NULL, 0, NULL, &back, err, sizeof err), 2);
+    assert_int_equal(swi_image_read_mem(NULL, 0, NULL, &back, err, sizeof err), 2);
     assert_non_null(strstr(err, "(memory)"));
-    swv_image_free(img);
+    swi_image_free(img);
     unlink(p);
     unlink(q);
 }
 
 /* A 3-component progressive JPEG with 2090 scans (every AC coefficient of every
- * component alone, then refined bit by bit): more than SWV_JPEG_MAX_SCANS. */
+ * component alone, then refined bit by bit): more than SWI_JPEG_MAX_SCANS. */
 static void write_many_scans_jpeg(const char *path)
 {
     enum { AL = 10 };
@@ -429,7 +430,7 @@ static void write_many_scans_jpeg(const char *path)
     ci.scan_info = scans;
     ci.num_scans = k;
     jpeg_start_compress(&ci, TRUE);
-    swv_image *img = synth_noise(16, 16);
+    swi_image *img = synth_noise(16, 16);
     assert_non_null(img);
     while (ci.next_scanline < ci.image_height) {
         JSAMPROW row = img->rgb + (size_t)ci.next_scanline * 48u;
@@ -438,7 +439,7 @@ static void write_many_scans_jpeg(const char *path)
     jpeg_finish_compress(&ci);
     jpeg_destroy_compress(&ci);
     fclose(f);
-    swv_image_free(img);
+    swi_image_free(img);
 }
 
 static void test_image_many_scans(void **state)
@@ -447,19 +448,20 @@ static void test_image_many_scans(void **state)
     char p[512], err[512] = "";
     path_in_tmp(p, sizeof p, "scans.jpg");
     write_many_scans_jpeg(p);
-    swv_image *img = NULL;
+    swi_image *img = NULL;
     assert_int_equal(read_both(p, &img, err, sizeof err), 2);
     print_message("%s\n", err);
     assert_non_null(strstr(err, "more than 1000 scans"));
     unlink(p);
 }
 
-/* issue 13: bow-tie, concave, mirrored, collinear and sub-pixel corner sets */
+/* corner sets: the face accepted; bow-tie, concave, mirrored, collinear and
+ * sub-pixel ones refused, named */
 static void test_corners(void **state)
 {
     (void)state;
     char err[512] = "";
-    assert_int_equal(swv_corners_check(synth_corners, 640, 480, err, sizeof err), 0);
+    assert_int_equal(swi_corners_check(synth_corners, 640, 480, err, sizeof err), 0);
     struct { double c[4][2]; const char *text; } bad[] = {
         {{{100, 80}, {540, 60}, {300, 150}, {60, 400}}, "concave at corner 3 (bottom-right"},
         {{{100, 80}, {540, 60}, {580, 420}, {200, 100}}, "concave at corner 4 (bottom-left"},
@@ -476,30 +478,30 @@ static void test_corners(void **state)
     };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         err[0] = '\0';
-        assert_int_equal(swv_corners_check((const double(*)[2])bad[i].c, 640, 480, err, sizeof err), 2);
+        assert_int_equal(swi_corners_check((const double(*)[2])bad[i].c, 640, 480, err, sizeof err), 2);
         print_message("%s\n", err);
         assert_non_null(strstr(err, bad[i].text));
     }
     /* the limits themselves: a 10 x 10 square passes, 9.9 x 20 does not */
     const double sq[4][2] = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
-    assert_int_equal(swv_corners_check(sq, 640, 480, err, sizeof err), 0);
+    assert_int_equal(swi_corners_check(sq, 640, 480, err, sizeof err), 0);
     const double thin[4][2] = {{0, 0}, {20, 0}, {20, 9.9}, {0, 9.9}};
-    assert_int_equal(swv_corners_check(thin, 640, 480, err, sizeof err), 2);
+    assert_int_equal(swi_corners_check(thin, 640, 480, err, sizeof err), 2);
     /* the comparison runs the same check first */
-    swv_image *photo = synth_photo(0.5, 0.5);
+    swi_image *photo = synth_photo(0.5, 0.5);
     char csv[512];
     path_in_tmp(csv, sizeof csv, "c.csv");
     assert_int_equal(synth_csv(csv, 4, 0, 1, 1), 0);
-    swv_simmap *sim = NULL;
-    assert_int_equal(swv_simmap_read(csv, &sim, err, sizeof err), 0);
-    swv_config c;
-    swv_config_defaults(&c);
+    swi_simmap *sim = NULL;
+    assert_int_equal(swi_simmap_read(csv, &sim, err, sizeof err), 0);
+    swi_config c;
+    swi_config_defaults(&c);
     memcpy(c.corners, bad[2].c, sizeof c.corners);
-    swv_metrics m;
-    assert_int_equal(swv_compare_run(&c, photo, sim, &m, NULL, err, sizeof err), 2);
+    swi_metrics m;
+    assert_int_equal(swi_compare_run(&c, photo, sim, &m, NULL, err, sizeof err), 2);
     assert_non_null(strstr(err, "bow-tie"));
-    swv_simmap_free(sim);
-    swv_image_free(photo);
+    swi_simmap_free(sim);
+    swi_image_free(photo);
     unlink(csv);
 }
 
@@ -508,15 +510,15 @@ static void test_md_cell(void **state)
     (void)state;
     char out[128];
     const char *in = "a|b\nc`d\\e<f\tg";
-    size_t n = swv_md_cell(in, out, sizeof out);
+    size_t n = swi_md_cell(in, out, sizeof out);
     assert_string_equal(out, "a\\|b c\\`d\\\\e\\<f g");
     assert_int_equal(n, strlen(out));
-    assert_int_equal(swv_md_cell(in, NULL, 0), n);
-    assert_int_equal(swv_md_cell(in, out, 4), n);   /* cut, always terminated */
+    assert_int_equal(swi_md_cell(in, NULL, 0), n);
+    assert_int_equal(swi_md_cell(in, out, 4), n);   /* cut, always terminated */
     assert_string_equal(out, "a\\|");
-    assert_int_equal(swv_md_cell("tangential 0.5 m/s", out, sizeof out), 18);
+    assert_int_equal(swi_md_cell("tangential 0.5 m/s", out, sizeof out), 18);
     assert_string_equal(out, "tangential 0.5 m/s");
-    assert_int_equal(swv_md_cell("", out, sizeof out), 0);
+    assert_int_equal(swi_md_cell("", out, sizeof out), 0);
     assert_string_equal(out, "");
 }
 
@@ -530,62 +532,62 @@ static void test_simmap_mem(void **state)
     size_t n = 0;
     unsigned char *b = synth_slurp(p, &n);
     assert_non_null(b);
-    swv_simmap *a = NULL, *m = NULL;
-    assert_int_equal(swv_simmap_read(p, &a, err, sizeof err), 0);
-    assert_int_equal(swv_simmap_read_mem((const char *)b, n, "mem", &m, err, sizeof err), 0);
+    swi_simmap *a = NULL, *m = NULL;
+    assert_int_equal(swi_simmap_read(p, &a, err, sizeof err), 0);
+    assert_int_equal(swi_simmap_read_mem((const char *)b, n, "mem", &m, err, sizeof err), 0);
     assert_int_equal(a->ny, m->ny);
     assert_int_equal(a->nz, m->nz);
     assert_memory_equal(a->val, m->val, 64 * sizeof *a->val);
-    swv_simmap_free(a);
-    swv_simmap_free(m);
+    swi_simmap_free(a);
+    swi_simmap_free(m);
     /* without the last newline, and cut in the middle of the last number */
-    assert_int_equal(swv_simmap_read_mem((const char *)b, n - 1, "mem", &m, err, sizeof err), 0);
-    swv_simmap_free(m);
-    assert_int_equal(swv_simmap_read_mem((const char *)b, n - 3, "mem", &m, err, sizeof err), 0);
-    swv_simmap_free(m);    /* "0.01" cut to "0." still parses: the grid is whole */
-    assert_int_equal(swv_simmap_read_mem((const char *)b, n / 2, "mem", &m, err, sizeof err), 2);
+    assert_int_equal(swi_simmap_read_mem((const char *)b, n - 1, "mem", &m, err, sizeof err), 0);
+    swi_simmap_free(m);
+    assert_int_equal(swi_simmap_read_mem((const char *)b, n - 3, "mem", &m, err, sizeof err), 0);
+    swi_simmap_free(m);    /* "0.01" cut to "0." still parses: the grid is whole */
+    assert_int_equal(swi_simmap_read_mem((const char *)b, n / 2, "mem", &m, err, sizeof err), 2);
     assert_null(m);
     free(b);
     unlink(p);
-    assert_int_equal(swv_simmap_read_mem(NULL, 0, NULL, &m, err, sizeof err), 2);
+    assert_int_equal(swi_simmap_read_mem(NULL, 0, NULL, &m, err, sizeof err), 2);
     assert_non_null(strstr(err, "(memory): empty"));
     /* binary garbage is shown as '?', in at most 60 characters, on one line */
     const char garbage[] = "y,z,d\n\x1b[31mred\x7f\xff\xfe,1,2\n";
-    assert_int_equal(swv_simmap_read_mem(garbage, sizeof garbage - 1, "g", &m, err, sizeof err), 2);
+    assert_int_equal(swi_simmap_read_mem(garbage, sizeof garbage - 1, "g", &m, err, sizeof err), 2);
     print_message("%s\n", err);
     assert_non_null(strstr(err, "g:2: expected 'y,z,value', got '?[31mred???,1,2'"));
     char longbad[300];
     memset(longbad, 'x', sizeof longbad);
     memcpy(longbad, "h\n", 2);
-    assert_int_equal(swv_simmap_read_mem(longbad, sizeof longbad, "l", &m, err, sizeof err), 2);
+    assert_int_equal(swi_simmap_read_mem(longbad, sizeof longbad, "l", &m, err, sizeof err), 2);
     assert_non_null(strstr(err, "xxx...'"));
     assert_null(strchr(err, '\n'));
     /* a NUL byte, an over-long line */
     const char nul[] = "y,z,d\n0,0,1\0\n1,0,1\n0,1,1\n1,1,1\n";
-    assert_int_equal(swv_simmap_read_mem(nul, sizeof nul - 1, "nul", &m, err, sizeof err), 2);
+    assert_int_equal(swi_simmap_read_mem(nul, sizeof nul - 1, "nul", &m, err, sizeof err), 2);
     assert_non_null(strstr(err, "nul:2: NUL byte"));
     char *big = malloc(5000);
     assert_non_null(big);
     memset(big, ' ', 5000);
     memcpy(big, "y,z,d\n0,0,1", 11);
-    assert_int_equal(swv_simmap_read_mem(big, 5000, "long", &m, err, sizeof err), 2);
+    assert_int_equal(swi_simmap_read_mem(big, 5000, "long", &m, err, sizeof err), 2);
     assert_non_null(strstr(err, "long:2: line longer than 1023 characters"));
     free(big);
-    /* more faces than SWV_SIMMAP_MAX_FACES: refused while reading */
-    size_t cap = 16 * (size_t)(SWV_SIMMAP_MAX_FACES + 2), len = 0;
+    /* more faces than SWI_SIMMAP_MAX_FACES: refused while reading */
+    size_t cap = 16 * (size_t)(SWI_SIMMAP_MAX_FACES + 2), len = 0;
     char *many = malloc(cap);
     assert_non_null(many);
     len += (size_t)snprintf(many, cap, "y,z,d\n");
-    for (int i = 0; i <= SWV_SIMMAP_MAX_FACES; i++)
+    for (int i = 0; i <= SWI_SIMMAP_MAX_FACES; i++)
         len += (size_t)snprintf(many + len, cap - len, "%d,%d,1\n", i % 1000, i / 1000);
-    assert_int_equal(swv_simmap_read_mem(many, len, "many", &m, err, sizeof err), 2);
+    assert_int_equal(swi_simmap_read_mem(many, len, "many", &m, err, sizeof err), 2);
     assert_non_null(strstr(err, "many:1000002: more than 1000000 faces"));
     free(many);
 }
 
 int main(void)
 {
-    snprintf(tmpdir, sizeof tmpdir, "/tmp/test_swv.XXXXXX");
+    snprintf(tmpdir, sizeof tmpdir, "/tmp/test_swi.XXXXXX");
     if (!mkdtemp(tmpdir))
         return 1;
     const struct CMUnitTest tests[] = {
