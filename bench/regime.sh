@@ -15,7 +15,7 @@
 #   the 46 x 50 map (library: grid, grid + interface refinement; and
 #   `snowregime map --no-plot` end to end including the automatic range,
 #   fit and file output),
-# and their ratios to the targets of issue 3 (collision <= 10 us at 0.1 %
+# and their ratios to the project's speed targets (collision <= 10 us at 0.1 %
 # v_crit accuracy, map <= 20 ms) and to the DEM codes used in this field
 # (0.35 s per collision run, about 4 s for the same map).
 # Not a test: nothing is asserted.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# bench/rough.sh - cost of the rough wall (issue 9) next to the flat wall (prints figures).
+# bench/rough.sh - cost of the rough wall next to the flat wall (prints figures).
 #
 # Usage: bench/rough.sh [--reps N] [--points LIST] [--set KEY=VALUE]...
 #                       [--before REV | --no-before] [--help]
@@ -15,7 +15,7 @@
 #   impact   grid wall time x 2 threads / impacts: CPU time per rough impact [us]
 # and the ratios to the flat map. Before and after in one run: the lattice
 # maps are also run with the snowregime of git revision REV (default
-# d83784a, the last commit before issue 24 made the rough wall faster),
+# d83784a, the last commit before the rough wall's adaptive step (rough_step adaptive) made it faster),
 # built from `git archive REV` in a temporary folder (about 1 min), and the
 # ratios before / after are printed. --no-before skips that. --set
 # KEY=VALUE: a setting for every run (e.g. asperity_r=0.5e-6; it must exist

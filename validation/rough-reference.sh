@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# rough-reference.sh - the reference study's rough wall of 1 um spheres (issue 24, doc/kernel.md)
+# rough-reference.sh - the reference study's rough wall of 1 um spheres (doc/kernel.md)
 #
 # Usage: validation/rough-reference.sh --out DIR [--force] [--points N] [--threads N] [--quick] [--help]
 #
@@ -157,7 +157,7 @@ nonmono=$(grep -l -i 'non-monotone' "$tmp"/logs/*.txt 2>/dev/null | sed 's|.*/||
 } >"$tmp/times.txt"
 
 {
-    echo "# v_crit on the reference study's rough wall (1 um spheres), issue 24"
+    echo "# v_crit on the reference study's rough wall (1 um spheres)"
     echo
     echo "Critical normal speeds [m/s] of ice spheres (dry snow on ABS, embedded defaults)."
     echo "Rough walls: the speed where the stick fraction over $points impact points"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# rough-wall.sh - sticking on a rough wall against the flat wall (issue 9, doc/snowregime.md)
+# rough-wall.sh - sticking on a rough wall against the flat wall (doc/snowregime.md)
 #
 # Usage: validation/rough-wall.sh --out DIR [--force] [--points N] [--nd N --nv N] [--quick]
 #                                 [--config FILE] [--set KEY=VALUE]... [--help]

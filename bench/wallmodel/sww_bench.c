@@ -13,7 +13,7 @@
  * diameters 10-100 um linear x 50 speeds 0.1-10 m/s log; p a logistic step
  * across the file's interface) against the sharp map, gates off: over the
  * impacts above and over impacts all inside the table. When the file has the
- * kernel's rebound tables (snowregime map, issue 23), gates off with them
+ * kernel's rebound tables (snowregime map), gates off with them
  * against the classic rebound (Thornton / constant e_n, reboundTangential).
  * Exit 2 on bad input.
  */

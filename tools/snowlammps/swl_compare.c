@@ -564,7 +564,7 @@ int swl_compare_run(const swl_opts *a, FILE *report, char *err, size_t errlen)
         rc = fail(err, errlen, "out of memory");
         goto done;
     }
-    fprintf(sf, "Rough wall, snowregime against LAMMPS (issue 24): d = %g m ice sphere on the default\n"
+    fprintf(sf, "Rough wall, snowregime against LAMMPS: d = %g m ice sphere on the default\n"
                 "square lattice (asperity r = %g m, spacing %g m), %d impact points (a %d x %d grid over\n"
                 "the unit cell) x angles %s deg x speeds |v| (hertz %s, jkr %s m/s); constant COR %g\n"
                 "(dashpot on both branches, LAMMPS tsuji calibrated to it).\n"
