@@ -11,7 +11,7 @@
 # escape patch every impact is an escape of the cloud's own counter; errors naming the
 # file and the line (a bad value in regime.coeffs), a patches entry matching no patch, a
 # patch without an entry; the warning for a wall taken by a catch-all escape entry.
-# Set-up inputs that crashed with SIGFPE (issue 22) are FatalIOErrors naming the key,
+# Set-up inputs that could end in a SIGFPE are FatalIOErrors naming the key,
 # the value and the range: buildUp coverDiameter / coverMass out of range or both
 # given, tangentialGate slideLength against an oblique table without obliqueSlide, a
 # different obliqueSlide, a negative slideLength, shearGate rhoAir out of range
@@ -46,7 +46,7 @@ deposit_sum() { # FIELDFILE -> sum(value * area) over the wall patch
     deposit_values "$1" wall | awk -v a="$face_area" '{ s += $1 * a } END { printf "%.12g", s }'
 }
 
-# counts by reason (issue 23) at t 0.1: the wall's 7 impacts are 3 stuck, 2 bounced by
+# counts by reason at t 0.1: the wall's 7 impacts are 3 stuck, 2 bounced by
 # the criterion (p2 40 um and p5 15 um), 1 by the tangential gate (p6, v_t 0.8 m/s), 1
 # ripped off (p7); one bounced parcel has escaped through the sides by then
 want_reasons="wall snow 7 3 2 1 1 0 0
@@ -170,7 +170,7 @@ prep "$tmp/noTau"
 foamDictionary -entry functions -remove "$tmp/noTau/system/controlDict" > /dev/null
 expect_fatal_io "$tmp/noTau" "shearGate: the field 'wallShearStress' is not registered, not in the start time's folder and made by no function object"
 # a field no function object makes: refused at set-up, before the function objects
-# start and write postProcessing/ (hostile sweep case 496 of issue 22)
+# start and write postProcessing/ (a case that cannot run leaves none behind)
 prep "$tmp/noField"
 sed -i 's/^\( *\)roughnessFactor *0.01;/&\n\1field noSuchField;/' "$tmp/noField/constant/kinematicCloudProperties"
 grep -q "^ *field noSuchField;" "$tmp/noField/constant/kinematicCloudProperties" || fail "noField: field not written"
@@ -206,7 +206,7 @@ grep -q 'wall patch wall is taken by the entry ".\*" (type escape) of ".*constan
     "$tmp/catchAll/log.run" || fail "catchAll: no warning for the wall taken by the catch-all"
 echo "errors: ok"
 
-# 5. set-up inputs that ended in SIGFPE without a message (issue 22): each must be a
+# 5. set-up inputs that could end in a SIGFPE without a message: each must be a
 #    FatalIOError (exit 1, not a signal) naming the key, its value and the accepted range
 prep "$tmp/base"
 cpr=constant/kinematicCloudProperties
@@ -259,7 +259,7 @@ with_oblique "$tmp/slideOk" "obliqueSlide 1e-4;" "model regime; slideLength 1e-4
 (cd "$tmp/slideOk" && foamDictionary -entry endTime -set 0.005 system/controlDict > /dev/null \
     && run log.run icoUncoupledKinematicParcelFoam)
 echo "set-up inputs: ok (buildUp cover numbers, slideLength against obliqueSlide)"
-# 6. silent changes of meaning (issue 22, item 3): every key of the coefficients is
+# 6. no silent change of meaning: every key of the coefficients is
 #    known to the model it belongs to, given lists are not empty; the error names the
 #    key, where it is, and the accepted keys
 with_buildup "$tmp/misCover" "coverDiamter 3e-5;"
@@ -292,7 +292,7 @@ assert s2 != s
 open(p, "w").write(s2)
 PY
 expect_fatal_io "$tmp/emptyPatches" "the patches list is empty: give every boundary patch a type"
-# snowNearWall: a depositionClosure given as a value was taken as no closure (hostile sweep)
+# snowNearWall: a depositionClosure given as a value is an error, not "no closure"
 case_from_base "$tmp/nwClosure"
 foamDictionary -entry cloudFunctions -set "{ nw { type snowNearWall; patches (wall); depositionClosure 1; } }" \
     "$tmp/nwClosure/$cpr" > /dev/null
@@ -302,15 +302,15 @@ case_from_base "$tmp/nwScale"
 foamDictionary -entry cloudFunctions -set "{ nw { type snowNearWall; patches (wall); velocityScale maximum; } }" \
     "$tmp/nwScale/$cpr" > /dev/null
 expect_fatal_io "$tmp/nwScale" "snowNearWall: velocityScale 'maximum' is not max, wallShear or turbulence"
-# snowNearWall on a laminar flow walked with k = epsilon = 0: dispersion none without a
-# word (hostile sweep case 570); refused at set-up
+# snowNearWall on a laminar flow would walk with k = epsilon = 0: dispersion none without
+# a word; refused at set-up
 case_from_base "$tmp/nwLaminar"
 foamDictionary -entry cloudFunctions -set "{ nw { type snowNearWall; patches (wall); } }" \
     "$tmp/nwLaminar/$cpr" > /dev/null
 expect_fatal_io "$tmp/nwLaminar" "snowNearWall: the flow is laminar (simulationType laminar in"
 ! grep -q "^Time = " "$tmp/nwLaminar/log.run" || fail "nwLaminar: refused only after a time step"
 # the #included regime file with a key or the block twice: OpenFOAM merged them (the
-# later won) where the C loader refuses; refused with the file and the key (issue 22)
+# later won) where the C loader refuses; refused with the file and the key
 case_from_base "$tmp/dupKey"
 sed -i 's/^\( *vnMax .*\)$/&\n    vnMax 5.0;/' "$tmp/dupKey/constant/regime.coeffs"
 [ "$(grep -c '^ *vnMax ' "$tmp/dupKey/constant/regime.coeffs")" = 2 ] || fail "dupKey: vnMax not doubled"
@@ -323,7 +323,7 @@ printf 'regime { version 1; }\n' >> "$tmp/dupBlock/constant/regime.coeffs"
 expect_fatal_io "$tmp/dupBlock" "regime file .*dupBlock/constant/regime.coeffs: duplicate entry: regime"
 echo "unknown keys and empty lists: ok"
 
-# 6. the rebound (issue 23): `rebound table` needs the regime file's tables; a file with
+# 6. the rebound: `rebound table` needs the regime file's tables; a file with
 #    them bounces with them (the log says so), the same sticks and counts
 case_from_base "$tmp/rbNoTable"
 sed -i 's/^\( *\)tangentialGate { vtMax 0.5; }/&\n\1rebound table;/' "$tmp/rbNoTable/$cpr"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# test_buildup.sh - the build-up feedback of snowWallInteraction (issue 12) on
+# test_buildup.sh - the build-up feedback of snowWallInteraction (buildUp) on
 # the box case: a face switches from the bare-wall regime to the snow-covered one
 # once its own deposit reaches the covering mass.
 #   bare regime: the fixture map (d_crit(1 m/s) = 30 um); covered regime: the
@@ -147,7 +147,7 @@ foamDictionary -entry subModels/snowWallInteractionCoeffs/buildUp/coverDiameter 
 foamDictionary -entry subModels/snowWallInteractionCoeffs/buildUp/coverMass -add -1 \
     "$tmp/badMass/constant/kinematicCloudProperties" > /dev/null
 expect_fatal_io "$tmp/badMass" "buildUp: coverMass -1 is outside the accepted range (0, 10000\] kg/m2"
-# both keys: coverMass used to win silently (issue 22)
+# both keys are an error (else one would win silently)
 prep "$tmp/bothKeys"
 foamDictionary -entry subModels/snowWallInteractionCoeffs/buildUp/coverMass -add 0.01 \
     "$tmp/bothKeys/constant/kinematicCloudProperties" > /dev/null

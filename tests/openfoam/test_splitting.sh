@@ -17,7 +17,7 @@
 # exactly the reference deposit. Checked serial, with mpirun -np 2 and across a
 # restart, the maxParcels cap (before and within a step), the maxCopies cap (a parcel
 # too heavy to split stays whole; copies are not split again), plus the input errors
-# as FatalIOErrors (regions in dictionary form and a region named twice: issue 22).
+# as FatalIOErrors (regions in dictionary form and a region named twice among them).
 set -euo pipefail
 # shellcheck source=common.sh
 . "$(dirname "$0")/common.sh"
@@ -156,8 +156,8 @@ prep "$tmp/oddBoxes" 20 "boxes ((0 0 0) (1 1 1) (2 2 2));"
 expect_fatal_io "$tmp/oddBoxes" "region lower: 'boxes' holds 3 points"
 prep "$tmp/noBox" 20 " "
 expect_fatal_io "$tmp/noBox" "needs 'box (min) (max);'"
-# issue 22: regions in dictionary form aborted (exit 134) with OpenFOAM's generic
-# "Attempt to return dictionary entry as a primitive"; a name given twice was accepted
+# regions in dictionary form are a FatalIOError naming the form (not OpenFOAM's generic
+# "Attempt to return dictionary entry as a primitive", exit 134); a name given twice too
 prep "$tmp/regionsDict"
 split_with "$tmp/regionsDict" "regions { lower { $lower factor 20; } }"
 expect_fatal_io "$tmp/regionsDict" "parcelSplitting split: 'regions' is a dictionary { ... } but must be a list in parentheses:  regions ( name { box (min) (max); factor F; } ... );"
@@ -172,8 +172,8 @@ expect_fatal_io "$tmp/noRegions" "parcelSplitting split: missing 'regions'"
 prep "$tmp/notDict"
 split_with "$tmp/notDict" "regions ( lower 20; );"
 expect_fatal_io "$tmp/notDict" "parcelSplitting split: 'regions': region 'lower' must be followed by its dictionary { box (min) (max); factor F; }, got"
-# hostile sweep case 557: without the ';' OpenFOAM's reading ran into "attempt to read
-# beyond EOF", naming nothing
+# without the ';' the error names the region (OpenFOAM's own reading would run into
+# "attempt to read beyond EOF", naming nothing)
 prep "$tmp/notDictEOF"
 split_with "$tmp/notDictEOF" "regions ( lower 4 );"
 expect_fatal_io "$tmp/notDictEOF" "parcelSplitting split: 'regions': region 'lower' must be followed by its dictionary"
@@ -183,7 +183,7 @@ expect_fatal_io "$tmp/noName" "parcelSplitting split: 'regions': expected a regi
 prep "$tmp/twice"
 split_with "$tmp/twice" "regions ( lower { $lower factor 20; } lower { $lower factor 2; } );"
 expect_fatal_io "$tmp/twice" "parcelSplitting split: region 'lower' is given twice in 'regions'"
-# hostile sweep (issue 22): misspelt keys were ignored, 'box' beside 'boxes' dropped the boxes
+# every key is known: a misspelt key is an error, and so is 'box' beside 'boxes'
 prep "$tmp/misKey"
 split_with "$tmp/misKey" "maxCopy 10; regions ( lower { $lower factor 20; } );"
 expect_fatal_io "$tmp/misKey" "parcelSplitting split: unknown key 'maxCopy'; the accepted keys are"

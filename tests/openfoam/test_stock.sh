@@ -10,7 +10,7 @@
 # solvers (one typeName per parcel type; the stock runs of each family are in
 # test_stock_{mppic,reacting,colliding,spray}.sh; fireFoam's basicReactingCloud is the one
 # no stock case runs with an active cloud, so its registration is checked here only);
-# libparcelSplitting.so registers parcelSplitting for the same 8 (issue 23).
+# libparcelSplitting.so registers parcelSplitting for the same 8.
 set -euo pipefail
 # shellcheck source=common.sh
 . "$(dirname "$0")/common.sh"
@@ -30,7 +30,7 @@ if command -v nm > /dev/null; then
     done
     [ "$(grep -c . <<< "$syms")" = 8 ] || fail "expected 8 registrations, found: $syms"
     echo "registered for 8 parcel types (kinematic, colliding, MPPIC, thermo, reacting, reacting-multiphase and coal, heterogeneous reacting, spray)"
-    # parcelSplitting for the same 8 cloud types (issue 23)
+    # parcelSplitting for the same 8 cloud types
     psyms=$(nm -DC "$top/platforms/lib/libparcelSplitting.so" | grep 'Foam::ParcelSplitting<.*>::typeName$' || true)
     for parcel in KinematicParcel CollidingParcel MPPICParcel ThermoParcel 'ReactingParcel<Foam::ThermoParcel' \
         ReactingMultiphaseParcel ReactingHeterogeneousParcel SprayParcel; do

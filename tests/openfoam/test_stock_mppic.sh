@@ -9,9 +9,9 @@
 # 2. the mass balance injected = airborne + escaped + deposited closes to 1e-6;
 # 3. serial equals mpirun -np 2 (counts, deposited mass, deposit field) with the
 #    stochastic isotropy model off (each processor draws its own random numbers);
-# 4. injectionChannel (the case of issue 14 that stopped at start-up): the model loads
+# 4. injectionChannel (the model registered for the MPPIC cloud there): the model loads
 #    and its first time step ends.
-# 5. parcelSplitting (issue 23: registered for every cloud type of the wrapper) in the
+# 5. parcelSplitting (registered for every cloud type of the wrapper) in the
 #    MPPIC cloud: a region over the lower sixth of the column, factor 4: parcels are
 #    split, the mass balance still closes.
 # (The stock MPPICFoam cases injectionChannel and cyclone diverge within 5 time steps

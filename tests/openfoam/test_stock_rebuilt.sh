@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # test_stock_rebuilt.sh - the stock solvers rebuilt with -D__restrict__= by the opt-in
-# `etc/setup.sh --stock-solvers MPPICFoam,reactingParcelFoam` (issue 23, item 6), on the
+# `etc/setup.sh --stock-solvers MPPICFoam,reactingParcelFoam`, on the
 # stock tutorials that Debian's own build of these solvers cannot run (doc/wallmodel.md,
 # "Stock solvers rebuilt"). Skipped (77) unless platforms/bin holds MPPICFoam built by the
 # opt-in, so it is not part of a default run; the verticalChannel part is skipped, with a

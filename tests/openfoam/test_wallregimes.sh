@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# test_wallregimes.sh - per-patch regimes of snowWallInteraction (wallRegimes,
-# issue 9) and a rough wall's stick-probability table, on the box case.
+# test_wallregimes.sh - per-patch regimes of snowWallInteraction (wallRegimes)
+# and a rough wall's stick-probability table, on the box case.
 #   Both horizontal faces are snow walls: `wall` (y = 0) takes the regime of the
 #   wallRegimes entry roughABS - the fixture's interface with a hand-written
 #   probability table, p = 0.3 everywhere in 1-100 um x 0.1-10 m/s - and `top`
@@ -94,7 +94,7 @@ check() {
     awk -v k="$4" -v n="$3" 'BEGIN { p = 0.3; exit !((k - n * p) ^ 2 <= 16 * n * p * (1 - p)) }' \
         || fail "$1: wall sticks $4 of $3: not 0.3 within 4 sigma"
     [ "$8 $9 ${10} ${11}" = "3 1 2 0" ] || fail "$1: top totals '$8 $9 ${10} ${11}' != '3 1 2 0'"
-    # counts by reason (issue 23): on wall every bounce is the draw's (p = 0.3
+    # counts by reason: on wall every bounce is the draw's (p = 0.3
     # everywhere), on top one each by the criterion and the gate
     local r="$1/postProcessing/kinematicCloud:snowWall/0.1/reasons.dat"
     [ "$(awk '$1 == "wall"' "$r")" = "wall snow $3 $4 0 0 0 $5 0" ] \
@@ -164,7 +164,7 @@ read -r tg pr < <(awk '$1 == "wall" { print $6, $8 }' "$tmp/gate/postProcessing/
     || fail "gate: reasons tangential $tg + probability $pr != 60 (or one of them 0)"
 echo "gate on the entry's regime: ok"
 
-# 3b. draws fixed by the parcel (issue 23): with DebugSwitches every impact's line names
+# 3b. draws fixed by the parcel: with DebugSwitches every impact's line names
 #     the parcel (origin processor:id), the time step and the fate. The uninterrupted
 #     serial run, a serial restart at 0.05, and the serial start continued on np 2 and on
 #     np 3 (decomposePar of the cloud at 0.05) give every parcel the same fate at the same
@@ -224,7 +224,7 @@ sed -i 's/probabilityStick  (0.3 0.3 0.3 0.3)/probabilityStick  (0.3 1.3 0.3 0.3
     "$tmp/badTable/constant/regime-rough.coeffs"
 expect_fatal "$tmp/badTable" "wallRegimes roughABS: key 'probabilityStick': value 1.3 (entry 1) is not a probability in \[0, 1\]"
 # an error in the main regime names regime.coeffs, not the wallRegimes entry's file
-# (both hold the same keys at the same lines; issue 22)
+# (both hold the same keys at the same lines)
 prep "$tmp/badMain"
 sed -i 's/^\( *vnMin *\)0.2;/\1 9;/' "$tmp/badMain/constant/regime.coeffs"
 expect_fatal "$tmp/badMain" "key 'vnMin': value 9 is not below vnMax 6"

@@ -31,8 +31,8 @@ void Foam::ParcelSplitting<CloudType>::readRegions()
     const char* const form =
         "regions ( name { box (min) (max); factor F; } ... );";
 
-    // every key is known: a misspelt one ('maxCopy') was ignored without a word
-    // (hostile sweep, issue 22)
+    // every key is known: a misspelt one ('maxCopy') would otherwise be
+    // ignored without a word
     const wordList known({"type", "regions", "maxParcels", "maxCopies"});
     for (const entry& e : dict)
     {
@@ -165,8 +165,8 @@ void Foam::ParcelSplitting<CloudType>::readRegions()
         }
         const dictionary& rd = entries[r].dict();
         regionNames_[r] = entries[r].keyword();
-        // a region's keys: a misspelt 'factr' was ignored, and 'box' beside
-        // 'boxes' dropped the boxes (hostile sweep, issue 22)
+        // a region's keys are known: a misspelt 'factr' would otherwise be
+        // ignored, and 'box' beside 'boxes' drop the boxes
         const wordList regionKeys({"box", "boxes", "factor"});
         for (const entry& e : rd)
         {

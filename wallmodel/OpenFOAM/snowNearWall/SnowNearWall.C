@@ -60,8 +60,8 @@ void Foam::SnowNearWall<CloudType>::readSettings(const dictionary& dict)
     }
 
     const bool closure = dict.lookupOrDefault<bool>("closure", true);
-    // a depositionClosure given as a value was taken as no closure at all
-    // (hostile sweep, issue 22)
+    // a depositionClosure given as a value is an error, not "no closure at
+    // all"
     const entry* ce = dict.findEntry("depositionClosure", keyType::LITERAL);
     if (ce && !ce->isDict())
     {
@@ -252,8 +252,8 @@ void Foam::SnowNearWall<CloudType>::checkTurbulent
 ) const
 {
     // a laminar flow has k = epsilon = 0: the walk would add nothing, and the
-    // closure deposit by a u_tau without turbulence; without this the model
-    // ran as dispersion none without a word (hostile sweep case 570, issue 22)
+    // closure deposit by a u_tau without turbulence: refused, so that the
+    // model never runs as dispersion none without a word
     const word sim(turb.lookupOrDefault<word>("simulationType", word::null));
     if (sim == "laminar")
     {
