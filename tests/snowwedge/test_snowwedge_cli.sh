@@ -54,6 +54,11 @@ for t in 0.1 0.3 0.5 0.7; do echo "$t (1 0 0) (2 0 0)"; done >> "$tmp/U"
 echo "0.9 (3 0 0) (2 0 0)" >> "$tmp/U"
 "$S" probes --window 0.2,1 "$tmp/U" > "$tmp/p"
 check "probes: 1.5 / 0.87 and 2 / 0" "grep -qF 'at (0.36 0 0) 1.50 / 0.87 m/s; at (0.45 0 0) 2.00 / 0.00 m/s;' '$tmp/p'"
+# error against run time: 40 s at 20 % -> 160 s for 10 %, 1000 s at 2.5 % -> 62.5 s (5 % target: 250 s)
+printf 'spray\tdefault\t40\t20\nclasses\t-full\t1000\t2.5\n' > "$tmp/pts"
+"$S" errortime "$tmp/pts" > "$tmp/et"
+check "errortime: 160 s and 62.5 s for 10 %" "[ \"\$(cat '$tmp/et')\" = \"\$(printf '| spray | default | 40 | 20.0 | 160 |\n| classes | -full | 1000 | 2.5 | 62.5 |')\" ]"
+check "errortime --target 5: 250 s" "'$S' errortime --target 5 '$tmp/pts' | grep -qxF '| classes | -full | 1000 | 2.5 | 250 |'"
 # refusals: exit 2, one line naming the input
 bad() {  # bad TEXT args...
     local want=$1; shift
@@ -67,6 +72,8 @@ bad "increasing" weights --mvd 20 --classes 20,5
 bad "--masses line 2" weights --masses <(printf '5,1\n7,1\n') --classes 5,20
 bad "--window" forces --window 1,0.2 "$tmp/coef.dat"
 bad "unknown option" map --frob x
+bad "--target" errortime --target 0 "$tmp/pts"
+bad "tab-separated" errortime <(printf 'a b c d\n')
 "$S" forces --window 0.2,1 "$tmp/nonexistent" > /dev/null 2> "$tmp/err"
 check "an unreadable file: exit 1" "[ $? -eq 1 ] && grep -q 'cannot read' '$tmp/err'"
 [ "$fails" -eq 0 ] && { echo PASS; exit 0; } || { echo "$fails failure(s)"; exit 1; }

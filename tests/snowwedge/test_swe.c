@@ -231,6 +231,17 @@ static void spectral_peak(void **st)
     assert_true(strlen(err) > 0);
 }
 
+/* the time for a target error at the 1/sqrt(time) law: 40 s at 20 % -> 160 s
+   for 10 %; 1000 s at 2.5 % -> 62.5 s; nothing for a zero error or target */
+static void time_for_error(void **st)
+{
+    (void)st;
+    ASSERT_NEAR(swe_time_for_error(40, 20, 10), 160, 1e-12);
+    ASSERT_NEAR(swe_time_for_error(1000, 2.5, 10), 62.5, 1e-12);
+    ASSERT_NEAR(swe_time_for_error(1000, 0, 10), 0, 0);
+    ASSERT_NEAR(swe_time_for_error(1000, 5, 0), 0, 0);
+}
+
 /* bad settings: a named error, the outputs untouched */
 static void bad_inputs(void **st)
 {
@@ -262,7 +273,7 @@ int main(void)
         cmocka_unit_test(distribution), cmocka_unit_test(classes),
         cmocka_unit_test(medians),      cmocka_unit_test(rear_regions),
         cmocka_unit_test(compose),      cmocka_unit_test(spectral_peak),
-        cmocka_unit_test(bad_inputs),
+        cmocka_unit_test(time_for_error), cmocka_unit_test(bad_inputs),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

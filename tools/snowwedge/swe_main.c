@@ -29,6 +29,7 @@ static const char *usage =
 "                         --kind sticks|impacts [RECORDS.post...]\n"
 "    snowwedge forces --window T0,T1 COEFFICIENT.dat\n"
 "    snowwedge probes --window T0,T1 PROBES_U\n"
+"    snowwedge errortime [--target P] POINTS\n"
 "    snowwedge --help\n"
 "\n"
 "    SPRAY is --mvd UM [--sigma-g S] [--range MIN,MAX] [--freeze F]: droplet\n"
@@ -78,6 +79,11 @@ static const char *usage =
 "             Strouhal numbers f H / U (H 0.12 m, U 19.444 m/s); one line.\n"
 "    probes   over T0 < t <= T1 of a probes table of U: mean and rms of Ux at\n"
 "             every probe; one line.\n"
+"    errortime  POINTS has one tab-separated line \"design run wall_s error\" per\n"
+"             sampling design (error: relative, in %); prints a markdown row per\n"
+"             line with the time that design needs for the target error P %\n"
+"             (default 10) at its rate: wall_s (error / P)^2 (the error of n\n"
+"             independent samples falls as 1/sqrt(n), the time grows as n).\n"
 "\n"
 "EXIT STATUS\n"
 "    0 success; 1 an input file unreadable; 2 usage or bad input (one line\n"
@@ -118,7 +124,7 @@ typedef struct {
     int has_spray;
     const char *mvd_s, *sg_s, *range_s, *freeze_s; /* as given, for the header */
     const char *masses, *classes, *weights, *table, *desc, *label, *outline, *kind, *window;
-    const char *from, *to;
+    const char *from, *to, *target;
     const char **files;
     int nfiles;
 } options;
@@ -183,6 +189,8 @@ static void parse(int argc, char **argv, options *o)
                 o->kind = v;
             else if (!strcmp(a, "--window"))
                 o->window = v;
+            else if (!strcmp(a, "--target"))
+                o->target = v;
             else
                 die(2, "%s: unknown option '%s' (see --help)", argv[1], a);
         } else
@@ -909,6 +917,32 @@ static int cmd_probes(const options *o)
     return 0;
 }
 
+/* ---- error against run time ------------------------------------------------------ */
+static int cmd_errortime(const options *o)
+{
+    const double target = o->target ? number("--target", o->target) : 10;
+    if (!(target > 0))
+        die(2, "--target: '%s' is not a positive error in %%", o->target);
+    if (o->nfiles != 1)
+        die(2, "errortime: give one POINTS file (see --help)");
+    FILE *f = open_in(o->files[0]);
+    char line[4096];
+    for (int ln = 1; fgets(line, sizeof line, f); ln++) {
+        line[strcspn(line, "\r\n")] = 0;
+        char *fld[4], *save = NULL;
+        int k = 0;
+        for (char *t = strtok_r(line, "\t", &save); t && k < 4; t = strtok_r(NULL, "\t", &save))
+            fld[k++] = t;
+        if (k != 4)
+            die(2, "%s line %d is not \"design run wall_s error\" (tab-separated)", o->files[0], ln);
+        const double t = number(o->files[0], fld[2]), e = number(o->files[0], fld[3]);
+        printf("| %s | %s | %.0f | %.1f | %.3g |\n", fld[0], fld[1], t, e,
+               swe_time_for_error(t, e, target));
+    }
+    fclose(f);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2)
@@ -938,6 +972,8 @@ int main(int argc, char **argv)
         rc = cmd_forces(&o);
     else if (!strcmp(argv[1], "probes"))
         rc = cmd_probes(&o);
+    else if (!strcmp(argv[1], "errortime"))
+        rc = cmd_errortime(&o);
     else
         die(2, "unknown command '%s' (see --help)", argv[1]);
     free(o.files);

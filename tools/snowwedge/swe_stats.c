@@ -129,3 +129,11 @@ double swe_ztest(double a, double va, double b, double vb, double *p)
         *p = 2 * gsl_cdf_ugaussian_Q(fabs(z));
     return z;
 }
+
+double swe_time_for_error(double t, double e, double target)
+{
+    if (!(target > 0 && t > 0 && e > 0))
+        return 0;
+    const double r = e / target;
+    return t * r * r;
+}

@@ -69,4 +69,9 @@ int swe_stands_out(double region, double var, double face, int r);
    variances are 0); two-sided p-value in *p when p is given */
 double swe_ztest(double a, double va, double b, double vb, double *p);
 
+/* the run time that takes a relative error e at run time t to the target:
+   t (e / target)^2, the error of n independent samples falling as 1/sqrt(n)
+   and the time growing as n; 0 when target <= 0 or t, e not positive */
+double swe_time_for_error(double t, double e, double target);
+
 #endif
