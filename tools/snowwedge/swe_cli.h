@@ -1,0 +1,50 @@
+/* swe_cli.h - the snowwedge command's shared parts: its options, the
+ * helpers that read numbers and files or end the command with a one-line
+ * message (exit 1 an unreadable file, 2 usage or bad input), and one entry
+ * per command (swe_cmd_*.c; usage and dispatch in swe_main.c). */
+#ifndef SWE_CLI_H
+#define SWE_CLI_H
+
+#include "swe_spray.h"
+
+#include <stdio.h>
+
+/* the options of every command (NULL / 0: not given) */
+typedef struct {
+    swe_spray spray;
+    int has_spray;
+    const char *mvd_s, *sg_s, *range_s, *freeze_s; /* as given, for the header */
+    const char *masses, *classes, *weights, *table, *desc, *label, *outline, *kind, *window;
+    const char *from, *to, *target;
+    const char **files;
+    int nfiles;
+} swe_options;
+
+
+extern const char *swe_cli_usage;
+
+void swe_cli_die(int code, const char *fmt, ...) __attribute__((noreturn, format(printf, 2, 3)));
+double swe_cli_number(const char *opt, const char *s);
+FILE *swe_cli_open(const char *path);
+void swe_cli_parse(int argc, char **argv, swe_options *o);
+void swe_cli_need(const char *what, const char *v, const char *cmd);
+/* the weights file of "snowwedge weights": classes d (as written), w, e0, e1 */
+int swe_cli_read_weights(const char *path, char (*d)[32], double *w, double *e0, double *e1, int max);
+/* the outline y0 y1 z0 z1 of a rear-face map, to 6 significant digits */
+void swe_cli_outline(const char *path, double o[4]);
+
+/* the parentheses of an OpenFOAM vector turned into blanks */
+void swe_cli_strip_parens(char *s);
+
+int swe_cmd_distribution(const swe_options *o);
+int swe_cmd_weights(const swe_options *o);
+int swe_cmd_classes(const swe_options *o);
+int swe_cmd_regions(const swe_options *o);
+int swe_cmd_map(const swe_options *o);
+int swe_cmd_outline(const swe_options *o);
+int swe_cmd_rear_stats(const swe_options *o);
+int swe_cmd_forces(const swe_options *o);
+int swe_cmd_probes(const swe_options *o);
+int swe_cmd_errortime(const swe_options *o);
+
+#endif

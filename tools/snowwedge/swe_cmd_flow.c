@@ -1,0 +1,172 @@
+/* swe_cmd_flow.c - snowwedge forces, probes, errortime: the flow's time series
+ * over the window (swe_signal.h) and the error against run time. */
+#include "swe_cli.h"
+
+#include "swe_signal.h"
+#include "swe_spray.h"
+#include "swe_stats.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- time series of the flow ------------------------------------------------------ */
+static void window_of(const swe_options *o, const char *cmd, double *a, double *b)
+{
+    swe_cli_need("--window", o->window, cmd);
+    const char *c = strchr(o->window, ',');
+    char buf[64];
+    if (!c || (size_t)(c - o->window) >= sizeof buf)
+        swe_cli_die(2, "--window: '%s' is not T0,T1", o->window);
+    snprintf(buf, sizeof buf, "%.*s", (int)(c - o->window), o->window);
+    *a = swe_cli_number("--window", buf);
+    *b = swe_cli_number("--window", c + 1);
+    if (!(*b > *a))
+        swe_cli_die(2, "--window: '%s' is not T0,T1 with T0 < T1", o->window);
+}
+
+int swe_cmd_forces(const swe_options *o)
+{
+    double a, b;
+    window_of(o, "forces", &a, &b);
+    if (o->nfiles != 1)
+        swe_cli_die(2, "forces: give one coefficient.dat (see --help)");
+    FILE *f = swe_cli_open(o->files[0]);
+    size_t cap = 4096, n = 0;
+    double *t = malloc(cap * sizeof *t), *cd = malloc(cap * sizeof *cd),
+           *cs = malloc(cap * sizeof *cs), *cl = malloc(cap * sizeof *cl);
+    static char line[1 << 14];
+    while (t && cd && cs && cl && fgets(line, sizeof line, f)) {
+        if (line[0] == '#')
+            continue;
+        double v[4];
+        if (sscanf(line, "%lf %lf %lf %lf", &v[0], &v[1], &v[2], &v[3]) != 4)
+            continue;
+        if (!(v[0] > a + 1e-12 && v[0] <= b + 1e-12))
+            continue;
+        if (n == cap) {
+            cap *= 2;
+            t = realloc(t, cap * sizeof *t);
+            cd = realloc(cd, cap * sizeof *cd);
+            cs = realloc(cs, cap * sizeof *cs);
+            cl = realloc(cl, cap * sizeof *cl);
+            if (!t || !cd || !cs || !cl)
+                break;
+        }
+        t[n] = v[0];
+        cd[n] = v[1];
+        cs[n] = v[2];
+        cl[n] = v[3];
+        n++;
+    }
+    fclose(f);
+    if (!t || !cd || !cs || !cl)
+        swe_cli_die(1, "out of memory");
+    if (n >= 10) { /* fewer samples: no line, as the window holds no spectrum */
+        double fs, fl;
+        char err[256];
+        if (swe_peak_frequency(t, cs, n, a, b, 300, &fs, err, sizeof err) ||
+            swe_peak_frequency(t, cl, n, a, b, 300, &fl, err, sizeof err))
+            swe_cli_die(2, "forces: %s", err);
+        printf("Forces on the wedge (reference: rear face 0.0144 m2, 19.444 m/s): mean Cd %.3f; "
+               "side force Cs rms %.3g, dominant frequency %.1f Hz (Strouhal number f H/U = %.3f, "
+               "H = 0.12 m); lift Cl rms %.3g, dominant frequency %.1f Hz (St %.3f).\n",
+               swe_mean(cd, n), swe_rms(cs, n), fs, fs * 0.12 / 19.444, swe_rms(cl, n), fl,
+               fl * 0.12 / 19.444);
+    }
+    free(t);
+    free(cd);
+    free(cs);
+    free(cl);
+    return 0;
+}
+
+int swe_cmd_probes(const swe_options *o)
+{
+    double a, b;
+    window_of(o, "probes", &a, &b);
+    if (o->nfiles != 1)
+        swe_cli_die(2, "probes: give one probes file of U (see --help)");
+    FILE *f = swe_cli_open(o->files[0]);
+    enum { MAXP = 64 };
+    char loc[MAXP][128];
+    double s[MAXP] = {0}, q[MAXP] = {0};
+    int np = 0;
+    long n = 0;
+    static char line[1 << 14];
+    while (fgets(line, sizeof line, f)) {
+        if (!strncmp(line, "# Probe ", 8)) {
+            char *p = line + 8;
+            while (*p >= '0' && *p <= '9')
+                p++;
+            if (*p == ' ')
+                p++;
+            p[strcspn(p, "\r\n")] = 0;
+            if (strlen(p) >= sizeof loc[0])
+                swe_cli_die(2, "%s: a probe location longer than %zu characters", o->files[0],
+                    sizeof loc[0] - 1);
+            if (np < MAXP)
+                memcpy(loc[np++], p, strlen(p) + 1);
+            continue;
+        }
+        if (line[0] == '#')
+            continue;
+        swe_cli_strip_parens(line);
+        char *save = NULL, *tok = strtok_r(line, " \t\r\n", &save);
+        if (!tok)
+            continue;
+        const double t = strtod(tok, NULL);
+        if (!(t > a + 1e-12 && t <= b + 1e-12))
+            continue;
+        n++;
+        for (int k = 0; k < np; k++) {
+            tok = strtok_r(NULL, " \t\r\n", &save);
+            const double u = tok ? strtod(tok, NULL) : 0;
+            s[k] += u;
+            q[k] += u * u;
+            strtok_r(NULL, " \t\r\n", &save);
+            strtok_r(NULL, " \t\r\n", &save);
+        }
+    }
+    fclose(f);
+    if (!n)
+        return 0;
+    printf("Axial air velocity Ux in the near wake (mean / rms of the fluctuation):");
+    for (int k = 0; k < np; k++) {
+        const double m = s[k] / (double)n;
+        printf(" at %s %.2f / %.2f m/s;", loc[k], m, sqrt(q[k] / (double)n - m * m));
+    }
+    printf("\n");
+    return 0;
+}
+
+/* ---- error against run time ------------------------------------------------------ */
+int swe_cmd_errortime(const swe_options *o)
+{
+    const double target = o->target ? swe_cli_number("--target", o->target) : 10;
+    if (!(target > 0))
+        swe_cli_die(2, "--target: '%s' is not a positive error in %%", o->target);
+    if (o->nfiles != 1)
+        swe_cli_die(2, "errortime: give one POINTS file (see --help)");
+    FILE *f = swe_cli_open(o->files[0]);
+    char line[4096];
+    for (int ln = 1; fgets(line, sizeof line, f); ln++) {
+        line[strcspn(line, "\r\n")] = 0;
+        char *fld[4], *save = NULL;
+        int k = 0;
+        for (char *t = strtok_r(line, "\t", &save); t && k < 4; t = strtok_r(NULL, "\t", &save))
+            fld[k++] = t;
+        if (k != 4)
+            swe_cli_die(2, "%s line %d is not \"design run wall_s error\" (tab-separated)", o->files[0], ln);
+        const double t = swe_cli_number(o->files[0], fld[2]), e = swe_cli_number(o->files[0], fld[3]);
+        printf("| %s | %s | %.0f | %.1f | %.3g |\n", fld[0], fld[1], t, e,
+               swe_time_for_error(t, e, target));
+    }
+    fclose(f);
+    return 0;
+}
+

@@ -1,0 +1,125 @@
+/* swe_main.c - snowwedge: the statistics of the wind-tunnel wedge's results
+ * (tutorials/wedge/post): the spray's distribution and size classes, the
+ * composition of the classes, the rear face's regions and their effective
+ * sample sizes, and the force coefficients' mean, rms and spectral peak. */
+#include "swe_cli.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+const char *swe_cli_usage =
+"NAME\n"
+"    snowwedge - the statistics of the wind-tunnel wedge (tutorials/wedge)\n"
+"\n"
+"SYNOPSIS\n"
+"    snowwedge distribution SPRAY\n"
+"    snowwedge weights (SPRAY | --masses CSV) --classes D1,D2,...\n"
+"    snowwedge classes --weights FILE --table FILE --desc TEXT [SPRAY]\n"
+"    snowwedge regions --weights FILE --table FILE --desc TEXT\n"
+"    snowwedge map --weights FILE MAP.csv...\n"
+"    snowwedge outline MAP.csv\n"
+"    snowwedge rear-stats --label TEXT --from TA --to TB --outline MAP.csv\n"
+"                         --kind sticks|impacts [RECORDS.post...]\n"
+"    snowwedge forces --window T0,T1 COEFFICIENT.dat\n"
+"    snowwedge probes --window T0,T1 PROBES_U\n"
+"    snowwedge errortime [--target P] POINTS\n"
+"    snowwedge --help\n"
+"\n"
+"    SPRAY is --mvd UM [--sigma-g S] [--range MIN,MAX] [--freeze F]: droplet\n"
+"    mass log-normal with median volume diameter UM (0.1 .. 1000 um), geometric\n"
+"    standard deviation S (1 < S <= 10, default 1.8), droplets MIN .. MAX um\n"
+"    (default 2,150), ice diameter F x the droplet's (0.5 .. 2, default 1.03).\n"
+"\n"
+"DESCRIPTION\n"
+"    distribution  the spray's mass density of the ice diameter as OpenFOAM's\n"
+"             general distribution (constant/sprayDistribution): 121 diameters\n"
+"             log-spaced over the frozen range, in m, density x 1e-6.\n"
+"    weights  per class (ice diameters D1 < D2 < ... um) one line \"D w e0 e1\":\n"
+"             its mass share w of the spray truncated to its range, and its edges\n"
+"             (the geometric means of the neighbours, the range's ends outside).\n"
+"             With --masses, lines \"d_um,mass\" (d_um one of the classes; #\n"
+"             lines and blank lines skipped) normalized; e0, e1 then nan.\n"
+"    classes  the markdown table of the classes of a composed spray (classes.md:\n"
+"             edges, w, rear capture in ppm of the sprayed mass, its error\n"
+"             1/sqrt(n_eff), share of the rear deposit) and the mass median\n"
+"             diameters of the spray and of the rear deposit: the class holding\n"
+"             it and, with SPRAY, interpolated (the log-normal within each class,\n"
+"             the class's capture constant across it; bisection).\n"
+"    regions  the markdown table of the composed rear-face regions (regions.md):\n"
+"             deposit sum_k w_k M_k,r, its relative standard error\n"
+"             (se^2 = sum (w_k M_k,r)^2 / n_eff_k,r), its mean per area over the\n"
+"             face's, and whether it stands out by more than 2 standard errors;\n"
+"             when every class has its halves, the halves of the window (x2)\n"
+"             and their z = difference / its standard error (disagree: |z| > 2).\n"
+"             --weights is the output of weights; --table one line per class:\n"
+"             \"D injected deposit\" then mass and n_eff of left side, right side,\n"
+"             centre, edges, whole face for the window, then (optional) the same\n"
+"             ten for the first and the second half.\n"
+"    map      the composed rear-face map: CSV y,z,deposit_kg_m2 summed over the\n"
+"             maps (the class's diameter from the path .../d<D>um/FILE) with\n"
+"             their weights, in the first map's order of faces.\n"
+"    outline  \"y0 y1 z0 z1\" of a rear-face map: the face centres extended by\n"
+"             half a face (6 significant digits).\n"
+"    rear-stats  one markdown row \"| TEXT | left | right | centre | edges |\n"
+"             whole face |\": per region the records with TA < Time <= TB\n"
+"             (OpenFOAM .post files with the header # Time (position0 position1\n"
+"             position2) origProc origId nParticle d rho), their independent\n"
+"             origins, mass (nParticle rho pi d^3 / 6), effective sample size\n"
+"             n_eff = (sum_a W_a)^2 / sum_a W_a^2 and error 1/sqrt(n_eff).\n"
+"    forces   over T0 < t <= T1 of forceCoeffs' table: mean Cd, rms and\n"
+"             dominant frequency of Cs and Cl (the largest peak of the transform\n"
+"             on the uneven samples, 2/W .. 300 Hz in steps of 1/(4W)) and their\n"
+"             Strouhal numbers f H / U (H 0.12 m, U 19.444 m/s); one line.\n"
+"    probes   over T0 < t <= T1 of a probes table of U: mean and rms of Ux at\n"
+"             every probe; one line.\n"
+"    errortime  POINTS has one tab-separated line \"design run wall_s error\" per\n"
+"             sampling design (error: relative, in %); prints a markdown row per\n"
+"             line with the time that design needs for the target error P %\n"
+"             (default 10) at its rate: wall_s (error / P)^2 (the error of n\n"
+"             independent samples falls as 1/sqrt(n), the time grows as n).\n"
+"\n"
+"EXIT STATUS\n"
+"    0 success; 1 an input file unreadable; 2 usage or bad input (one line\n"
+"    naming the input and the value).\n";
+
+int main(int argc, char **argv)
+{
+    if (argc < 2)
+        swe_cli_die(2, "give a command (see --help)");
+    if (!strcmp(argv[1], "-h") || !strcmp(argv[1], "--help")) {
+        fputs(swe_cli_usage, stdout);
+        return 0;
+    }
+    swe_options o = {0};
+    swe_cli_parse(argc, argv, &o);
+    int rc;
+    if (!strcmp(argv[1], "distribution"))
+        rc = swe_cmd_distribution(&o);
+    else if (!strcmp(argv[1], "weights"))
+        rc = swe_cmd_weights(&o);
+    else if (!strcmp(argv[1], "classes"))
+        rc = swe_cmd_classes(&o);
+    else if (!strcmp(argv[1], "regions"))
+        rc = swe_cmd_regions(&o);
+    else if (!strcmp(argv[1], "map"))
+        rc = swe_cmd_map(&o);
+    else if (!strcmp(argv[1], "outline"))
+        rc = swe_cmd_outline(&o);
+    else if (!strcmp(argv[1], "rear-stats"))
+        rc = swe_cmd_rear_stats(&o);
+    else if (!strcmp(argv[1], "forces"))
+        rc = swe_cmd_forces(&o);
+    else if (!strcmp(argv[1], "probes"))
+        rc = swe_cmd_probes(&o);
+    else if (!strcmp(argv[1], "errortime"))
+        rc = swe_cmd_errortime(&o);
+    else
+        swe_cli_die(2, "unknown command '%s' (see --help)", argv[1]);
+    free(o.files);
+    return rc;
+}
