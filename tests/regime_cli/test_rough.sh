@@ -64,7 +64,7 @@ expect2 "wall" collide --d 1e-5 --vn 1 --set wall=rough
 # its estimate and --force; a vcrit of hours too; with --progress a map prints its
 # estimate and the final line; a map of milliseconds without it prints neither
 expect2 "--force" map $L --points 100000 --nd 60 --nv 60 --threads 1 --out "$WORK/x6"
-grep -q "about [0-9.]* h for [0-9.e+]* impacts" "$WORK/e.err" || { cat "$WORK/e.err"; fail "map: the refusal gives no estimate"; }
+grep -Eq "about [0-9.]+ (h|days) for [0-9.e+]+ impacts" "$WORK/e.err" || { cat "$WORK/e.err"; fail "map: the refusal gives no estimate"; }
 # (100 diameters on 1 thread: hours on any machine, so refused whatever its speed)
 dl=$(seq -s, 10 109 | sed 's/\([0-9]*\)/\1e-6/g')
 expect2 "--force" vcrit --d "$dl" $L --points 100000 --vmin 1e-4 --vmax 1000 --tol 1e-12 --threads 1
