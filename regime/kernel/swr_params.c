@@ -3,6 +3,7 @@
  * it, NaN, inf, trailing text or an unknown key is rejected with a one-line
  * message naming the key and the value. */
 #include "swr_params.h"
+#include "swo_err.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -61,19 +62,7 @@ static const num_key wall_keys[] = {
 
 /* The message names what it got; bytes that are not printable ASCII (binary
  * data given as a config file) are shown as '?', never echoed raw. */
-static int fail(char *err, size_t errlen, const char *fmt, ...)
-{
-    if (err && errlen) {
-        va_list ap;
-        va_start(ap, fmt);
-        vsnprintf(err, errlen, fmt, ap);
-        va_end(ap);
-        for (char *c = err; *c; c++)
-            if ((unsigned char)*c < 0x20 || (unsigned char)*c >= 0x7f)
-                *c = '?';
-    }
-    return -1;
-}
+#define fail(err, errlen, ...) swo_fail(-1, err, errlen, __VA_ARGS__)
 
 void swr_params_default(swr_params *p)
 {

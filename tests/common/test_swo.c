@@ -21,6 +21,7 @@
 #include <cmocka.h>
 
 #include "swo_out.h"
+#include "swo_err.h"
 
 static char g_base[] = "/tmp/test_swo_XXXXXX";
 
@@ -524,6 +525,24 @@ static void lists_follow_the_rule(void **s)
     assert_non_null(strstr(err, "'dmt' (in 'dmt') is not one of hertz, jkr-elastic, jkr"));
 }
 
+/* the one error formatter: the code returned, the message truncated to the
+ * buffer, a NULL buffer left alone, bytes that are not printable ASCII as '?' */
+static void errors_are_formatted_and_sanitized(void **state)
+{
+    (void)state;
+    char err[16];
+    assert_int_equal(swo_fail(7, err, sizeof err, "x %d is %s", 3, "bad"), 7);
+    assert_string_equal(err, "x 3 is bad");
+    assert_int_equal(swo_fail(-1, err, sizeof err, "%s", "a long message over the buffer"), -1);
+    assert_string_equal(err, "a long message ");
+    assert_int_equal(swo_fail(2, NULL, 0, "%s", "nothing written"), 2);
+    err[0] = 'z';
+    assert_int_equal(swo_fail(2, err, 0, "%s", "nothing written"), 2);
+    assert_int_equal(err[0], 'z');
+    assert_int_equal(swo_fail(1, err, sizeof err, "k\tv\x01\xff."), 1);
+    assert_string_equal(err, "k?v??.");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -538,6 +557,7 @@ int main(void)
         cmocka_unit_test(full_disk_is_a_failure),
         cmocka_unit_test(signal_cleans_up_when_on),
         cmocka_unit_test(lists_follow_the_rule),
+        cmocka_unit_test(errors_are_formatted_and_sanitized),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -3,6 +3,7 @@
  * and the tables (summary.md, impacts.csv; doc/kernel.md, "Cross-check against
  * LAMMPS"). */
 #include "swl_lammps.h"
+#include "swo_err.h"
 
 #include <errno.h>
 #include <math.h>
@@ -15,14 +16,7 @@
 
 static const char *case_name[] = { "hertz", "jkr-elastic", "jkr" };
 
-static int fail(char *err, size_t errlen, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-    return -1;
-}
+#define fail(err, errlen, ...) swo_fail(-1, err, errlen, __VA_ARGS__)
 
 /* a growing list of table lines */
 typedef struct {

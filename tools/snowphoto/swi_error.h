@@ -1,12 +1,11 @@
-/* swi_error.h - the photo comparison's error reporting (internal). */
+/* swi_error.h - the photo comparison's error reporting (internal): a failing
+ * function returns swi_fail(err, errlen, code, fmt, ...), the message
+ * formatted into err by the libraries' one formatter (common/swo_err.h). */
 #ifndef SWI_ERROR_H
 #define SWI_ERROR_H
 
-#include <stddef.h>
+#include "swo_err.h"
 
-/* Format a one-line message into err (when err and errlen are given) and
- * return code, so that a failing function can `return swi_fail(...)`. */
-int swi_fail(char *err, size_t errlen, int code, const char *fmt, ...)
-    __attribute__((format(printf, 4, 5)));
+#define swi_fail(err, errlen, code, ...) swo_fail(code, err, errlen, __VA_ARGS__)
 
 #endif

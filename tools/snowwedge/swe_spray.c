@@ -1,6 +1,7 @@
 /* swe_spray.c - the wedge's spray: distribution, size classes, mass medians
  * (swe_spray.h). */
 #include "swe_spray.h"
+#include "swo_err.h"
 
 #include <gsl/gsl_cdf.h>
 #include <gsl/gsl_errno.h>
@@ -9,16 +10,7 @@
 #include <stdarg.h>
 #include <stdio.h>
 
-static int fail(char *err, size_t errlen, const char *fmt, ...)
-{
-    if (err && errlen) {
-        va_list ap;
-        va_start(ap, fmt);
-        vsnprintf(err, errlen, fmt, ap);
-        va_end(ap);
-    }
-    return SWE_EINVAL;
-}
+#define fail(err, errlen, ...) swo_fail(SWE_EINVAL, err, errlen, __VA_ARGS__)
 
 void swe_spray_default(swe_spray *s)
 {

@@ -1,6 +1,7 @@
 /* swg_gci.c - observed order, Richardson extrapolation and the grid
  * convergence index of a resolution ladder (see swg_gci.h, doc/convergence.md). */
 #include "swg_gci.h"
+#include "swo_err.h"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_roots.h>
@@ -9,19 +10,7 @@
 #include <stdio.h>
 #include <string.h>
 
-static int fail(char *err, size_t errlen, int code, const char *fmt, ...)
-    __attribute__((format(printf, 4, 5)));
-
-static int fail(char *err, size_t errlen, int code, const char *fmt, ...)
-{
-    if (err && errlen) {
-        va_list ap;
-        va_start(ap, fmt);
-        vsnprintf(err, errlen, fmt, ap);
-        va_end(ap);
-    }
-    return code;
-}
+#define fail(err, errlen, code, ...) swo_fail(code, err, errlen, __VA_ARGS__)
 
 /* x finite and inside [lo, hi]; a NaN is never compared (an ordered comparison
    with a NaN raises FE_INVALID, a trap in the test build) */

@@ -2,17 +2,13 @@
  * the total error of a run and the cheapest run under a target
  * (swg_ladder.h, doc/convergence.md). */
 #include "swg_ladder.h"
+#include "swo_err.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
-static int fail(char *err, size_t errlen, const char *msg)
-{
-    if (err && errlen)
-        snprintf(err, errlen, "%s", msg);
-    return SWG_EINVAL;
-}
+#define fail(err, errlen, msg) swo_fail(SWG_EINVAL, err, errlen, "%s", msg)
 
 int swg_series_mean(const double *t, const double *x, size_t n, double t0, double t1, int nbatch,
                     swg_series_stat *out, char *err, size_t errlen)

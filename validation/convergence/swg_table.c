@@ -1,5 +1,6 @@
 /* swg_table.c - the resolution-ladder table of snowgci (see swg_table.h). */
 #include "swg_table.h"
+#include "swo_err.h"
 #include "swg_csv.h"
 
 #include <ctype.h>
@@ -14,19 +15,7 @@
 #define MAX_ROWS 100000
 #define MAX_COLS SWG_CSV_MAX_COLS
 
-static int fail(char *err, size_t errlen, const char *fmt, ...)
-    __attribute__((format(printf, 3, 4)));
-
-static int fail(char *err, size_t errlen, const char *fmt, ...)
-{
-    if (err && errlen) {
-        va_list ap;
-        va_start(ap, fmt);
-        vsnprintf(err, errlen, fmt, ap);
-        va_end(ap);
-    }
-    return 1;
-}
+#define fail(err, errlen, ...) swo_fail(1, err, errlen, __VA_ARGS__)
 
 void swg_table_free(swg_table *t)
 {
