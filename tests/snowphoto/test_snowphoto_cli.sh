@@ -4,7 +4,7 @@
 # rejection of bad input (exit 2, one line naming the input, no output written).
 set -u
 exe="$SW_BUILD/tools/snowphoto/snowphoto"
-gen="$SW_BUILD/tests/validation/swi_testimg"
+gen="$SW_BUILD/tests/snowphoto/swi_testimg"
 [ -x "$exe" ] && [ -x "$gen" ] || { echo "missing $exe or $gen"; exit 1; }
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
