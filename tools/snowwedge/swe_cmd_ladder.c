@@ -271,9 +271,11 @@ static int cmd_rows(const opts *o)
             char *t = slurp(g.gl_pathv[i]);
             if (!t)
                 continue;
-            char q[256];
-            const char *m = strstr(g.gl_pathv[i], "/compose/mvd") + strlen("/compose/mvd");
-            snprintf(q, sizeof q, "%.*s", (int)(strlen(m) - strlen("/regions.md")), m);
+            /* the spray: the folder's name after "mvd" */
+            char q[256], folder[4096];
+            snprintf(folder, sizeof folder, "%s", g.gl_pathv[i]);
+            folder[strlen(folder) - strlen("/regions.md")] = 0;
+            snprintf(q, sizeof q, "%s", strrchr(folder, '/') + strlen("/mvd"));
             static const char *reg[] = {" left side ", " right side ", " centre ", " edges ",
                                         " whole face "};
             static const char *tag[] = {"left", "right", "centre", "edges", "face"};
