@@ -46,5 +46,9 @@ int swe_cmd_rear_stats(const swe_options *o);
 int swe_cmd_forces(const swe_options *o);
 int swe_cmd_probes(const swe_options *o);
 int swe_cmd_errortime(const swe_options *o);
+/* the commands of swe_cmd_ladder.c (ladder-*, resolution, errortime-points,
+   compose-table), with their own options: the command's exit status, or -1
+   when argv[1] is none of them */
+int swe_ladder_main(int argc, char **argv);
 
 #endif
