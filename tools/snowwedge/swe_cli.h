@@ -46,5 +46,8 @@ int swe_cmd_rear_stats(const swe_options *o);
 int swe_cmd_forces(const swe_options *o);
 int swe_cmd_probes(const swe_options *o);
 int swe_cmd_errortime(const swe_options *o);
+/* the per-run post-processing commands (swe_cmd_post.c): their exit status,
+   or -1 when argv[1] is none of them */
+int swe_cmd_post(int argc, char **argv);
 
 #endif

@@ -95,6 +95,10 @@ int main(int argc, char **argv)
         fputs(swe_cli_usage, stdout);
         return 0;
     }
+    /* the per-run post-processing commands parse their own options */
+    const int post_rc = swe_cmd_post(argc, argv);
+    if (post_rc >= 0)
+        return post_rc;
     swe_options o = {0};
     swe_cli_parse(argc, argv, &o);
     int rc;
