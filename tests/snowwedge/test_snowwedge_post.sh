@@ -79,6 +79,12 @@ check "convergence: the halves x2, their difference, the Poisson error of 36 sti
 check "convergence: the parcel mass 100 / 50 kg and the time steps in the window" \
     "grep -q 'Parcel mass 2 kg (mean of the 50 injected)' '$tmp/conv' && grep -qx 'Time steps in the window: 2, mean deltaT 0.02 s, mean Courant number 0.2 (cell mean), largest 0.9.' '$tmp/conv'"
 
+# parcelSplitting split the cloud's parcels: no Poisson error of equal-mass parcels
+sed 's/^Evolving c$/Evolving c\nparcelSplitting c: 2 parcels split/' "$c/log" > "$c/log.split"
+(cd "$c" && "$S" convergence --cloud c --window 0.2,0.4,0.6 --log log.split --file "$tmp/rs.md") > "$tmp/convs"
+check "convergence: split parcels: n/a" "grep -qx '| nose | 100 | 36 | 3 | 2 | 4 | -67 % | n/a (split) |' '$tmp/convs'"
+check "balance: split = yes" "(cd '$c' && '$S' balance --cloud c --log log.split) | grep -qx 'split = yes'"
+
 # a rear-face map: 2 x (B - A), rows of constant z, y increasing
 printf '# x y z v\n0 1 0 1\n0 -1 0 1\n0 1 -1 2\n' > "$tmp/a.raw"
 printf '# x y z v\n0 1 0 4\n0 -1 0 2\n0 1 -1 2\n' > "$tmp/b.raw"
@@ -109,6 +115,8 @@ echo 'Wall time [s], largest of the processes: flow 100, kinematicCloud 20, kine
 "$S" cost --results "$r" --log "$tmp/wlog" --gate g --mvd 20 > "$tmp/cost"
 check "cost: flow, plain and stratified rows" \
     "[ \"\$(tr '\n' ' ' < '$tmp/cost')\" = 'design,wall_s,face,left,right,centre,edges flow,100,,,,, plain,20,5.5,10,20,,40 stratified,3.5,,3,,, ' ]"
+sed -i 's/^split = no/split = yes/' "$r/g/mass_balance.txt"
+check "cost: a split main cloud is the splitting design" "'$S' cost --results '$r' --log '$tmp/wlog' --gate g --mvd 20 | grep -q '^splitting,20,5.5,'"
 
 # gates, variant and dispersion tables: the same per-patch table twice
 for g in off tangential shear regime rough; do mkdir -p "$r/$g"; cp "$tmp/pp.csv" "$r/$g/deposit_per_patch.csv"; done
