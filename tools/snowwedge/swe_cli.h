@@ -50,5 +50,8 @@ int swe_cmd_errortime(const swe_options *o);
    compose-table), with their own options: the command's exit status, or -1
    when argv[1] is none of them */
 int swe_ladder_main(int argc, char **argv);
+/* the per-run post-processing commands (swe_cmd_post.c): their exit status,
+   or -1 when argv[1] is none of them */
+int swe_cmd_post(int argc, char **argv);
 
 #endif
