@@ -1,6 +1,7 @@
 /* swe_post.c - the per-run post-processing of the wedge: readers of the
  * run's OpenFOAM tables and the numbers made from them (swe_post.h). */
 #include "swe_post.h"
+#include "swo_err.h"
 
 #include <dirent.h>
 #include <math.h>
@@ -10,17 +11,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
-static int fail(int code, char *err, size_t nerr, const char *fmt, ...)
-    __attribute__((format(printf, 4, 5)));
-static int fail(int code, char *err, size_t nerr, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    if (err && nerr)
-        vsnprintf(err, nerr, fmt, ap);
-    va_end(ap);
-    return code;
-}
+#define fail swo_fail  /* common/swo_err.h */
 
 double swe_post_round(double v, int digits)
 {
