@@ -3,8 +3,9 @@
 # files with known answers: the rung's mesh, the estimate of the default coarse run
 # (the line Allrun printed), its refusals (a replay interval below maxDeltaT, the
 # memory), the nozzles of an array, the decomposition of a field of cell centres, the
-# joined logs of a resumed run, the settings check against a ladder; bad inputs exit 2
-# with one line naming the input, an unreadable file exits 1.
+# joined logs of a resumed run, the settings check against a ladder, the transient
+# route's times, the progress line, the latest whole write and the tables a restart
+# began; bad inputs exit 2 with one line naming the input, an unreadable file exits 1.
 set -u
 top=${SW_TOP:?SW_TOP not set}
 build=${SW_BUILD:?SW_BUILD not set}
@@ -64,6 +65,40 @@ check "join-logs: the first part cut at the second's start, the wall time offset
 printf '# setting gate off\nquantity,run,design,level,cells\nCd,a,default,0,100\n' > "$tmp/l.csv"
 check "ladder-check: on the ladder, nothing" "[ -z \"\$('$S' ladder-check --ladder '$tmp/l.csv' --level 0 --cells 100 gate=off)\" ]"
 check "ladder-check: another gate" "[ \"\$('$S' ladder-check --ladder '$tmp/l.csv' --level 0 --cells 100 gate=shear)\" = 'gate shear here, off on the ladder' ]"
+
+# the transient route's times: the default window 0.4 .. 0.8 s, the spray's 6.3 kg over 0.7 s;
+# at level 1 the replay interval a whole fraction of the period (0.1 s / 141)
+"$S" times --spin 0.1 --fill 0.3 --sample 0.4 --class-factor 1 --rate 0.002 --build-up 1800 \
+    --replay-start 0.1 --replay-period 0.1 --replay-interval 0.001 --level 1 --level-scale 0.707106781187 \
+    --checkpoint 30 > "$tmp/t"
+check "times: the window, the spray, the level's replay interval and steps, the checkpoint" \
+    "grep -qx 't0 0.4' '$tmp/t' && grep -qx 't1 0.8' '$tmp/t' && grep -qx 'mass_total 6.3' '$tmp/t' && grep -qx 'rint 0.000709219858156' '$tmp/t' && grep -qx 'maxdt 0.000709219858156' '$tmp/t' && grep -qx 'checkpoint_s 1800' '$tmp/t' && grep -qx 'library_end 0.2' '$tmp/t'"
+"$S" times --spin 0.1 --fill 0.3 --sample 0.4 --class-factor 0.125 --rate 0.002 --build-up 1800 --full > "$tmp/t"
+check "times --full: the window doubled, the classes at 4 x (0.3 + 0.8) / 0.7 the rate" \
+    "grep -qx 'tsample 0.8' '$tmp/t' && grep -qx 'class_factor 0.7857142857' '$tmp/t' && ! grep -q '^rint' '$tmp/t'"
+"$S" times --spin 0.1 --fill 0.25 --sample 0.4 --class-factor 1 --rate 1 --build-up 1 > /dev/null 2> "$tmp/err"
+check "times: a window start off the half-window writes refused" "[ $? -eq 2 ] && grep -q 'must be a whole multiple of samplingTime / 2 (0.4 / 2 s)' '$tmp/err'"
+check "progress: the time left of the solved flow" \
+    "'$S' progress --time 0.05258 --end 0.2 --flow-end 0.1 --phase flow --phase-start 0.01 --elapsed 251 --phase-elapsed 200 --allrun 300 | grep -q 'about 223 s left of the solved flow (to t = 0.1 s;'"
+
+# a case resumed on 2 processes: the latest whole write; the tables a restart at 0.2 began
+mkdir -p "$tmp/case"
+for p in 0 1; do for t in 0 0.1 0.2 0.3; do
+    mkdir -p "$tmp/case/processor$p/$t/uniform"
+    for f in uniform/time U p k omega nut; do echo x > "$tmp/case/processor$p/$t/$f"; done
+done; done
+: > "$tmp/case/processor1/0.3/nut"   # a write cut short on one process
+check "resume-time: the latest time whole on every process" "[ \"\$('$S' resume-time --np 2 '$tmp/case')\" = 0.2 ]"
+"$S" resume-time --np 3 "$tmp/case" > /dev/null 2> "$tmp/err"
+check "resume-time: a missing processor folder refused" "[ $? -eq 2 ] && grep -q 'processor2 is missing' '$tmp/err'"
+pp="$tmp/case/postProcessing"
+mkdir -p "$pp/forces/0" "$pp/forces/0.2" "$pp/lagrangian/0.2" && echo r > "$pp/lagrangian/0.2/records.post"
+printf '# t Cd\n0.1 1\n0.2 2\n0.3 3\n' > "$pp/forces/0/f.dat"
+printf '# t Cd\n0.25 5\n' > "$pp/forces/0.2/f.dat"
+check "restart-tables: the table begun at 0.2" "[ \"\$('$S' restart-tables --time 0.2 '$pp')\" = '$pp/forces/0/f.dat $pp/forces/0.2/f.dat' ]"
+"$S" restart-tables --time 0.2 --join "$pp"
+check "restart-tables --join: one table, rows up to 0.2 then the resumed ones, the folder gone" \
+    "[ \"\$(tr '\n' '|' < '$pp/forces/0/f.dat')\" = '# t Cd|0.1 1|0.2 2|0.25 5|' ] && [ ! -e '$pp/forces/0.2' ] && [ -d '$pp/lagrangian/0.2' ]"
 
 bad() {  # bad PATTERN ARGS...: exit 2, one line naming the input
     local want=$1; shift

@@ -341,13 +341,28 @@ static void total_error(void **st)
     free(s);
 }
 
+/* the time left at the phase's rate: 0.04258 s of solver time in 200 s, 0.04742 s to go
+   to the end of the solved flow: 223 s; in the replay phase to the end of the run */
+static void progress(void **st)
+{
+    (void)st;
+    char s[512];
+    swe_progress_line(s, sizeof s, 0.05258, 0.2, 0.1, 0, 0.01, 251, 200, 300);
+    assert_string_equal(s, "Allrun [300 s]: solver at t = 0.05258 of 0.2 s (26 %), 251 s elapsed, about 223 s "
+                           "left of the solved flow (to t = 0.1 s; the replay after it is faster)");
+    swe_progress_line(s, sizeof s, 0.15, 0.2, 0.1, 1, 0.1, 400, 50, 450);
+    assert_string_equal(s, "Allrun [450 s]: solver at t = 0.15 of 0.2 s (75 %), 400 s elapsed, about 50 s left");
+    swe_progress_line(s, sizeof s, 0.1, 0.2, -1, 0, 0.1, 30, 0, 60);
+    assert_non_null(strstr(s, "time left not yet estimated"));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(mesh),      cmocka_unit_test(estimate_default), cmocka_unit_test(estimate_steady),
         cmocka_unit_test(nozzles),   cmocka_unit_test(decompose),        cmocka_unit_test(level),
         cmocka_unit_test(yplus),     cmocka_unit_test(join_logs),        cmocka_unit_test(join_table),
-        cmocka_unit_test(ladder_why), cmocka_unit_test(total_error),
+        cmocka_unit_test(ladder_why), cmocka_unit_test(total_error),      cmocka_unit_test(progress),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -47,8 +47,9 @@ int swe_cmd_forces(const swe_options *o);
 int swe_cmd_probes(const swe_options *o);
 int swe_cmd_errortime(const swe_options *o);
 
-/* tutorials/wedge/Allrun's commands (swe_cmd_run.c: estimate, mesh, nozzles,
-   decompose, level, yplus, join-logs, join-table, ladder-check, total-error),
+/* tutorials/wedge/Allrun's commands (swe_cmd_run.c: estimate, mesh, times, progress, nozzles,
+   decompose, level, yplus, join-logs, join-table, resume-time, restart-tables,
+   ladder-check, total-error),
    which parse their own options */
 int swe_cmd_run_is(const char *cmd);
 int swe_cmd_run(int argc, char **argv);

@@ -1,5 +1,6 @@
-/* swe_cmd_run.c - snowwedge estimate, mesh, nozzles, decompose, level, yplus,
- * join-logs, join-table, ladder-check, total-error: the numbers of
+/* swe_cmd_run.c - snowwedge estimate, mesh, times, progress, nozzles, decompose, level, yplus,
+ * join-logs, join-table, resume-time, restart-tables, ladder-check, total-error:
+ * the numbers and files of
  * tutorials/wedge/Allrun (swe_run.h). These commands parse their own options. */
 #include "swe_cli.h"
 #include "swe_run.h"
@@ -233,6 +234,72 @@ static int cmd_estimate(int argc, char **argv)
     return 0;
 }
 
+static int cmd_times(int argc, char **argv)
+{
+    run_opt opts[] = {{"--spin", 0, 0, 0},          {"--fill", 0, 0, 0},           {"--sample", 0, 0, 0},
+                      {"--class-factor", 0, 0, 0},  {"--rate", 0, 0, 0},           {"--build-up", 0, 0, 0},
+                      {"--replay-start", 0, 0, 0},  {"--replay-period", 0, 0, 0},  {"--replay-interval", 0, 0, 0},
+                      {"--level", 0, 0, 0},         {"--level-scale", 0, 0, 0},    {"--checkpoint", 0, 0, 0},
+                      {"--full", 1, 0, 0},          {"--halfstep", 1, 0, 0},       {0}};
+    const char **pos = calloc((size_t)argc, sizeof *pos);
+    if (!pos || run_parse(argc, argv, opts, pos) != 0)
+        swe_cli_die(2, "times: no file arguments (see --help)");
+    free(pos);
+    const char *C = "times";
+    const char *num_opts[] = {"--spin", "--fill", "--sample", "--class-factor", "--rate", "--build-up"};
+    for (size_t i = 0; i < sizeof num_opts / sizeof *num_opts; i++)
+        if (!(number(opts, num_opts[i], C) > 0))
+            swe_cli_die(2, "%s: '%s' is not a positive number", num_opts[i], val(opts, num_opts[i], ""));
+    const char *ri = val(opts, "--replay-interval", NULL);
+    swe_times_in in = {.spin = val(opts, "--spin", ""), .fill = val(opts, "--fill", ""),
+                       .sample = val(opts, "--sample", ""), .class_factor = val(opts, "--class-factor", ""),
+                       .rate = val(opts, "--rate", ""), .build_up = val(opts, "--build-up", ""),
+                       .replay_interval = ri, .level_scale = val(opts, "--level-scale", "1"),
+                       .checkpoint_min = val(opts, "--checkpoint", "off"),
+                       .level = (int)swe_cli_number("--level", val(opts, "--level", "0")),
+                       .full = flag(opts, "--full"), .halfstep = flag(opts, "--halfstep")};
+    if (ri) {
+        in.replay_start = need(opts, "--replay-start", C);
+        in.replay_period = need(opts, "--replay-period", C);
+        if (!(swe_cli_number("--replay-interval", ri) > 0))
+            swe_cli_die(2, "--replay-interval: '%s' is not a positive number", ri);
+    }
+    swe_times_out o;
+    char err[512];
+    if (swe_times(&in, &o, err, sizeof err))
+        swe_cli_die(2, "%s", err);
+    printf("class_factor %s\ntsample %s\nt0 %s\nth %s\nt1 %s\ntwrite %s\nsoi %s\nmass_total %s\n"
+           "duration %s\nsampled %s\nstep_scale %s\nmaxdt %s\nlevel_delta_t %s\n",
+           o.class_factor, o.sample, o.t0, o.th, o.t1, o.write, o.soi, o.mass_total, o.duration, o.sampled,
+           o.step_scale, o.max_delta_t, o.delta_t);
+    if (ri)
+        printf("rint %s\nlibrary_end %s\n", o.replay_interval, o.library_end);
+    if (o.checkpoint_s[0])
+        printf("checkpoint_s %s\n", o.checkpoint_s);
+    return 0;
+}
+
+static int cmd_progress(int argc, char **argv)
+{
+    run_opt opts[] = {{"--time", 0, 0, 0},        {"--end", 0, 0, 0},          {"--flow-end", 0, 0, 0},
+                      {"--phase", 0, 0, 0},       {"--phase-start", 0, 0, 0},  {"--elapsed", 0, 0, 0},
+                      {"--phase-elapsed", 0, 0, 0}, {"--allrun", 0, 0, 0},     {0}};
+    const char **pos = calloc((size_t)argc, sizeof *pos);
+    if (!pos || run_parse(argc, argv, opts, pos) != 0)
+        swe_cli_die(2, "progress: no file arguments (see --help)");
+    free(pos);
+    const char *C = "progress", *ph = val(opts, "--phase", "flow"), *tf = val(opts, "--flow-end", "");
+    if (strcmp(ph, "flow") && strcmp(ph, "replay"))
+        swe_cli_die(2, "--phase: '%s' is not flow or replay", ph);
+    char line[512];
+    swe_progress_line(line, sizeof line, number(opts, "--time", C), number(opts, "--end", C),
+                      *tf ? swe_cli_number("--flow-end", tf) : -1, !strcmp(ph, "replay"),
+                      number(opts, "--phase-start", C), (long)number(opts, "--elapsed", C),
+                      (long)number(opts, "--phase-elapsed", C), (long)number(opts, "--allrun", C));
+    puts(line);
+    return 0;
+}
+
 static int cmd_nozzles(int argc, char **argv)
 {
     run_opt opts[] = {{"--array", 0, 0, 0}, {"--wake", 1, 0, 0},   {"--derived", 0, 0, 0},
@@ -424,6 +491,41 @@ static int cmd_join_logs(int argc, char **argv)
     return 0;
 }
 
+static int cmd_resume_time(int argc, char **argv)
+{
+    run_opt opts[] = {{"--np", 0, 0, 0}, {0}};
+    const char **pos = calloc((size_t)argc, sizeof *pos);
+    if (!pos || run_parse(argc, argv, opts, pos) > 1)
+        swe_cli_die(2, "resume-time: give at most the case folder (see --help)");
+    const double np = swe_cli_number("--np", val(opts, "--np", "1"));
+    if (!(np >= 1 && np == floor(np) && np < 1e6))
+        swe_cli_die(2, "--np: '%s' is not a whole number of processes", val(opts, "--np", ""));
+    char t[256], err[512];
+    if (swe_resume_time(pos[0] ? pos[0] : ".", (int)np, t, sizeof t, err, sizeof err))
+        swe_cli_die(2, "%s", err);
+    if (t[0])
+        printf("%s\n", t);
+    free(pos);
+    return 0;
+}
+
+static int cmd_restart_tables(int argc, char **argv)
+{
+    run_opt opts[] = {{"--time", 0, 0, 0}, {"--remove", 1, 0, 0}, {"--join", 1, 0, 0}, {0}};
+    const char **pos = calloc((size_t)argc, sizeof *pos);
+    if (!pos || run_parse(argc, argv, opts, pos) != 1)
+        swe_cli_die(2, "restart-tables: give the postProcessing folder (see --help)");
+    const char *t = need(opts, "--time", "restart-tables");
+    swe_cli_number("--time", t);
+    const int mode = flag(opts, "--join") ? SWE_TABLES_JOIN : flag(opts, "--remove") ? SWE_TABLES_REMOVE
+                                                                                      : SWE_TABLES_LIST;
+    char err[8400];
+    if (swe_restart_tables(pos[0], t, mode, stdout, err, sizeof err))
+        swe_cli_die(1, "-resume: %s", err);
+    free(pos);
+    return 0;
+}
+
 static int cmd_join_table(int argc, char **argv)
 {
     run_opt opts[] = {{"--time", 0, 0, 0}, {0}};
@@ -493,8 +595,9 @@ static int cmd_ladder(int argc, char **argv, int total)
 
 int swe_cmd_run_is(const char *cmd)
 {
-    const char *c[] = {"estimate", "mesh", "nozzles", "decompose", "level", "yplus",
-                       "join-logs", "join-table", "ladder-check", "total-error"};
+    const char *c[] = {"estimate", "mesh", "times", "progress", "nozzles", "decompose", "level", "yplus",
+                       "join-logs", "join-table", "resume-time", "restart-tables", "ladder-check",
+                       "total-error"};
     for (size_t i = 0; i < sizeof c / sizeof *c; i++)
         if (!strcmp(cmd, c[i]))
             return 1;
@@ -508,6 +611,10 @@ int swe_cmd_run(int argc, char **argv)
         return cmd_estimate(argc, argv);
     if (!strcmp(c, "mesh"))
         return cmd_mesh(argc, argv);
+    if (!strcmp(c, "times"))
+        return cmd_times(argc, argv);
+    if (!strcmp(c, "progress"))
+        return cmd_progress(argc, argv);
     if (!strcmp(c, "nozzles"))
         return cmd_nozzles(argc, argv);
     if (!strcmp(c, "decompose"))
@@ -520,5 +627,9 @@ int swe_cmd_run(int argc, char **argv)
         return cmd_join_logs(argc, argv);
     if (!strcmp(c, "join-table"))
         return cmd_join_table(argc, argv);
+    if (!strcmp(c, "resume-time"))
+        return cmd_resume_time(argc, argv);
+    if (!strcmp(c, "restart-tables"))
+        return cmd_restart_tables(argc, argv);
     return cmd_ladder(argc, argv, !strcmp(c, "total-error"));
 }

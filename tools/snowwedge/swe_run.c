@@ -4,11 +4,14 @@
  * precision the file has always had. */
 #include "swe_run.h"
 
+#include <dirent.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 static int fail(char *err, size_t n, int code, const char *fmt, ...)
 {
@@ -288,6 +291,93 @@ int swe_estimate_refuse(const swe_estimate_in *in, const swe_estimate_out *o, ch
                     "more than the %.3g GB free in the case folder: refused",
                     o->disk_fields / GB, in->free_disk / GB);
     return 0;
+}
+
+/* ---- the transient route's times ----------------------------------------------------------- */
+static void awk_print(char *s, size_t n, double v);
+
+/* a number as text with %.10g / %.12g, and such a text read back */
+#define G10(buf, x) snprintf(buf, sizeof buf, "%.10g", (double)(x))
+#define G12(buf, x) snprintf(buf, sizeof buf, "%.12g", (double)(x))
+
+int swe_times(const swe_times_in *in, swe_times_out *o, char *err, size_t nerr)
+{
+    memset(o, 0, sizeof *o);
+    const double s = num(in->spin), f = num(in->fill), c = num(in->class_factor);
+    double w = num(in->sample);
+    /* -full: the window twice as long, the classes' parcels at 4 times the rate (their
+       counts are over fill + window) */
+    if (in->full) {
+        G10(o->class_factor, 4 * c * (f + 2 * w) / (f + w));
+        G10(o->sample, 2 * w);
+        w = num(o->sample);
+    } else {
+        snprintf(o->class_factor, sizeof o->class_factor, "%s", in->class_factor);
+        snprintf(o->sample, sizeof o->sample, "%s", in->sample);
+    }
+    /* the writes every half window: at the window's start, middle and end */
+    const double t0 = s + f, k = t0 / (w / 2);
+    if (k - (long)(k + 0.5) > 1e-9 || (long)(k + 0.5) - k > 1e-9)
+        return fail(err, nerr, 2, "constant/sprayProperties: spinUpTime + fillTime (%s + %s s) must be a whole "
+                    "multiple of samplingTime / 2 (%s / 2 s)", in->spin, in->fill, o->sample);
+    G10(o->t0, t0);
+    G10(o->th, t0 + w / 2);
+    G10(o->t1, t0 + w);
+    G10(o->write, w / 2);
+    /* the spray from the spin-up's end over fill + window, its mass scaled to the build-up time */
+    G10(o->soi, s);
+    G10(o->mass_total, num(in->rate) * num(in->build_up) * (f + w) / w);
+    G10(o->duration, f + w);
+    snprintf(o->sampled, sizeof o->sampled, "%.6g", w / (f + w));
+    const char *m0 = in->halfstep ? "5e-4" : "1e-3";
+    if (in->replay_interval) {
+        const double a = num(in->replay_start), p = num(in->replay_period), i = num(in->replay_interval);
+        const double n = p / i;
+        if (!(n - (long)(n + 0.5) < 1e-6 * n && (long)(n + 0.5) - n < 1e-6 * n && n >= 2 && a + p <= num(o->t1)))
+            return fail(err, nerr, 2, "constant/sprayProperties: replayPeriod (%s s) must be a whole multiple (at "
+                        "least 2) of replayInterval (%s s), and the library (replayStart %s + replayPeriod %s s) "
+                        "must end by the end of the run (%s s)", in->replay_period, in->replay_interval,
+                        in->replay_start, in->replay_period, o->t1);
+        awk_print(o->library_end, sizeof o->library_end, a + p);
+        snprintf(o->replay_interval, sizeof o->replay_interval, "%s", in->replay_interval);
+        if (in->level != 0) { /* a whole fraction of the period, at least 2 snapshots */
+            long nn = (long)(p / (i * num(in->level_scale)) + 0.5);
+            if (nn < 2)
+                nn = 2;
+            G12(o->replay_interval, p / nn);
+        }
+        /* the step scale of the interval itself, so that it stays maxDeltaT's multiple */
+        G12(o->step_scale, num(o->replay_interval) / i);
+    } else
+        snprintf(o->step_scale, sizeof o->step_scale, "%s", in->level_scale);
+    /* maxDeltaT x the step scale, at most the replay interval */
+    double x = num(m0) * num(o->step_scale);
+    if (in->replay_interval && x > num(o->replay_interval))
+        x = num(o->replay_interval);
+    G12(o->max_delta_t, x);
+    /* the first step: 1e-4 s x the step scale */
+    snprintf(o->delta_t, sizeof o->delta_t, "%.6g", 1e-4 * num(o->step_scale));
+    if (strcmp(in->checkpoint_min, "off"))
+        G10(o->checkpoint_s, 60 * num(in->checkpoint_min));
+    return 0;
+}
+
+/* ---- the progress line ----------------------------------------------------------------------- */
+void swe_progress_line(char *s, size_t n, double t, double t_end, double t_flow, int replay_phase,
+                       double ts, long elapsed, long phase_elapsed, long allrun)
+{
+    const double to = t_flow >= 0 && !replay_phase ? t_flow : t_end;
+    const double r = t > ts ? phase_elapsed * (to - t) / (t - ts) : -1;
+    char left[256];
+    if (r < 0)
+        snprintf(left, sizeof left, "time left not yet estimated");
+    else if (to != t_end)
+        snprintf(left, sizeof left, "about %.0f s left of the solved flow (to t = %g s; the replay after it is faster)",
+                 r, to);
+    else
+        snprintf(left, sizeof left, "about %.0f s left", r);
+    snprintf(s, n, "Allrun [%ld s]: solver at t = %.4g of %g s (%.0f %%), %ld s elapsed, %s", allrun, t, t_end,
+             100 * t / t_end, elapsed, left);
 }
 
 /* ---- the nozzles ---------------------------------------------------------------------- */
@@ -670,6 +760,167 @@ int swe_join_table(FILE *base, FILE *add, double t, FILE *out)
         if (line[0] != '#')
             fputs(line, out);
     return 0;
+}
+
+/* a time folder's name: a digit, then digits, '.', 'e', '+', '-' */
+static int is_time_name(const char *s)
+{
+    if (*s < '0' || *s > '9')
+        return 0;
+    for (; *s; s++)
+        if (!strchr("0123456789.e+-", *s))
+            return 0;
+    return 1;
+}
+
+typedef struct {
+    char name[256];
+    double v;
+} tname;
+
+static int tname_desc(const void *a, const void *b)
+{
+    const tname *x = a, *y = b;
+    return x->v < y->v ? 1 : x->v > y->v ? -1 : -strcmp(x->name, y->name);
+}
+
+/* the time folders (names) of dir, latest first; returns their count, -1 unreadable */
+static int time_names(const char *dir, tname **out)
+{
+    DIR *d = opendir(dir);
+    if (!d)
+        return -1;
+    int n = 0, cap = 0;
+    tname *t = NULL;
+    for (struct dirent *e; (e = readdir(d));) {
+        if (!is_time_name(e->d_name) || strlen(e->d_name) >= sizeof t->name)
+            continue;
+        if (n == cap) {
+            cap = cap ? 2 * cap : 16;
+            tname *u = realloc(t, (size_t)cap * sizeof *t);
+            if (!u)
+                break;
+            t = u;
+        }
+        snprintf(t[n].name, sizeof t[n].name, "%s", e->d_name);
+        t[n].v = strtod(e->d_name, NULL);
+        n++;
+    }
+    closedir(d);
+    if (n)
+        qsort(t, (size_t)n, sizeof *t, tname_desc);
+    *out = t;
+    return n;
+}
+
+static int nonempty_file(const char *path)
+{
+    struct stat st;
+    return !stat(path, &st) && st.st_size > 0;
+}
+
+int swe_resume_time(const char *case_dir, int nproc, char *t, size_t n, char *err, size_t nerr)
+{
+    char root[4096], path[8192];
+    t[0] = 0;
+    for (int r = 0; nproc > 1 && r < nproc; r++) {
+        struct stat st;
+        snprintf(root, sizeof root, "%s/processor%d", case_dir, r);
+        if (stat(root, &st) || !S_ISDIR(st.st_mode))
+            return fail(err, nerr, 2, "-resume: processor%d is missing (the run was on %d processes; nothing "
+                        "to resume)", r, nproc);
+    }
+    if (nproc > 1)
+        snprintf(root, sizeof root, "%s/processor0", case_dir);
+    else
+        snprintf(root, sizeof root, "%s", case_dir);
+    tname *tn = NULL;
+    const int k = time_names(root, &tn);
+    const char *fields[] = {"uniform/time", "U", "p", "k", "omega", "nut"};
+    for (int i = 0; i < k && !t[0]; i++) {
+        if (!(tn[i].v > 0))
+            continue;
+        int ok = 1;
+        for (int r = 0; ok && r < (nproc > 1 ? nproc : 1); r++)
+            for (size_t f = 0; ok && f < sizeof fields / sizeof *fields; f++) {
+                if (nproc > 1)
+                    snprintf(path, sizeof path, "%s/processor%d/%s/%s", case_dir, r, tn[i].name, fields[f]);
+                else
+                    snprintf(path, sizeof path, "%s/%s/%s", case_dir, tn[i].name, fields[f]);
+                ok = nonempty_file(path);
+            }
+        if (ok)
+            snprintf(t, n, "%s", tn[i].name);
+    }
+    free(tn);
+    return 0;
+}
+
+static int name_cmp(const struct dirent **a, const struct dirent **b)
+{
+    return strcmp((*a)->d_name, (*b)->d_name);
+}
+
+int swe_restart_tables(const char *dir, const char *t, int mode, FILE *out, char *err, size_t nerr)
+{
+    struct dirent **sub = NULL;
+    const int ns = scandir(dir, &sub, NULL, name_cmp);
+    int rc = 0;
+    char tdir[4096], first[8192], add[8192], tmp[8300];
+    for (int i = 0; i < ns; i++) {
+        const char *name = sub[i]->d_name;
+        struct stat st;
+        snprintf(tdir, sizeof tdir, "%s/%s/%s", dir, name, t);
+        if (!rc && name[0] != '.' && strcmp(name, "lagrangian") && !stat(tdir, &st) && S_ISDIR(st.st_mode)) {
+            char named[4096];
+            snprintf(named, sizeof named, "%s/%s", dir, name);
+            tname *tn = NULL;
+            const int k = time_names(named, &tn);
+            const char *base = k > 0 ? tn[k - 1].name : NULL; /* the first (lowest) time */
+            struct dirent **files = NULL;
+            const int nf = base && strcmp(base, t) ? scandir(tdir, &files, NULL, name_cmp) : 0;
+            for (int j = 0; j < nf; j++) {
+                snprintf(add, sizeof add, "%s/%s", tdir, files[j]->d_name);
+                snprintf(first, sizeof first, "%s/%s/%s", named, base, files[j]->d_name);
+                struct stat sa, sb;
+                if (!rc && !stat(add, &sa) && S_ISREG(sa.st_mode) && !stat(first, &sb) && S_ISREG(sb.st_mode)) {
+                    if (mode == SWE_TABLES_LIST)
+                        fprintf(out, "%s %s\n", first, add);
+                    else if (mode == SWE_TABLES_REMOVE)
+                        remove(add);
+                    else {
+                        snprintf(tmp, sizeof tmp, "%s.joined", add);
+                        FILE *a = fopen(first, "r"), *b = fopen(add, "r"), *o = fopen(tmp, "w");
+                        int ok = a && b && o && !swe_join_table(a, b, strtod(t, NULL), o);
+                        if (a)
+                            fclose(a);
+                        if (b)
+                            fclose(b);
+                        if (o && fclose(o))
+                            ok = 0;
+                        if (!ok || rename(tmp, first) || remove(add))
+                            rc = fail(err, nerr, 1, "could not join %s", add);
+                    }
+                }
+                free(files[j]);
+            }
+            free(files);
+            free(tn);
+        }
+        free(sub[i]);
+    }
+    free(sub);
+    if (mode == SWE_TABLES_JOIN && !rc) {
+        DIR *d = opendir(dir);
+        for (struct dirent *e; d && (e = readdir(d));) {
+            snprintf(tdir, sizeof tdir, "%s/%s/%s", dir, e->d_name, t);
+            if (e->d_name[0] != '.')
+                rmdir(tdir); /* only when empty */
+        }
+        if (d)
+            closedir(d);
+    }
+    return rc;
 }
 
 /* ---- the total error against a resolution ladder ------------------------------------------ */

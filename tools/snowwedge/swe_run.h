@@ -65,6 +65,37 @@ void swe_estimate_print(FILE *f, const swe_estimate_in *in, const swe_estimate_o
    refusal, one line); 0 otherwise */
 int swe_estimate_refuse(const swe_estimate_in *in, const swe_estimate_out *out, char *msg, size_t n);
 
+/* ---- the transient route's times ------------------------------------------------------
+ * The inputs as the case gives them (text, copied where a file shows them); the
+ * outputs as text with the precision Allrun's dictionaries and logs have always had. */
+typedef struct {
+    const char *spin, *fill, *sample, *class_factor, *rate, *build_up;
+    const char *replay_start, *replay_period, *replay_interval; /* NULL: no replay */
+    const char *level_scale, *checkpoint_min;                   /* "off": no checkpoint */
+    int level, full, halfstep;
+} swe_times_in;
+
+typedef struct {
+    char class_factor[32], sample[32];           /* -full: 4 x the rate, twice the window */
+    char t0[32], th[32], t1[32], write[32];       /* the window, its middle, the writes */
+    char soi[32], mass_total[32], duration[32];   /* constant/sprayDerived */
+    char replay_interval[32];                     /* level-scaled: a whole fraction of the period */
+    char step_scale[32], max_delta_t[32], delta_t[32], checkpoint_s[32];
+    char sampled[32], library_end[32];
+} swe_times_out;
+
+/* 2 with err: spinUpTime + fillTime not a whole multiple of half the window, or the
+   replay period not a whole multiple (at least 2) of its interval, or the library
+   ending after the run */
+int swe_times(const swe_times_in *in, swe_times_out *out, char *err, size_t nerr);
+
+/* ---- the progress line while the solver runs ---------------------------------------------
+ * "Allrun [A s]: solver at t = T of TE s (P %), E s elapsed, ...": the time left at
+ * the rate of the current phase since its first reading (time ts, es seconds ago);
+ * in the flow phase of a replayed run (t_flow >= 0) the time left to t_flow only */
+void swe_progress_line(char *s, size_t n, double t, double t_end, double t_flow, int replay_phase,
+                       double ts, long elapsed, long phase_elapsed, long allrun);
+
 /* ---- the nozzles' coneInjection dictionaries ------------------------------------------ */
 /* the points "x y z" of a nozzleArray file (// comments and parentheses removed;
    lines of three numbers, their text kept); returns the count, -1 unreadable */
@@ -104,6 +135,19 @@ int swe_yplus_rear(FILE *const *tables, int n, double *mn, double *mean, double 
 int swe_join_logs(FILE *const *parts, int n, FILE *out, char *err, size_t nerr);
 /* a function object's table: BASE's header and rows up to t, then NEW's rows */
 int swe_join_table(FILE *base, FILE *add, double t, FILE *out);
+
+/* the latest time folder after 0 written whole in case_dir (nproc 1) or in each of its
+   processor0..N-1: uniform/time and the flow fields U p k omega nut non-empty. t is
+   "" when there is none; 2 with err when a processor folder is missing */
+int swe_resume_time(const char *case_dir, int nproc, char *t, size_t n, char *err, size_t nerr);
+
+/* the tables a restart at time t began: for every folder NAME of dir (postProcessing,
+   but its lagrangian records) holding NAME/t, the files of NAME/t that its first
+   time folder holds too. SWE_TABLES_LIST prints "FIRST NEW" lines to out,
+   SWE_TABLES_REMOVE removes each NEW, SWE_TABLES_JOIN joins NEW into FIRST
+   (swe_join_table), removes it and then every empty NAME/t */
+enum { SWE_TABLES_LIST, SWE_TABLES_REMOVE, SWE_TABLES_JOIN };
+int swe_restart_tables(const char *dir, const char *t, int mode, FILE *out, char *err, size_t nerr);
 
 /* ---- the total error against a resolution ladder (results/total_error.md) -------------- */
 /* why the run is not on the ladder (settings "KEY VALUE" against the ladder's
