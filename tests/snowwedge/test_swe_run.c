@@ -356,6 +356,22 @@ static void progress(void **st)
     assert_non_null(strstr(s, "time left not yet estimated"));
 }
 
+/* the spray's bounds and the classes' consistency, refused with the dictionary's texts */
+static void spray_checks(void **st)
+{
+    (void)st;
+    char err[512];
+    assert_int_equal(swe_check_spray("20", "1.8", "1.03", "2", "150", err, sizeof err), 0);
+    assert_int_equal(swe_check_spray("20", "1", "1.03", "2", "150", err, sizeof err), 2);
+    assert_non_null(strstr(err, "got mvd 20, sigmaG 1, freeze 1.03, range (2 150)"));
+    assert_int_equal(swe_check_spray("20", "1.8", "1.03", "0.05", "150", err, sizeof err), 2);
+    assert_int_equal(swe_check_classes("5,10,20,40,80", "100,300,345,200,100", err, sizeof err), 0);
+    assert_int_equal(swe_check_classes("5,10", "100", err, sizeof err), 2);
+    assert_non_null(strstr(err, "got (5,10) and (100)"));
+    assert_int_equal(swe_check_classes("5,1001", "1,1", err, sizeof err), 2);
+    assert_int_equal(swe_check_classes("5,10,5", "1,1,1", err, sizeof err), 2);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -363,6 +379,7 @@ int main(void)
         cmocka_unit_test(nozzles),   cmocka_unit_test(decompose),        cmocka_unit_test(level),
         cmocka_unit_test(yplus),     cmocka_unit_test(join_logs),        cmocka_unit_test(join_table),
         cmocka_unit_test(ladder_why), cmocka_unit_test(total_error),      cmocka_unit_test(progress),
+        cmocka_unit_test(spray_checks),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

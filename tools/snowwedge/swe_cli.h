@@ -47,7 +47,7 @@ int swe_cmd_forces(const swe_options *o);
 int swe_cmd_probes(const swe_options *o);
 int swe_cmd_errortime(const swe_options *o);
 
-/* tutorials/wedge/Allrun's commands (swe_cmd_run.c: estimate, mesh, times, progress, nozzles,
+/* tutorials/wedge/Allrun's commands (swe_cmd_run.c: spray-check, estimate, mesh, times, progress, nozzles,
    decompose, level, yplus, join-logs, join-table, resume-time, restart-tables,
    ladder-check, total-error),
    which parse their own options */

@@ -1,4 +1,4 @@
-/* swe_cmd_run.c - snowwedge estimate, mesh, times, progress, nozzles, decompose, level, yplus,
+/* swe_cmd_run.c - snowwedge spray-check, estimate, mesh, times, progress, nozzles, decompose, level, yplus,
  * join-logs, join-table, resume-time, restart-tables, ladder-check, total-error:
  * the numbers and files of
  * tutorials/wedge/Allrun (swe_run.h). These commands parse their own options. */
@@ -181,7 +181,11 @@ static int cmd_estimate(int argc, char **argv)
     if (!in.steady) {
         double cls[256], sizes[256];
         const int nsizes = list_numbers(val(opts, "--sizes", ""), sizes, 256);
-        in.nclasses = nsizes ? list_numbers(val(opts, "--class-parcels", ""), cls, 256) : 0;
+        /* without --class-parcels every class has the spray's parcels per nozzle */
+        const char *cp = val(opts, "--class-parcels", NULL);
+        in.nclasses = nsizes ? cp ? list_numbers(cp, cls, 256) : nsizes : 0;
+        for (int i = 0; !cp && i < nsizes; i++)
+            cls[i] = in.ppn;
         in.class_ppn = cls;
         in.class_factor = number(opts, "--class-factor", C);
         in.ndisp = 1;
@@ -231,6 +235,29 @@ static int cmd_estimate(int argc, char **argv)
     swe_estimate_out out;
     swe_estimate(&in, &out);
     swe_estimate_print(stdout, &in, &out);
+    return 0;
+}
+
+static int cmd_spray_check(int argc, char **argv)
+{
+    run_opt opts[] = {{"--mvd", 0, 0, 0},   {"--sigma-g", 0, 0, 0}, {"--freeze", 0, 0, 0},
+                      {"--range", 0, 0, 0}, {"--sizes", 0, 0, 0},   {"--class-parcels", 0, 0, 0},
+                      {0}};
+    const char **pos = calloc((size_t)argc, sizeof *pos);
+    if (!pos || run_parse(argc, argv, opts, pos) != 0)
+        swe_cli_die(2, "spray-check: no file arguments (see --help)");
+    free(pos);
+    const char *C = "spray-check", *r = need(opts, "--range", C), *c = strchr(r, ',');
+    if (!c)
+        swe_cli_die(2, "--range: '%s' is not MIN,MAX", r);
+    char lo[128], err[1024];
+    snprintf(lo, sizeof lo, "%.*s", (int)(c - r), r);
+    if (swe_check_spray(need(opts, "--mvd", C), need(opts, "--sigma-g", C), need(opts, "--freeze", C), lo, c + 1,
+                        err, sizeof err))
+        swe_cli_die(2, "%s", err);
+    const char *sz = val(opts, "--sizes", NULL);
+    if (sz && swe_check_classes(sz, need(opts, "--class-parcels", C), err, sizeof err))
+        swe_cli_die(2, "%s", err);
     return 0;
 }
 
@@ -595,7 +622,7 @@ static int cmd_ladder(int argc, char **argv, int total)
 
 int swe_cmd_run_is(const char *cmd)
 {
-    const char *c[] = {"estimate", "mesh", "times", "progress", "nozzles", "decompose", "level", "yplus",
+    const char *c[] = {"spray-check", "estimate", "mesh", "times", "progress", "nozzles", "decompose", "level", "yplus",
                        "join-logs", "join-table", "resume-time", "restart-tables", "ladder-check",
                        "total-error"};
     for (size_t i = 0; i < sizeof c / sizeof *c; i++)
@@ -609,6 +636,8 @@ int swe_cmd_run(int argc, char **argv)
     const char *c = argv[1];
     if (!strcmp(c, "estimate"))
         return cmd_estimate(argc, argv);
+    if (!strcmp(c, "spray-check"))
+        return cmd_spray_check(argc, argv);
     if (!strcmp(c, "mesh"))
         return cmd_mesh(argc, argv);
     if (!strcmp(c, "times"))

@@ -138,6 +138,48 @@ long swe_mesh_ny(const swe_mesh *m)
     return swe_mesh_get(m, "nBody") + 2 * swe_mesh_get(m, "nOut");
 }
 
+/* ---- the case's spray and size classes ------------------------------------------------------ */
+int swe_check_spray(const char *mvd, const char *sigma_g, const char *freeze, const char *range_lo,
+                    const char *range_hi, char *err, size_t nerr)
+{
+    const double m = num(mvd), s = num(sigma_g), f = num(freeze), a = num(range_lo), b = num(range_hi);
+    if (!(s > 1 && s <= 10 && f >= 0.5 && f <= 2 && a >= 0.1 && b <= 10000 && m >= 0.1 && m <= 1000))
+        return fail(err, nerr, 2, "constant/sprayProperties: spray needs mvd in [0.1, 1000] um, sigmaG in (1, "
+                    "10], freeze in [0.5, 2] and a range within [0.1, 10000] um; got mvd %s, sigmaG %s, freeze "
+                    "%s, range (%s %s)", mvd, sigma_g, freeze, range_lo, range_hi);
+    return 0;
+}
+
+/* the comma-separated items of a list as numbers; returns their count */
+static int csv_numbers(const char *s, double *v, int max)
+{
+    int n = 0;
+    for (const char *p = s; *p && n < max;) {
+        v[n++] = strtod(p, NULL);
+        p = strchr(p, ',');
+        if (!p)
+            break;
+        p++;
+    }
+    return n;
+}
+
+int swe_check_classes(const char *sizes, const char *parcels, char *err, size_t nerr)
+{
+    double a[256], b[256];
+    const int n = csv_numbers(sizes, a, 256), m = csv_numbers(parcels, b, 256);
+    int ok = n == m;
+    for (int i = 0; ok && i < n; i++) {
+        ok = !(a[i] > 1000);
+        for (int j = 0; ok && j < i; j++)
+            ok = a[j] != a[i];
+    }
+    if (!ok)
+        return fail(err, nerr, 2, "constant/sprayProperties: classes needs sizes (whole um, 1..1000, each once) "
+                    "and as many parcelsPerNozzle, got (%s) and (%s)", sizes, parcels);
+    return 0;
+}
+
 /* ---- the cost estimate ----------------------------------------------------------------
  * Scaled from the default coarse run measured on the development machine:
  *   the flow      3.7e-6 s per cell and solved step on one process, x np^-0.25 on np

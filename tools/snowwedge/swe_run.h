@@ -32,6 +32,15 @@ long swe_mesh_ny(const swe_mesh *m);
 /* the step scale of a level, sqrt(2)^-level (even: 2^(-level/2) exactly) */
 double swe_level_scale(int level);
 
+/* ---- the case's spray and size classes (constant/sprayProperties) -------------------- */
+/* 2 with err unless mvd in [0.1, 1000] um, sigma_g in (1, 10], freeze in [0.5, 2] and
+   the range within [0.1, 10000] um (the texts as the dictionary gives them, for err) */
+int swe_check_spray(const char *mvd, const char *sigma_g, const char *freeze, const char *range_lo,
+                    const char *range_hi, char *err, size_t nerr);
+/* 2 with err unless as many parcel counts as sizes, every size at most 1000 um and
+   each once (the lists as comma-separated text) */
+int swe_check_classes(const char *sizes, const char *parcels, char *err, size_t nerr);
+
 /* ---- the cost estimate ------------------------------------------------------------- */
 typedef struct {
     int steady;                     /* the steady route: cells, parcels, memory, disk only */
