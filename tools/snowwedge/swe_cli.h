@@ -54,4 +54,11 @@ int swe_ladder_main(int argc, char **argv);
    or -1 when argv[1] is none of them */
 int swe_cmd_post(int argc, char **argv);
 
+/* tutorials/wedge/Allrun's commands (swe_cmd_run.c: spray-check, estimate, mesh, times, progress, nozzles,
+   decompose, level, yplus, join-logs, join-table, resume-time, restart-tables,
+   ladder-check, total-error),
+   which parse their own options */
+int swe_cmd_run_is(const char *cmd);
+int swe_cmd_run(int argc, char **argv);
+
 #endif
