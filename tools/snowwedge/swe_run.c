@@ -3,6 +3,7 @@
  * (a time, a setting) is copied as text, a computed one printed with the
  * precision the file has always had. */
 #include "swe_run.h"
+#include "swo_err.h"
 
 #include <dirent.h>
 #include <math.h>
@@ -13,16 +14,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-static int fail(char *err, size_t n, int code, const char *fmt, ...)
-{
-    if (err && n) {
-        va_list ap;
-        va_start(ap, fmt);
-        vsnprintf(err, n, fmt, ap);
-        va_end(ap);
-    }
-    return code;
-}
+#define fail(err, n, code, ...) swo_fail(code, err, n, __VA_ARGS__)  /* common/swo_err.h */
 
 /* a text's leading number (0 when it has none), as awk reads a field */
 static double num(const char *s)
