@@ -5,16 +5,8 @@
 # regions and effective sample size, the spectral peak of a sine in a
 # forceCoeffs table, the probes' mean and rms; bad inputs exit 2 with one line
 # naming the input.
-set -u
-top=${SW_TOP:?SW_TOP not set}
-build=${SW_BUILD:?SW_BUILD not set}
-S="$build/tools/snowwedge/snowwedge"
-[ -x "$S" ] || S="$top/bin/snowwedge"
-[ -x "$S" ] || { echo "snowwedge not built"; exit 1; }
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fails=0
-check() { if eval "$2"; then echo "ok   $1"; else echo "FAIL $1"; fails=$((fails+1)); fi; }
+# shellcheck source=common.sh
+. "$(dirname "$0")/common.sh"
 
 "$S" --help > "$tmp/help"; check "--help exits 0 with the synopsis" "[ $? -eq 0 ] && grep -q '^SYNOPSIS' '$tmp/help'"
 # MVD 10 um, no freezing, droplets 2.5 .. 40 um: classes 5 and 20 um split at 10 um, half the mass each
@@ -76,4 +68,4 @@ bad "--target" errortime --target 0 "$tmp/pts"
 bad "tab-separated" errortime <(printf 'a b c d\n')
 "$S" forces --window 0.2,1 "$tmp/nonexistent" > /dev/null 2> "$tmp/err"
 check "an unreadable file: exit 1" "[ $? -eq 1 ] && grep -q 'cannot read' '$tmp/err'"
-[ "$fails" -eq 0 ] && { echo PASS; exit 0; } || { echo "$fails failure(s)"; exit 1; }
+finish

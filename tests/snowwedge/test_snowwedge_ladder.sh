@@ -7,16 +7,8 @@
 # compared (z, change, verdict), the error-time points and plot script, and the
 # composition's options and per-class table; bad inputs exit 1 or 2 with one
 # line naming the input.
-set -u
-top=${SW_TOP:?SW_TOP not set}
-build=${SW_BUILD:?SW_BUILD not set}
-S="$build/tools/snowwedge/snowwedge"
-[ -x "$S" ] || S="$top/bin/snowwedge"
-[ -x "$S" ] || { echo "snowwedge not built"; exit 1; }
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fails=0
-check() { if eval "$2"; then echo "ok   $1"; else echo "FAIL $1"; fails=$((fails+1)); fi; }
+# shellcheck source=common.sh
+. "$(dirname "$0")/common.sh"
 bad() {  # bad RC TEXT args...: exit RC, one line holding TEXT, nothing on stdout
     local want_rc=$1 want=$2; shift 2
     "$S" "$@" > "$tmp/out" 2> "$tmp/err"; local rc=$?
@@ -118,4 +110,4 @@ printf '| period | l | r | c | e | f |\n| window 0.4 .. 0.8 s %s\n| first half %
 check "compose-table: injected x sampled, the rear deposit, mass and n_eff per region, no halves without both" "[ \"\$(cat '$tmp/ct')\" = '5 2 0.002 2 1 0 0 0 0 0 0 0.5 1.5  ' ]"
 bad 1 "d7um: no injected mass" compose-table --sampled 1 "$tmp/sizes" 7
 
-[ "$fails" -eq 0 ] && { echo PASS; exit 0; } || { echo "$fails failure(s)"; exit 1; }
+finish

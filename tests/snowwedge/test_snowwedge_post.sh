@@ -6,16 +6,8 @@
 # Poisson error, a rear-face map as a difference of two raw files, the capture
 # table with the Stokes number, the cost table, the gate and variant tables,
 # the dispersion table; missing inputs exit 1 with one line naming them.
-set -u
-top=${SW_TOP:?SW_TOP not set}
-build=${SW_BUILD:?SW_BUILD not set}
-S="$build/tools/snowwedge/snowwedge"
-[ -x "$S" ] || S="$top/bin/snowwedge"
-[ -x "$S" ] || { echo "snowwedge not built"; exit 1; }
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fails=0
-check() { if eval "$2"; then echo "ok   $1"; else echo "FAIL $1"; fails=$((fails+1)); fi; }
+# shellcheck source=common.sh
+. "$(dirname "$0")/common.sh"
 
 # ---- a case: cloud c, six patches, writes at 0.2, 0.4, 0.6 -----------------------------
 c="$tmp/case"
@@ -142,5 +134,4 @@ check "time-dir: the folder holding a file at a time" "[ \"\$('$S' time-dir --fi
 "$S" capture --bogus 1 > /dev/null 2>&1; rc=$?
 check "an unknown option: exit 2" "[ $rc = 2 ]"
 
-[ "$fails" = 0 ] || { echo "$fails check(s) failed"; exit 1; }
-echo "all checks passed"
+finish

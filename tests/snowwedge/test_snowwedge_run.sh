@@ -6,16 +6,8 @@
 # joined logs of a resumed run, the settings check against a ladder, the transient
 # route's times, the progress line, the latest whole write and the tables a restart
 # began; bad inputs exit 2 with one line naming the input, an unreadable file exits 1.
-set -u
-top=${SW_TOP:?SW_TOP not set}
-build=${SW_BUILD:?SW_BUILD not set}
-S="$build/tools/snowwedge/snowwedge"
-[ -x "$S" ] || S="$top/bin/snowwedge"
-[ -x "$S" ] || { echo "snowwedge not built"; exit 1; }
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fails=0
-check() { if eval "$2"; then echo "ok   $1"; else echo "FAIL $1"; fails=$((fails+1)); fi; }
+# shellcheck source=common.sh
+. "$(dirname "$0")/common.sh"
 coarse="nxUp 12; nxBody 22; nxDown 28; nBody 20; nOut 11;"
 
 "$S" mesh --level 1 "$coarse" > "$tmp/m"
@@ -117,4 +109,4 @@ bad "is not KEY=VALUE" ladder-check --ladder "$tmp/l.csv" --level 0 --cells 1 ga
 check "an unreadable file: exit 1" "[ $? -eq 1 ] && grep -q 'cannot read' '$tmp/err'"
 "$S" decompose --np 9 "$tmp/Cx" "$tmp/Cy" > /dev/null 2> "$tmp/err"
 check "decompose: fewer cells than processes, exit 1" "[ $? -eq 1 ] && grep -q 'could not read the cell centres' '$tmp/err'"
-[ "$fails" -eq 0 ] && { echo PASS; exit 0; } || { echo "$fails failure(s)"; exit 1; }
+finish
