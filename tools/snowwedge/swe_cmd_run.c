@@ -114,6 +114,15 @@ static double g12(double x)
     return strtod(b, NULL);
 }
 
+/* a command of options only: any other argument refused (exit 2) */
+static void options_only(int argc, char **argv, run_opt *opts, const char *cmd)
+{
+    const char **pos = calloc((size_t)argc, sizeof *pos);
+    if (!pos || run_parse(argc, argv, opts, pos) != 0)
+        swe_cli_die(2, "%s: no file arguments (see --help)", cmd);
+    free(pos);
+}
+
 static int cmd_mesh(int argc, char **argv)
 {
     run_opt opts[] = {{"--level", 0, 0, 0}, {"--refine-wake", 1, 0, 0}, {0}};
@@ -154,10 +163,7 @@ static int cmd_estimate(int argc, char **argv)
                       {"--halfstep", 1, 0, 0},     {"--rear-layers", 1, 0, 0},
                       {"--replay", 1, 0, 0},       {"--wake-source", 1, 0, 0},
                       {0}};
-    const char **pos = calloc((size_t)argc, sizeof *pos);
-    if (!pos || run_parse(argc, argv, opts, pos) != 0)
-        swe_cli_die(2, "estimate: no file arguments (see --help)");
-    free(pos);
+    options_only(argc, argv, opts, "estimate");
     const char *C = "estimate";
     swe_estimate_in in = {0};
     const char *route = val(opts, "--route", "transient");
@@ -243,10 +249,7 @@ static int cmd_spray_check(int argc, char **argv)
     run_opt opts[] = {{"--mvd", 0, 0, 0},   {"--sigma-g", 0, 0, 0}, {"--freeze", 0, 0, 0},
                       {"--range", 0, 0, 0}, {"--sizes", 0, 0, 0},   {"--class-parcels", 0, 0, 0},
                       {0}};
-    const char **pos = calloc((size_t)argc, sizeof *pos);
-    if (!pos || run_parse(argc, argv, opts, pos) != 0)
-        swe_cli_die(2, "spray-check: no file arguments (see --help)");
-    free(pos);
+    options_only(argc, argv, opts, "spray-check");
     const char *C = "spray-check", *r = need(opts, "--range", C), *c = strchr(r, ',');
     if (!c)
         swe_cli_die(2, "--range: '%s' is not MIN,MAX", r);
@@ -268,10 +271,7 @@ static int cmd_times(int argc, char **argv)
                       {"--replay-start", 0, 0, 0},  {"--replay-period", 0, 0, 0},  {"--replay-interval", 0, 0, 0},
                       {"--level", 0, 0, 0},         {"--level-scale", 0, 0, 0},    {"--checkpoint", 0, 0, 0},
                       {"--full", 1, 0, 0},          {"--halfstep", 1, 0, 0},       {0}};
-    const char **pos = calloc((size_t)argc, sizeof *pos);
-    if (!pos || run_parse(argc, argv, opts, pos) != 0)
-        swe_cli_die(2, "times: no file arguments (see --help)");
-    free(pos);
+    options_only(argc, argv, opts, "times");
     const char *C = "times";
     const char *num_opts[] = {"--spin", "--fill", "--sample", "--class-factor", "--rate", "--build-up"};
     for (size_t i = 0; i < sizeof num_opts / sizeof *num_opts; i++)
@@ -311,10 +311,7 @@ static int cmd_progress(int argc, char **argv)
     run_opt opts[] = {{"--time", 0, 0, 0},        {"--end", 0, 0, 0},          {"--flow-end", 0, 0, 0},
                       {"--phase", 0, 0, 0},       {"--phase-start", 0, 0, 0},  {"--elapsed", 0, 0, 0},
                       {"--phase-elapsed", 0, 0, 0}, {"--allrun", 0, 0, 0},     {0}};
-    const char **pos = calloc((size_t)argc, sizeof *pos);
-    if (!pos || run_parse(argc, argv, opts, pos) != 0)
-        swe_cli_die(2, "progress: no file arguments (see --help)");
-    free(pos);
+    options_only(argc, argv, opts, "progress");
     const char *C = "progress", *ph = val(opts, "--phase", "flow"), *tf = val(opts, "--flow-end", "");
     if (strcmp(ph, "flow") && strcmp(ph, "replay"))
         swe_cli_die(2, "--phase: '%s' is not flow or replay", ph);
@@ -332,10 +329,7 @@ static int cmd_nozzles(int argc, char **argv)
     run_opt opts[] = {{"--array", 0, 0, 0}, {"--wake", 1, 0, 0},   {"--derived", 0, 0, 0},
                       {"--parcels", 0, 0, 0}, {"--factor", 0, 0, 0}, {"--size", 0, 0, 0},
                       {0}};
-    const char **pos = calloc((size_t)argc, sizeof *pos);
-    if (!pos || run_parse(argc, argv, opts, pos) != 0)
-        swe_cli_die(2, "nozzles: no file arguments (see --help)");
-    free(pos);
+    options_only(argc, argv, opts, "nozzles");
     const char *C = "nozzles", *size = need(opts, "--size", C);
     const int wake = flag(opts, "--wake");
     const double sz = strcmp(size, "spray") ? swe_cli_number("--size", size) : 0;
@@ -451,10 +445,7 @@ static int cmd_level(int argc, char **argv)
                       {"--max-delta-t", 0, 0, 0}, {"--replay-interval", 0, 0, 0},
                       {"--gate", 0, 0, 0},        {"--mvd", 0, 0, 0},         {"--rear-layers", 0, 0, 0},
                       {"--rear-yplus", 0, 0, 0},  {0}};
-    const char **pos = calloc((size_t)argc, sizeof *pos);
-    if (!pos || run_parse(argc, argv, opts, pos) != 0)
-        swe_cli_die(2, "level: no file arguments (see --help)");
-    free(pos);
+    options_only(argc, argv, opts, "level");
     const char *C = "level", *w = need(opts, "--window", C), *c = strchr(w, ',');
     if (!c)
         swe_cli_die(2, "--window: '%s' is not T0,T1", w);
