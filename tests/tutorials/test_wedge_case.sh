@@ -233,7 +233,7 @@ run_case() {  # run_case N ARGS: Allrun ARGS in a fresh copy $tmp/wedgeN, then t
             # post/wedge-resolution reads a real run's tables: the run against itself
             # compares every region with snow and finds no change
             check "wedge-resolution: the run against itself, the 3 sprays and the classes, nothing differs" \
-                "'$w/post/wedge-resolution' --base '$r' --refined '$r' > '$tmp/res$n.md' && [ \$(grep -c '^## Spray MVD' '$tmp/res$n.md') = 3 ] && [ \$(grep -c 'differing by more than 2 standard errors: 0[.]' '$tmp/res$n.md') = 4 ] && ! grep -q -e '| differs |' -e 'one run only' '$tmp/res$n.md' && grep -q '| whole face | .* | +0.0 % | .* | +0.0 | agrees' '$tmp/res$n.md'"
+                "SNOWWALL_TOP='$top' '$w/post/wedge-resolution' --base '$r' --refined '$r' > '$tmp/res$n.md' && [ \$(grep -c '^## Spray MVD' '$tmp/res$n.md') = 3 ] && [ \$(grep -c 'differing by more than 2 standard errors: 0[.]' '$tmp/res$n.md') = 4 ] && ! grep -q -e '| differs |' -e 'one run only' '$tmp/res$n.md' && grep -q '| whole face | .* | +0.0 % | .* | +0.0 | agrees' '$tmp/res$n.md'"
             check "capture.md: the 5 classes" "[ \$(grep -c -E '^\| (5|10|20|40|80) \|' '$r/capture.md') = 5 ]"
             check "the classes are split, the main cloud is not" \
                 "grep -q 'splittingClasses' '$w/constant/kinematicCloud_d5umProperties' && ! grep -q 'splittingClasses' '$w/constant/kinematicCloudProperties' && [ ! -e '$w/constant/splitting' ]"
