@@ -1,4 +1,5 @@
-/* swr_collide.c - one ice sphere hitting a flat wall: the collision integrator
+/* swr_collide.c - one ice sphere hitting a wall: the collision integrator (a
+ * rough wall's contacts are integrated by swr_rough.c, entered from here)
  * (see swr_collide.h; the physics and numerics are in doc/kernel.md).
  *
  * Units: the integration runs in units where the particle mass, the

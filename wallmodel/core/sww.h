@@ -37,7 +37,11 @@ typedef enum { SWW_STICK = 0, SWW_BOUNCE = 1, SWW_RIPOFF = 2 } sww_fate;
 /* Why the fate was chosen. */
 typedef enum {
     SWW_BY_CRITERION = 0,   /* d <= d_crit(v_n): stick; d > d_crit: bounce      */
-    SWW_BY_TANGENTIAL = 1,  /* stick candidate bounced: |v_t| > vtMax(d)        */
+    SWW_BY_TANGENTIAL = 1,  /* stick candidate bounced by its tangential speed:
+                               |v_t| > vtMax(d) (constant gate), d above the
+                               oblique limit d_crit(v_n, v_t) (regime gate), or
+                               a rough wall's stick probability lower at v_t
+                               than at v_t = 0 (the draw between the two)     */
     SWW_BY_SHEAR = 2        /* stick candidate ripped off: tau_w >= tau_c(d)    */
 } sww_reason;
 
