@@ -334,7 +334,7 @@ static const char *help_sensitivity =
 "\n"
 "DESCRIPTION\n"
 "    Computes the baseline map (settings as given) and, on the same grid, a map\n"
-"    with each material parameter at each end of its range (snow-physics.md\n"
+"    with each material parameter at each end of its range (doc/physics-brief.md\n"
 "    section 2), the others at baseline: E 8.9e9 / 11.2e9 Pa, nu 0.29 / 0.36,\n"
 "    gamma 0.1 / 1.0 J/m2, sigma_y 0.5e6 / 1.5e6 Pa. Reports the number of\n"
 "    sticking grid points, its ratio to the baseline, and the shift of the\n"

@@ -1,7 +1,7 @@
 /* swr_params.h - material and model settings of one regime computation.
  *
  * One flat struct of SI values with documented keys. Sources, in order:
- * swr_params_default() (dry snow = ice on ABS, ../shared/snow-physics.md
+ * swr_params_default() (dry snow = ice on ABS, doc/physics-brief.md
  * section 2), an optional config file (swr_params_load: "key value" or
  * "key = value", one per line, '#' comments), and "key=value" overrides
  * (swr_params_set). Every setter validates; errors name the key and value.

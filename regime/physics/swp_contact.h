@@ -4,7 +4,7 @@
  * (regime/kernel), the wall-interaction core (wallmodel/core) and the tests.
  * Sign convention: overlap delta > 0 in compression; force > 0 is repulsive.
  * A wall is a sphere of infinite radius (pass INFINITY): R* = R, m* = m.
- * Reference: ../shared/snow-physics.md section 3; Johnson, Kendall & Roberts
+ * Reference: doc/physics-brief.md section 3; Johnson, Kendall & Roberts
  * (1971); Thornton & Ning (1998).
  */
 #ifndef SWP_CONTACT_H

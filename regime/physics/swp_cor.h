@@ -1,7 +1,7 @@
 /* swp_cor.h - coefficient of restitution models (pure functions, SI units).
  *
  * Thornton (1997) elastic-perfectly-plastic impact with limiting contact
- * pressure p_y = 2.5 sigma_y. Reference: ../shared/snow-physics.md section 4.
+ * pressure p_y = 2.5 sigma_y. Reference: doc/physics-brief.md section 4.
  */
 #ifndef SWP_COR_H
 #define SWP_COR_H

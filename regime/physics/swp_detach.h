@@ -7,7 +7,7 @@
  *   drag    F_D = 1.7009 * 3 pi mu_air d u_c,  u_c = (tau_w/mu_air) R  (speed at the centre)
  *               = 1.7009 * 6 pi tau_w R^2             (mu_air cancels)
  *   torque  T_D = 0.944 * 4 pi mu_air R^3 (tau_w/mu_air) = 0.944 * 4 pi tau_w R^3
- * Resisting the flow, the JKR contact (snow-physics.md section 3):
+ * Resisting the flow, the JKR contact (doc/physics-brief.md section 3):
  *   pull-off force F_c = 1.5 pi Gamma R (times an optional roughness factor k in (0,1]),
  *   contact radius a0, a0^3 = 9 pi Gamma R^2 / (2 E*).
  * Rolling detachment (moment about the contact edge, lever arm of the drag R):
@@ -15,7 +15,7 @@
  * Sliding detachment (friction coefficient mu_s):
  *   F_D >= mu_s F_c
  * The critical wall shear stress is the smaller of the two thresholds.
- * Reference: ../shared/snow-physics.md section 8 (order 10 Pa for 50 um on a smooth wall).
+ * Reference: doc/physics-brief.md section 8 (order 10 Pa for 50 um on a smooth wall).
  */
 #ifndef SWP_DETACH_H
 #define SWP_DETACH_H

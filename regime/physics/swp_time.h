@@ -1,5 +1,5 @@
 /* swp_time.h - contact time scales used to choose integration steps (SI units).
- * Reference: ../shared/snow-physics.md section 5. */
+ * Reference: doc/physics-brief.md section 5. */
 #ifndef SWP_TIME_H
 #define SWP_TIME_H
 

@@ -181,7 +181,7 @@ static void model_alloc(void **s)
     assert_non_null(m);
     assert_true(swr_model_params(m)->gamma == 0.2);
     int ok = 0;
-    /* snow-physics.md section 3: lambda about 9.6-41.3 for 10-100 um (z0 0.3 nm) */
+    /* doc/physics-brief.md section 3: lambda about 9.6-41.3 for 10-100 um (z0 0.3 nm) */
     const double l10 = swr_model_tabor(m, 10e-6, &ok);
     assert_true(ok && l10 > 5.0 && l10 < 40.0);
     swr_model_free(m);

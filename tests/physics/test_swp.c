@@ -10,7 +10,7 @@
 
 #define ASSERT_REL(x, ref, tol) assert_true(fabs((x) - (ref)) <= (tol) * fabs(ref))
 
-/* Baseline ice on ABS (snow-physics.md section 2). */
+/* Baseline ice on ABS (doc/physics-brief.md section 2). */
 static const double E1 = 9.8e9, NU1 = 0.31, E2 = 2.0e9, NU2 = 0.35, GAM = 0.2, RHO = 920.0;
 
 static void effective_modulus(void **s)

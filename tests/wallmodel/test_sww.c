@@ -884,7 +884,7 @@ static void detach_physics(void **s)
     (void)s;
     const double G = 0.2, Es = 1.88e9, R = 25e-6;
     ASSERT_REL(swp_tau_detach(G, Es, R, 0.05, 1.0), tau_indep(G, Es, R, 0.05, 1.0), 1e-12);
-    /* smooth JKR: order 10 Pa for 50 um (snow-physics.md section 8): ~33.7 Pa, rolling */
+    /* smooth JKR: order 10 Pa for 50 um (doc/physics-brief.md section 8): ~33.7 Pa, rolling */
     const double t50 = swp_tau_detach(G, Es, R, 0.05, 1.0);
     assert_true(t50 > 10.0 && t50 < 100.0);
     assert_true(swp_tau_roll(G, Es, R, 1.0) < swp_tau_slide(G, R, 0.05, 1.0));
