@@ -3,8 +3,10 @@
  * coneInjection dictionaries of the nozzles, the manual decomposition into slabs
  * along y, the rung's record (results/level.txt), the rear face's y+ summary,
  * the joining of the logs and tables of a resumed run, and the total-error
- * table against a resolution ladder (results/total_error.md). Every function
- * returns 0 or a non-zero code with a one-line message in err; none exits. */
+ * table against a resolution ladder (results/total_error.md). Defined in
+ * swe_run.c (the set-up and the rung's record), swe_resume.c (a resumed run)
+ * and swe_total.c (the total error). Every function returns 0 or a non-zero
+ * code with a one-line message in err; none exits. */
 #ifndef SWE_RUN_H
 #define SWE_RUN_H
 
