@@ -134,4 +134,9 @@ check "time-dir: the folder holding a file at a time" "[ \"\$('$S' time-dir --fi
 "$S" capture --bogus 1 > /dev/null 2>&1; rc=$?
 check "an unknown option: exit 2" "[ $rc = 2 ]"
 
+# the fill's window reversed and its level out of (0, 1): refused naming them
+"$S" fill --soi 0 --window 1,0 /dev/null > /dev/null 2> "$tmp/err"
+check "fill --window 1,0: exit 2, T1 after T0" "[ $? -eq 2 ] && grep -q 'T1 must be after T0' '$tmp/err'"
+"$S" fill --soi 0 --window 0,1 --level 2 /dev/null > /dev/null 2> "$tmp/err"
+check "fill --level 2: exit 2 naming --level" "[ $? -eq 2 ] && grep -q -- '--level' '$tmp/err'"
 finish

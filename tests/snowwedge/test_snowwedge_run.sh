@@ -32,6 +32,14 @@ check "estimate: a replay interval below maxDeltaT refused (exit 2, one line)" \
     --max-delta-t 1e-3 --avail 1e8 > "$tmp/out" 2> "$tmp/err"
 check "estimate: the flow and library above --avail refused after the line" \
     "[ $? -eq 2 ] && grep -q '100 snapshots x 102568 cells' '$tmp/err' && grep -q '^Allrun: estimate: ' '$tmp/out'"
+# counts and durations out of range: refused naming the option, no estimate line
+for bad in "--ppn -4" "--ppn 1e300" "--ppn-factor 0" "--class-factor nan" "--spin 0" "--np 2.5" "--class-parcels 100,-1"; do
+    "$S" estimate "${est[@]}" $bad > "$tmp/out" 2> "$tmp/err"
+    check "estimate $bad: exit 2 naming ${bad%% *}, nothing on stdout" \
+        "[ $? -eq 2 ] && grep -q -- '${bad%% *}' '$tmp/err' && [ ! -s '$tmp/out' ]"
+done
+"$S" progress --time 1 --end 0 --phase-start 0 --elapsed 1 --phase-elapsed 1 --allrun 1 > /dev/null 2> "$tmp/err"
+check "progress --end 0: exit 2 naming --end" "[ $? -eq 2 ] && grep -q -- '--end' '$tmp/err'"
 
 printf 'SOI 0.1;\nmassTotal 6.3;\nduration 0.7;\n' > "$tmp/derived"
 "$S" nozzles --array "$tmp/array" --derived "$tmp/derived" --parcels 800 --factor 0.25 --size spray > "$tmp/n"

@@ -654,6 +654,10 @@ static int fill(const post_opts *o)
     const double soi = swe_cli_number("--soi", o->soi), t0 = swe_cli_number("--window", t[0]),
                  t1 = swe_cli_number("--window", t[1]),
                  lev = o->level ? swe_cli_number("--level", o->level) : 0.95;
+    if (!(t1 > t0))
+        die(2, "fill: --window '%s': T1 must be after T0", o->window);
+    if (!(lev > 0 && lev < 1))
+        die(2, "fill: --level '%s' is not in (0, 1)", o->level);
     size_t n = 0, cap = 1024;
     swe_post_rec *r = malloc(cap * sizeof *r);
     static char line[16384];

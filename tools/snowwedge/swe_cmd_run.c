@@ -78,6 +78,16 @@ static double number(run_opt *opts, const char *name, const char *cmd)
     return swe_cli_number(name, need(opts, name, cmd));
 }
 
+/* a number of a count or a duration: in (0, max], else exit 2 naming the option
+   and the value (a negative, zero or huge count would print a nonsense estimate) */
+static double positive(run_opt *opts, const char *name, const char *cmd, double max)
+{
+    const double v = number(opts, name, cmd);
+    if (!(v > 0 && v <= max))
+        swe_cli_die(2, "%s: '%s' is not in (0, %g]", name, val(opts, name, ""), max);
+    return v;
+}
+
 /* the items of a list separated by blanks and commas, as numbers (awk's reading) */
 static int list_numbers(const char *s, double *v, int max)
 {
@@ -180,9 +190,12 @@ static int cmd_estimate(int argc, char **argv)
     if (in.nozzles < 0)
         swe_cli_die(1, "%s", err);
     free(pts);
-    in.ppn = number(opts, "--ppn", C);
-    in.ppn_factor = number(opts, "--ppn-factor", C);
-    in.np = (int)swe_cli_number("--np", val(opts, "--np", "1"));
+    in.ppn = positive(opts, "--ppn", C, 1e9);
+    in.ppn_factor = positive(opts, "--ppn-factor", C, 1e6);
+    const double np = swe_cli_number("--np", val(opts, "--np", "1"));
+    if (!(np >= 1 && np <= 1e6 && np == (int)np))
+        swe_cli_die(2, "--np: '%s' is not a whole number of processes from 1 to 1e6", val(opts, "--np", ""));
+    in.np = (int)np;
     in.compare = flag(opts, "--compare");
     if (!in.steady) {
         double cls[256], sizes[256];
@@ -192,8 +205,11 @@ static int cmd_estimate(int argc, char **argv)
         in.nclasses = nsizes ? cp ? list_numbers(cp, cls, 256) : nsizes : 0;
         for (int i = 0; !cp && i < nsizes; i++)
             cls[i] = in.ppn;
+        for (int i = 0; i < in.nclasses; i++)
+            if (!(cls[i] > 0 && cls[i] <= 1e9))
+                swe_cli_die(2, "--class-parcels: '%s': every item must be in (0, 1e+09]", cp);
         in.class_ppn = cls;
-        in.class_factor = number(opts, "--class-factor", C);
+        in.class_factor = positive(opts, "--class-factor", C, 1e6);
         in.ndisp = 1;
         for (const char *d = val(opts, "--dispersion", ""); *d; d++)
             in.ndisp += *d == ',';
@@ -206,9 +222,9 @@ static int cmd_estimate(int argc, char **argv)
         in.halfstep = flag(opts, "--halfstep");
         in.rear_layers = flag(opts, "--rear-layers");
         in.replay = flag(opts, "--replay");
-        in.spin = number(opts, "--spin", C);
-        in.fill = number(opts, "--fill", C);
-        in.sample = number(opts, "--sample", C);
+        in.spin = positive(opts, "--spin", C, 1e6);
+        in.fill = positive(opts, "--fill", C, 1e6);
+        in.sample = positive(opts, "--sample", C, 1e6);
         in.replay_interval = 1;
         if (in.replay) {
             in.replay_start = number(opts, "--replay-start", C);
@@ -316,7 +332,7 @@ static int cmd_progress(int argc, char **argv)
     if (strcmp(ph, "flow") && strcmp(ph, "replay"))
         swe_cli_die(2, "--phase: '%s' is not flow or replay", ph);
     char line[512];
-    swe_progress_line(line, sizeof line, number(opts, "--time", C), number(opts, "--end", C),
+    swe_progress_line(line, sizeof line, number(opts, "--time", C), positive(opts, "--end", C, 1e9),
                       *tf ? swe_cli_number("--flow-end", tf) : -1, !strcmp(ph, "replay"),
                       number(opts, "--phase-start", C), (long)number(opts, "--elapsed", C),
                       (long)number(opts, "--phase-elapsed", C), (long)number(opts, "--allrun", C));
