@@ -76,6 +76,20 @@ sed 's/^Evolving c$/Evolving c\nparcelSplitting c: 2 parcels split/' "$c/log" > 
 (cd "$c" && "$S" convergence --cloud c --window 0.2,0.4,0.6 --log log.split --file "$tmp/rs.md") > "$tmp/convs"
 check "convergence: split parcels: n/a" "grep -qx '| nose | 100 | 36 | 3 | 2 | 4 | -67 % | n/a (split) |' '$tmp/convs'"
 check "balance: split = yes" "(cd '$c' && '$S' balance --cloud c --log log.split) | grep -qx 'split = yes'"
+# the y+ line of the latest yPlus table (the patches in the order of the table, the
+# last row of each, the later time folder) and, with --threshold, the regions' head
+mkdir -p "$c/postProcessing/yPlus/0" "$c/postProcessing/yPlus/0.35" "$c/postProcessing/yPlus/0.4"
+printf '# Time patch min max average\n0.1 rear 1 2 3\n' > "$c/postProcessing/yPlus/0/yPlus.dat"
+printf '# Time patch min max average\n0.1 rear 1 2 3\n' > "$c/postProcessing/yPlus/0.35/yPlus.dat"
+printf '# Time\tpatch\tmin\tmax\taverage\n0.5\tnose\t0.5\t2.22222\t1\n0.5\trear\t0.1234\t9.87654\t3\n0.6\tnose\t0.25\t3\t1.5\nbad line\n' \
+    > "$c/postProcessing/yPlus/0.4/yPlus.dat"
+(cd "$c" && "$S" convergence --cloud c --window 0.2,0.4,0.6 --log log --file "$tmp/rs.md" --threshold 1.5e-3) > "$tmp/convy"
+check "convergence: y+ of the latest table, per patch its last row, %.3g" \
+    "grep -qx 'y+ of the first cells at t = 0.6 s (min / max / mean): nose 0.25 / 3 / 1.5; rear 0.123 / 9.88 / 3;' '$tmp/convy'"
+check "convergence --threshold: the regions' head after the y+ line" \
+    "[ \"\$(sed -n '/^y+ of/,\$p' '$tmp/convy' | sed -n 3p)\" = '## Rear-face regions' ] && grep -q '^Threshold 1.5e-3 kg/m2 (10 % of the window' '$tmp/convy' && [ \"\$(tail -1 '$tmp/convy')\" = '|---|---|---|---|---|---:|' ]"
+check "convergence: no yPlus table, no y+ line; no --threshold, no regions' head" "! grep -q 'y+\|Rear-face regions' '$tmp/conv'"
+rm -rf "$c/postProcessing/yPlus"
 
 # a rear-face map: 2 x (B - A), rows of constant z, y increasing
 printf '# x y z v\n0 1 0 1\n0 -1 0 1\n0 1 -1 2\n' > "$tmp/a.raw"

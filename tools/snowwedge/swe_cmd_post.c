@@ -18,9 +18,13 @@ static const char *prog = "snowwedge";
 static const char *const patches[6] = {"rear", "nose", "top", "bottom", "sideYneg", "sideYpos"};
 
 static void die(int code, const char *fmt, ...) __attribute__((noreturn, format(printf, 2, 3)));
+static char pending[4096]; /* a temporary output file, removed when the command fails */
+
 static void die(int code, const char *fmt, ...)
 {
     va_list ap;
+    if (pending[0])
+        remove(pending);
     fprintf(stderr, "%s: ", prog);
     va_start(ap, fmt);
     vfprintf(stderr, fmt, ap);
@@ -32,7 +36,8 @@ static void die(int code, const char *fmt, ...)
 /* the options of the post commands (NULL: not given) */
 typedef struct {
     const char *cloud, *gate, *what, *window, *csv, *log, *split, *sampled, *label, *soi, *level,
-        *results, *mvd, *variant, *minus, *factor, *file, *time, *patch, *rel, *dispersion, *main, *others, *part;
+        *results, *mvd, *variant, *minus, *factor, *file, *time, *patch, *rel, *dispersion, *main, *others, *part,
+        *threshold, *dir;
     int reasons, exact;
     const char **files;
     int nfiles;
@@ -44,12 +49,12 @@ static void parse(int argc, char **argv, post_opts *o)
                                   "--split", "--sampled", "--label", "--soi", "--level",
                                   "--results", "--mvd", "--variant", "--minus", "--factor",
                                   "--file", "--time", "--patch", "--rel", "--dispersion",
-                                  "--main", "--others", "--part"};
+                                  "--main", "--others", "--part", "--threshold", "--dir"};
     const char **slot[] = {&o->cloud, &o->gate, &o->what, &o->window, &o->csv, &o->log,
                            &o->split, &o->sampled, &o->label, &o->soi, &o->level,
                            &o->results, &o->mvd, &o->variant, &o->minus, &o->factor,
                            &o->file, &o->time, &o->patch, &o->rel, &o->dispersion,
-                           &o->main, &o->others, &o->part};
+                           &o->main, &o->others, &o->part, &o->threshold, &o->dir};
     o->files = calloc((size_t)argc, sizeof *o->files);
     if (!o->files)
         die(1, "out of memory");
@@ -140,35 +145,90 @@ static int by_z_then_y(const void *a, const void *b)
     return strcmp(p->line, q->line);
 }
 
-static int rear_map(const post_opts *o)
+/* the map K x (RAW - MINUS) (MINUS NULL: RAW) as CSV into out */
+static void write_map(const char *minus, const char *raw, double k, FILE *out)
 {
-    if (o->nfiles != 1)
-        die(2, "rear-map: give one raw file (see --help)");
-    const double k = o->factor ? swe_cli_number("--factor", o->factor) : 1;
     swe_post_raw a = {0}, b;
-    if (o->minus)
-        check(swe_post_raw_read(o->minus, &a, err, sizeof err), err);
-    check(swe_post_raw_read(o->files[0], &b, err, sizeof err), err);
-    if (o->minus && a.n != b.n)
-        die(1, "rear-face maps %s and %s differ", o->minus, o->files[0]);
+    if (minus)
+        check(swe_post_raw_read(minus, &a, err, sizeof err), err);
+    check(swe_post_raw_read(raw, &b, err, sizeof err), err);
+    if (minus && a.n != b.n)
+        die(1, "rear-face maps %s and %s differ", minus, raw);
     if (!b.n)
-        die(1, "%s holds no face values", o->files[0]);
+        die(1, "%s holds no face values", raw);
     map_row *r = malloc(b.n * sizeof *r);
     if (!r)
         die(1, "out of memory");
     for (size_t i = 0; i < b.n; i++) {
-        const double v = o->minus ? b.v[i] - a.v[i] : b.v[i];
+        const double v = minus ? b.v[i] - a.v[i] : b.v[i];
         snprintf(r[i].line, sizeof r[i].line, "%.9g,%.9g,%.9g", b.y[i], b.z[i], k * v);
         r[i].y = swe_post_round(b.y[i], 9);
         r[i].z = swe_post_round(b.z[i], 9);
     }
     qsort(r, b.n, sizeof *r, by_z_then_y);
-    puts("y,z,deposit_kg_m2");
+    fputs("y,z,deposit_kg_m2\n", out);
     for (size_t i = 0; i < b.n; i++)
-        puts(r[i].line);
+        fprintf(out, "%s\n", r[i].line);
     free(r);
     swe_post_raw_free(&a);
     swe_post_raw_free(&b);
+}
+
+static int rear_map(const post_opts *o)
+{
+    if (o->nfiles != 1)
+        die(2, "rear-map: give one raw file (see --help)");
+    write_map(o->minus, o->files[0], o->factor ? swe_cli_number("--factor", o->factor) : 1, stdout);
+    return 0;
+}
+
+/* the map into DIR/NAME, whole or not at all: a temporary file renamed (mode 644) */
+static void publish_map(const char *dir, const char *name, const char *minus, const char *raw, double k)
+{
+    char tmp[4096], path[4096];
+    snprintf(tmp, sizeof tmp, "%s/.map.XXXXXX", dir);
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    const int fd = mkstemp(tmp);
+    FILE *f = fd < 0 ? NULL : fdopen(fd, "w");
+    if (!f)
+        die(1, "cannot write %s", tmp);
+    snprintf(pending, sizeof pending, "%s", tmp);
+    write_map(minus, raw, k, f);
+    if (fflush(f) || fchmod(fd, 0644) || fclose(f) || rename(tmp, path))
+        die(1, "cannot write %s", path);
+    pending[0] = 0;
+}
+
+/* the raw rear-face file of the cloud's field written at time T (numerically), or the latest */
+static void raw_at(const char *cloud, const char *t, char *path, size_t n)
+{
+    char dir[256], file[512];
+    snprintf(file, sizeof file, "%s:snowDeposit_patch_rear.raw", cloud);
+    swe_post_time_dir("postProcessing/deposit_rear/surface", file, t, dir, sizeof dir);
+    if (!dir[0])
+        die(1, "no rear-face map of %s:snowDeposit at time %s in postProcessing/deposit_rear/surface/", cloud, t);
+    snprintf(path, n, "postProcessing/deposit_rear/surface/%s/%s", dir, file);
+}
+
+/* rear-maps: rear_deposit.csv into --out (the window T0 .. T1, else the last write) and
+   with a window its halves x2, rear_deposit_half1.csv and _half2.csv */
+static int rear_maps(const post_opts *o)
+{
+    need(o->cloud, "--cloud", "rear-maps");
+    need(o->dir, "--dir", "rear-maps");
+    char r[3][4096], t[3][64];
+    if (!o->window) {
+        raw_at(o->cloud, "last", r[0], sizeof r[0]);
+        publish_map(o->dir, "rear_deposit.csv", NULL, r[0], 1);
+        return 0;
+    }
+    if (split_times(o->window, t) != 3)
+        die(2, "rear-maps: --window '%s' is not T0,TH,T1", o->window);
+    for (int i = 0; i < 3; i++)
+        raw_at(o->cloud, t[i], r[i], sizeof r[i]);
+    publish_map(o->dir, "rear_deposit.csv", r[0], r[2], 1);
+    publish_map(o->dir, "rear_deposit_half1.csv", r[0], r[1], 2);
+    publish_map(o->dir, "rear_deposit_half2.csv", r[1], r[2], 2);
     return 0;
 }
 
@@ -449,6 +509,55 @@ static void flow_steps(const char *log, double a, double b)
                "mean), largest %.3g.\n", n, sdt / n, scm / n, mx);
 }
 
+/* the y+ line of convergence.md: per patch (in the order of the table) min / max /
+   mean of the last row of the latest postProcessing/yPlus/<time>/yPlus.dat; nothing
+   when there is none */
+static void yplus_line(void)
+{
+    glob_t g = {0};
+    if (glob("postProcessing/yPlus/*/yPlus.dat", 0, NULL, &g) || !g.gl_pathc) {
+        globfree(&g);
+        return;
+    }
+    const size_t skip = strlen("postProcessing/yPlus/"); /* to the time folder's name */
+    size_t last = 0;
+    for (size_t i = 1; i < g.gl_pathc; i++)
+        if (strtod(g.gl_pathv[i] + skip, NULL) >= strtod(g.gl_pathv[last] + skip, NULL))
+            last = i;
+    FILE *f = fopen(g.gl_pathv[last], "r");
+    globfree(&g);
+    if (!f)
+        return;
+    enum { MAXP = 64 };
+    static char patch[MAXP][128], row[MAXP][256];
+    char line[4096], t[128] = "";
+    int n = 0;
+    while (fgets(line, sizeof line, f)) {
+        char *w[5], *save = NULL;
+        int k = 0;
+        if (line[0] == '#')
+            continue;
+        for (char *p = strtok_r(line, " \t\r\n", &save); p && k < 5; p = strtok_r(NULL, " \t\r\n", &save))
+            w[k++] = p;
+        if (k < 5)
+            continue;
+        int i = 0;
+        while (i < n && strcmp(patch[i], w[1]))
+            i++;
+        if (i == n && n < MAXP)
+            snprintf(patch[n++], sizeof patch[0], "%s", w[1]);
+        if (i < n)
+            snprintf(row[i], sizeof row[0], "%s %.3g / %.3g / %.3g", w[1], strtod(w[2], NULL),
+                     strtod(w[3], NULL), strtod(w[4], NULL));
+        snprintf(t, sizeof t, "%s", w[0]);
+    }
+    fclose(f);
+    printf("y+ of the first cells at t = %s s (min / max / mean):", t);
+    for (int i = 0; i < n; i++)
+        printf(" %s;", row[i]);
+    printf("\n");
+}
+
 static int convergence(const post_opts *o)
 {
     need(o->window, "--window", "convergence");
@@ -522,6 +631,14 @@ static int convergence(const post_opts *o)
         swe_cmd_probes(&s);
         fflush(stdout);
     }
+    yplus_line();
+    if (o->threshold) /* the head of the regions table (rows: snowphoto regions) */
+        printf("\n## Rear-face regions\n\nThreshold %s kg/m2 (10 %% of the window map's maximum) for "
+               "all three rows; each\ncell: holds snow (bold) when >= 30 %% of the region's faces "
+               "reach it, that fraction\nand the region's mean deposit (its statistics: \"Rear-face "
+               "statistics\" above).\n\n| map | left side | right side | centre | edges | threshold "
+               "[kg/m2] |\n|---|---|---|---|---|---:|\n",
+               o->threshold);
     return 0;
 }
 
@@ -948,6 +1065,17 @@ static int variant(const post_opts *o)
         puts(variant_text[kv][3]);
         return 0;
     }
+    if (o->part && !strcmp(o->part, "regions")) { /* the head of the regions table */
+        need(o->threshold, "--threshold", "variant");
+        if (strcmp(o->threshold, "none"))
+            printf("Rear-face regions (threshold %s kg/m2 = %s x the larger maximum):\n", o->threshold,
+                   o->rel ? o->rel : "0.1");
+        else
+            printf("Rear-face regions (no deposit on the rear face in either cloud):\n");
+        printf("\n| cloud | left side | right side | centre | edges | threshold [kg/m2] |\n"
+               "|---|---|---|---|---|---:|\n");
+        return 0;
+    }
     static patch_csv m, v;
     char p[4096];
     snprintf(p, sizeof p, "%s/%s/deposit_per_patch.csv", o->results, o->gate);
@@ -1115,7 +1243,8 @@ int swe_cmd_post(int argc, char **argv)
     static const struct {
         const char *name;
         int (*run)(const post_opts *);
-    } cmds[] = {{"rear-map", rear_map},       {"patch-table", patch_table},
+    } cmds[] = {{"rear-map", rear_map},       {"rear-maps", rear_maps},
+                {"patch-table", patch_table},
                 {"time-dir", time_dir},       {"deposit", deposit},
                 {"map-max", map_max},
                 {"cloud-log", cloud_log},     {"balance", balance},
