@@ -13,10 +13,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+const char *swe_cli_prog = "snowwedge";
+
 void swe_cli_die(int code, const char *fmt, ...)
 {
     va_list ap;
-    fputs("snowwedge: ", stderr);
+    fprintf(stderr, "%s: ", swe_cli_prog);
     va_start(ap, fmt);
     vfprintf(stderr, fmt, ap);
     va_end(ap);

@@ -22,6 +22,8 @@ typedef struct {
 
 
 extern const char *swe_cli_usage;
+/* the prefix of swe_cli_die's messages (default "snowwedge"; a script's name) */
+extern const char *swe_cli_prog;
 
 void swe_cli_die(int code, const char *fmt, ...) __attribute__((noreturn, format(printf, 2, 3)));
 double swe_cli_number(const char *opt, const char *s);
@@ -53,6 +55,10 @@ int swe_ladder_main(int argc, char **argv);
 /* the per-run post-processing commands (swe_cmd_post.c): their exit status,
    or -1 when argv[1] is none of them */
 int swe_cmd_post(int argc, char **argv);
+
+/* the options of the scripts tutorials/wedge/post/wedge-* (swe_cmd_wrap.c): the
+   command's exit status, or -1 when argv[1] is none of the scripts */
+int swe_cmd_wrap(int argc, char **argv);
 
 /* tutorials/wedge/Allrun's commands (swe_cmd_run.c: spray-check, estimate, mesh, times, progress, nozzles,
    decompose, level, yplus, join-logs, join-table, resume-time, restart-tables,
