@@ -54,6 +54,10 @@ int swe_ladder_main(int argc, char **argv);
    or -1 when argv[1] is none of them */
 int swe_cmd_post(int argc, char **argv);
 
+/* the pictures (swe_cmd_plot.c: panels, compare), with their own options:
+   the exit status, or -1 when argv[1] is none of them */
+int swe_cmd_plot(int argc, char **argv);
+
 /* tutorials/wedge/Allrun's commands (swe_cmd_run.c: spray-check, estimate, mesh, times, progress, nozzles,
    decompose, level, yplus, join-logs, join-table, resume-time, restart-tables,
    ladder-check, total-error),
