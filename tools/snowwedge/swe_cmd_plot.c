@@ -70,11 +70,20 @@ static const char *value(int argc, char **argv, int i, const char *what)
     return argv[i + 1];
 }
 
+/* a final name that exists and is not a regular file (a symbolic link neither) */
+static int not_regular(const char *path)
+{
+    struct stat st;
+    return lstat(path, &st) == 0 && !S_ISREG(st.st_mode);
+}
+
 /* ---- one output file ----------------------------------------------------------------- */
 /* its temporary in its folder (the set is `live` until published) */
 static const char *out_begin(const char *path)
 {
     char err[1024];
+    if (not_regular(path))
+        die(2, "'%s' exists and is not a regular file: not replaced", path);
     const swo_spec spec = {prog, "--out", NULL, 0, 0};
     if (swo_alloc(&spec, &live, err, sizeof err) != SWO_OK)
         die(2, "%s", err);
@@ -82,13 +91,6 @@ static const char *out_begin(const char *path)
     if (!tmp)
         die(swo_code(live), "%s", err);
     return tmp;
-}
-
-/* a final name that exists and is not a regular file (a symbolic link neither) */
-static int not_regular(const char *path)
-{
-    struct stat st;
-    return lstat(path, &st) == 0 && !S_ISREG(st.st_mode);
 }
 
 /* the temporary (mode 644) renamed to PATH: refused (exit 2, the temporary
