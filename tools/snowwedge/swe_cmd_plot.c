@@ -59,7 +59,7 @@ static const char *compare_help =
     "\n"
     "Usage: %s --results DIR [--snowphoto EXE] [--rel F]\n"
     "\n"
-    "  --snowphoto EXE  default bin/snowphoto of this repository\n"
+    "  --snowphoto EXE  default the snowphoto beside snowwedge (bin/snowphoto of this repository)\n"
     "  --rel F          the threshold's share of the largest deposit, (0, 1] (default 0.1)\n";
 
 /* the option's value: present and not empty, else a usage error */
