@@ -59,6 +59,9 @@ int swe_cmd_post(int argc, char **argv);
 /* the options of the scripts tutorials/wedge/post/wedge-* (swe_cmd_wrap.c): the
    command's exit status, or -1 when argv[1] is none of the scripts */
 int swe_cmd_wrap(int argc, char **argv);
+/* the pictures (swe_cmd_plot.c: panels, compare), with their own options:
+   the exit status, or -1 when argv[1] is none of them */
+int swe_cmd_plot(int argc, char **argv);
 
 /* tutorials/wedge/Allrun's commands (swe_cmd_run.c: spray-check, estimate, mesh, times, progress, nozzles,
    decompose, level, yplus, join-logs, join-table, resume-time, restart-tables,

@@ -96,6 +96,9 @@ const char *swe_cli_usage =
 "    the options of the scripts tutorials/wedge/post/wedge-* (as the script's):\n"
 "    snowwedge wedge-capture|wedge-cost|wedge-dispersion|wedge-fill|wedge-resolution ARGS\n"
 "    snowwedge wedge-post|wedge-compose|wedge-ladder|wedge-variant|wedge-errortime ARGS\n"
+"    the pictures of tutorials/wedge/post (tools/snowwedge/swe_cmd_plot.c):\n"
+"    snowwedge panels [--name NAME] --out PNG --title TEXT CSV TITLE [CSV TITLE ...]\n"
+"    snowwedge compare [--name NAME] --results DIR [--snowphoto EXE] [--rel F]\n"
 "    snowwedge --help\n"
 "\n"
 "    SPRAY is --mvd UM [--sigma-g S] [--range MIN,MAX] [--freeze F]: droplet\n"
@@ -326,6 +329,26 @@ const char *swe_cli_usage =
 "             the --run folders, args=(...) the CSV LABEL pairs) for the script\n"
 "             to eval; --help: the commands that print its help and exit 0;\n"
 "             wedge-ladder --check FILE: the check run, then \"exit 0\".\n"
+"    The pictures (--name NAME, first, the prefix of the messages):\n"
+"    panels   the rear-face maps (CSV y,z,deposit_kg_m2 with a header) side by\n"
+"             side, seen from behind, on one colour scale 0 .. the largest value\n"
+"             (0 .. 1 when none is positive), the axes the first map's outline\n"
+"             with 5 mm to spare; into PNG by gnuplot (pngcairo) on the PATH. The\n"
+"             figure 120 + 460 n px wide for n panels, 560 px high and 18 px more\n"
+"             per title line beyond two; titles wrapped at word boundaries (fold\n"
+"             -s) at (width - 40) 2 / 15 characters for the figure's, 58 for a\n"
+"             panel's (one panel: its title below the figure's); a literal \"\\n\"\n"
+"             starts a line. PNG is written to a temporary beside it and renamed\n"
+"             into place: refused (2) when it is a symbolic link or not a regular\n"
+"             file, or its folder is missing; a map with no row after its header:\n"
+"             exit 1; gnuplot failing: exit 1, nothing written.\n"
+"    compare  the gate comparison (after Allrun -compare): from DIR/G/\n"
+"             rear_deposit.csv and deposit_per_patch.csv of the gate settings G =\n"
+"             off, tangential, shear, regime: DIR/gates_compare.png (panels, one\n"
+"             colour scale), DIR/gates_per_patch.md (gates) and DIR/regions.md\n"
+"             (snowphoto regions with the threshold F x the largest rear-face\n"
+"             deposit, F = --rel in (0, 1], default 0.1; EXE default the snowphoto\n"
+"             beside snowwedge; parcel counts when mass_balance.txt says split no).\n"
 "\n"
 "EXIT STATUS\n"
 "    0 success; 1 an input file unreadable; 2 usage or bad input (one line\n"
@@ -344,6 +367,10 @@ int main(int argc, char **argv)
     const int lrc = swe_ladder_main(argc, argv);
     if (lrc >= 0)
         return lrc;
+    /* the pictures (swe_cmd_plot.c) parse their own options */
+    const int plot_rc = swe_cmd_plot(argc, argv);
+    if (plot_rc >= 0)
+        return plot_rc;
     /* the per-run post-processing commands parse their own options */
     const int post_rc = swe_cmd_post(argc, argv);
     if (post_rc >= 0)
