@@ -3,6 +3,7 @@
  * composition of the classes, the rear face's regions and their effective
  * sample sizes, and the force coefficients' mean, rms and spectral peak. */
 #include "swe_cli.h"
+#include "swe_opts.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -92,6 +93,8 @@ const char *swe_cli_usage =
 "    snowwedge ladder-check --ladder CSV --level N --cells N [KEY=VALUE...]\n"
 "    snowwedge total-error --ladder CSV --mvd UM (--not-judged WHY |\n"
 "                          --csv TOTAL_ERROR.csv --run NAME --level N --cells N)\n"
+"    snowwedge allrun-options [--nproc N] [--case DIR] -- OPTION...\n"
+"    snowwedge spray-entry --kind num|list2|intlist --key KEY -- VALUE\n"
 "    snowwedge --help\n"
 "\n"
 "    SPRAY is --mvd UM [--sigma-g S] [--range MIN,MAX] [--freeze F]: droplet\n"
@@ -304,6 +307,23 @@ const char *swe_cli_usage =
 "             of MVD UM, classes, Cd, Cp_b, St: value, sampling, discretization,\n"
 "             total error, reference), or the note that the run is not judged,\n"
 "             then the ladder's \"# note\" lines.\n"
+"    allrun-options  tutorials/wedge/Allrun's OPTIONs checked in the order\n"
+"             Allrun has always checked them, run in the case folder DIR (default\n"
+"             .; its log.Allrun.args when the only OPTION is -resume, the block\n"
+"             of the variant in constant/variants) on a machine of N processors\n"
+"             (default 1; Allrun gives nproc): each option as it is met, the\n"
+"             options of the transient route, -rear-layers, the dispersion\n"
+"             treatments, the variant's mesh and factors, -parallel against N.\n"
+"             Prints the settings as shell assignments (every value quoted, so\n"
+"             that no value runs as code; args_given and mpi_opts arrays); with\n"
+"             -h or --help among the OPTIONs only help=1. A refusal: one line\n"
+"             \"Allrun: ...\" (the texts of doc/reference/wedge-Allrun.md), exit 2.\n"
+"    spray-entry  the entry KEY of constant/sprayProperties as foamDictionary\n"
+"             -value printed it (VALUE) checked and printed: num a positive\n"
+"             number as written; list2 two positive numbers, the first the\n"
+"             smaller; intlist whole numbers from 1 (at most 7 digits), printed\n"
+"             comma-separated (list2, intlist: parentheses removed, blanks\n"
+"             collapsed). Exit 2 naming KEY and the value otherwise.\n"
 "\n"
 "EXIT STATUS\n"
 "    0 success; 1 an input file unreadable; 2 usage or bad input (one line\n"
@@ -328,6 +348,10 @@ int main(int argc, char **argv)
         return post_rc;
     if (swe_cmd_run_is(argv[1])) /* Allrun's commands parse their own options */
         return swe_cmd_run(argc, argv);
+    if (!strcmp(argv[1], "allrun-options")) /* Allrun's command line (swe_cmd_opts.c) */
+        return swe_cmd_opts(argc, argv);
+    if (!strcmp(argv[1], "spray-entry")) /* an entry of constant/sprayProperties (swe_cmd_opts.c) */
+        return swe_cmd_spray_entry(argc, argv);
     swe_options o = {0};
     swe_cli_parse(argc, argv, &o);
     int rc;
