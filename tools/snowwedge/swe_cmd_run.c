@@ -1,5 +1,5 @@
 /* swe_cmd_run.c - snowwedge spray-check, estimate, mesh, times, progress, nozzles, decompose, level, yplus,
- * join-logs, join-table, resume-time, restart-tables, ladder-check, total-error:
+ * join-logs, join-table, resume-time, restart-tables, resume-start, resume-join, ladder-check, total-error:
  * the numbers and files of
  * tutorials/wedge/Allrun (swe_run.h). These commands parse their own options. */
 #include "swe_cli.h"
