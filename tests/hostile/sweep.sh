@@ -583,12 +583,14 @@ hc $S err 'sim' '--sim without a value' '$SP regions --sim'
 
 # ---------------------------------------------------------------- the wedge: Allrun options and post scripts
 # Allrun runs in a copy of the case's source files with SNOWWALL_TOP a stand-in
-# repository without bin/: an option that is accepted stops at the pre-run check
-# ('bin/snowregime missing', exit 1) instead of running the case
+# repository whose bin/ holds only snowwedge (it checks Allrun's options): an option that
+# is accepted stops at the pre-run check ('bin/snowregime missing', exit 1) instead of
+# running the case
 mkdir -p "$W" "$work/fake/etc"
 (cd "$top/tutorials/wedge" && git ls-files -co --exclude-standard . | tar cf - -T -) | (cd "$W" && tar xf -)
 printf '. "%s/etc/openfoam-env.sh"\n' "$top" > "$work/fake/etc/openfoam-env.sh"
 cp "$top/etc/outdir.sh" "$work/fake/etc/"   # the list and output-folder rules Allrun sources
+mkdir -p "$work/fake/bin" && ln -s "$top/bin/snowwedge" "$work/fake/bin/"
 AR="SNOWWALL_TOP=$work/fake $W/Allrun"; export AR
 S=wedge-Allrun
 ACCEPT_RE='\(run etc/setup.sh|\(run ./Allwmake\)'

@@ -4,8 +4,8 @@
 # anything (once, -parallel 999 decomposed the case into some 18 000 files
 # before mpirun refused); so do the post-processing scripts (post/wedge-*) for a
 # missing option value or a malformed --window. Runs in a temporary copy of the case's
-# source files; the option refusals need neither OpenFOAM nor a build (they come
-# first). With OpenFOAM and the build also Allrun's one-line estimate (-estimate) and
+# source files; the option refusals need bin/snowwedge (allrun-options), not OpenFOAM
+# (they come first). With OpenFOAM and the build also Allrun's one-line estimate (-estimate) and
 # its refusals of a replay interval below maxDeltaT and of a replay library above the
 # available memory. About 1 s, with the estimate checks about 30 s.
 set -u

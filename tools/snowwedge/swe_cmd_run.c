@@ -1,14 +1,16 @@
 /* swe_cmd_run.c - snowwedge spray-check, estimate, mesh, times, progress, nozzles, decompose, level, yplus,
- * join-logs, join-table, resume-time, restart-tables, ladder-check, total-error:
+ * join-logs, join-table, resume-time, restart-tables, resume-start, resume-join, ladder-check, total-error:
  * the numbers and files of
  * tutorials/wedge/Allrun (swe_run.h). These commands parse their own options. */
 #include "swe_cli.h"
 #include "swe_run.h"
 
 #include <math.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 typedef struct {
     const char *name; /* "--x" */
@@ -322,15 +324,52 @@ static int cmd_times(int argc, char **argv)
     return 0;
 }
 
+/* --watch LOG: every --interval seconds (default 30) while the process --pid runs, the
+   line for LOG's last step; with --flow-end the solved flow and the replay timed apart */
+static int progress_watch(run_opt *opts, const char *log, double t_end, double t_flow)
+{
+    const char *C = "progress";
+    const long pid = (long)number(opts, "--pid", C), t_start = (long)number(opts, "--allrun-start", C);
+    const double every = positive(opts, "--interval", C, 3600);
+    const time_t w0 = time(NULL);
+    time_t ws = w0;
+    int replay = 0;
+    double ts = -1;
+    const struct timespec nap = {(time_t)every, (long)((every - floor(every)) * 1e9)};
+    while (!nanosleep(&nap, NULL) && !kill((pid_t)pid, 0)) {
+        char t_s[128], *end, line[512];
+        if (swe_last_time(log, t_s, sizeof t_s) || !t_s[0])
+            continue;
+        const double t = strtod(t_s, &end);
+        if (*end)
+            continue;
+        if (t_flow >= 0 && !replay && t >= t_flow)
+            replay = 1, ts = -1;
+        if (ts < 0)
+            ts = t, ws = time(NULL);
+        const time_t now = time(NULL);
+        swe_progress_line(line, sizeof line, t, t_end, t_flow, replay, ts, (long)(now - w0), (long)(now - ws),
+                          (long)now - t_start);
+        puts(line);
+        fflush(stdout);
+    }
+    return 0;
+}
+
 static int cmd_progress(int argc, char **argv)
 {
     run_opt opts[] = {{"--time", 0, 0, 0},        {"--end", 0, 0, 0},          {"--flow-end", 0, 0, 0},
                       {"--phase", 0, 0, 0},       {"--phase-start", 0, 0, 0},  {"--elapsed", 0, 0, 0},
-                      {"--phase-elapsed", 0, 0, 0}, {"--allrun", 0, 0, 0},     {0}};
+                      {"--phase-elapsed", 0, 0, 0}, {"--allrun", 0, 0, 0},     {"--watch", 0, 0, 0},
+                      {"--pid", 0, 0, 0},         {"--allrun-start", 0, 0, 0}, {"--interval", 0, "30", 1},
+                      {0}};
     options_only(argc, argv, opts, "progress");
     const char *C = "progress", *ph = val(opts, "--phase", "flow"), *tf = val(opts, "--flow-end", "");
     if (strcmp(ph, "flow") && strcmp(ph, "replay"))
         swe_cli_die(2, "--phase: '%s' is not flow or replay", ph);
+    if (flag(opts, "--watch"))
+        return progress_watch(opts, val(opts, "--watch", ""), positive(opts, "--end", C, 1e9),
+                              *tf ? swe_cli_number("--flow-end", tf) : -1);
     char line[512];
     swe_progress_line(line, sizeof line, number(opts, "--time", C), positive(opts, "--end", C, 1e9),
                       *tf ? swe_cli_number("--flow-end", tf) : -1, !strcmp(ph, "replay"),
@@ -560,6 +599,20 @@ static int cmd_restart_tables(int argc, char **argv)
     return 0;
 }
 
+/* resume-start --time T --solver S, resume-join --solver S: in the case folder */
+static int cmd_resume(int argc, char **argv, int join)
+{
+    run_opt opts[] = {{"--time", 0, 0, 0}, {"--solver", 0, 0, 0}, {0}};
+    options_only(argc, argv, opts, argv[1]);
+    const char *solver = need(opts, "--solver", argv[1]);
+    char msg[8400], err[8400];
+    if (join ? swe_resume_join(solver, msg, sizeof msg, err, sizeof err)
+             : swe_resume_start(solver, need(opts, "--time", argv[1]), msg, sizeof msg, err, sizeof err))
+        swe_cli_die(1, "%s", err);
+    puts(msg);
+    return 0;
+}
+
 static int cmd_join_table(int argc, char **argv)
 {
     run_opt opts[] = {{"--time", 0, 0, 0}, {0}};
@@ -630,7 +683,7 @@ static int cmd_ladder(int argc, char **argv, int total)
 int swe_cmd_run_is(const char *cmd)
 {
     const char *c[] = {"spray-check", "estimate", "mesh", "times", "progress", "nozzles", "decompose", "level", "yplus",
-                       "join-logs", "join-table", "resume-time", "restart-tables", "ladder-check",
+                       "join-logs", "join-table", "resume-time", "restart-tables", "resume-start", "resume-join", "ladder-check",
                        "total-error"};
     for (size_t i = 0; i < sizeof c / sizeof *c; i++)
         if (!strcmp(cmd, c[i]))
@@ -667,5 +720,7 @@ int swe_cmd_run(int argc, char **argv)
         return cmd_resume_time(argc, argv);
     if (!strcmp(c, "restart-tables"))
         return cmd_restart_tables(argc, argv);
+    if (!strcmp(c, "resume-start") || !strcmp(c, "resume-join"))
+        return cmd_resume(argc, argv, !strcmp(c, "resume-join"));
     return cmd_ladder(argc, argv, !strcmp(c, "total-error"));
 }

@@ -3,6 +3,7 @@
  * composition of the classes, the rear face's regions and their effective
  * sample sizes, and the force coefficients' mean, rms and spectral peak. */
 #include "swe_cli.h"
+#include "swe_opts.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -99,6 +100,12 @@ const char *swe_cli_usage =
 "    the pictures of tutorials/wedge/post (tools/snowwedge/swe_cmd_plot.c):\n"
 "    snowwedge panels [--name NAME] --out PNG --title TEXT CSV TITLE [CSV TITLE ...]\n"
 "    snowwedge compare [--name NAME] --results DIR [--snowphoto EXE] [--rel F]\n"
+"    snowwedge progress --watch LOG --end T [--flow-end T] --pid PID\n"
+"                       --allrun-start EPOCH [--interval S]\n"
+"    snowwedge resume-start --time T --solver S\n"
+"    snowwedge resume-join --solver S\n"
+"    snowwedge allrun-options [--nproc N] [--case DIR] -- OPTION...\n"
+"    snowwedge spray-entry --kind num|list2|intlist --key KEY -- VALUE\n"
 "    snowwedge --help\n"
 "\n"
 "    SPRAY is --mvd UM [--sigma-g S] [--range MIN,MAX] [--freeze F]: droplet\n"
@@ -349,6 +356,39 @@ const char *swe_cli_usage =
 "             (snowphoto regions with the threshold F x the largest rear-face\n"
 "             deposit, F = --rel in (0, 1], default 0.1; EXE default the snowphoto\n"
 "             beside snowwedge; parcel counts when mass_balance.txt says split no).\n"
+"    progress --watch  every S seconds (default 30) while the process PID\n"
+"             runs, the progress line of LOG's last step (its last line \"Time =\n"
+"             T\"), the seconds counted from this command's start and from EPOCH\n"
+"             (Allrun's start); with --flow-end the solved flow and the replay\n"
+"             timed apart.\n"
+"    resume-start  -resume in the case folder: system/controlDict's startFrom\n"
+"             and startTime lines set to T, log.S kept as log.S.partK (K the\n"
+"             first free), the tables an earlier resume from T began removed from\n"
+"             postProcessing, T appended to log.Allrun.resumes; prints the line\n"
+"             Allrun logs.\n"
+"    resume-join  log.S.part1.. and log.S joined into log.S (join-logs), the\n"
+"             tables of postProcessing joined at every time of log.Allrun.resumes;\n"
+"             prints the line Allrun logs.\n"
+"    allrun-options  tutorials/wedge/Allrun's OPTIONs checked in the order\n"
+"             Allrun has always checked them, run in the case folder DIR (default\n"
+"             .; its log.Allrun.args when the only OPTION is -resume, the block\n"
+"             of the variant in constant/variants) on a machine of N processors\n"
+"             (default 1; Allrun gives nproc): each option as it is met, the\n"
+"             options of the transient route, -rear-layers, the dispersion\n"
+"             treatments, the variant's mesh (-level, -refine-wake) and factors,\n"
+"             -parallel against N and the mesh's cells along y; then the default\n"
+"             ladder, constant/gates/regime's slideLength and vtTable, and the\n"
+"             maxDeltaT of system/controlDict.transient.\n"
+"             Prints the settings as shell assignments (every value quoted, so\n"
+"             that no value runs as code; args_given and mpi_opts arrays); with\n"
+"             -h or --help among the OPTIONs only help=1. A refusal: one line\n"
+"             \"Allrun: ...\" (the texts of doc/reference/wedge-Allrun.md), exit 2.\n"
+"    spray-entry  the entry KEY of constant/sprayProperties as foamDictionary\n"
+"             -value printed it (VALUE) checked and printed: num a positive\n"
+"             number as written; list2 two positive numbers, the first the\n"
+"             smaller; intlist whole numbers from 1 (at most 7 digits), printed\n"
+"             comma-separated (list2, intlist: parentheses removed, blanks\n"
+"             collapsed). Exit 2 naming KEY and the value otherwise.\n"
 "\n"
 "EXIT STATUS\n"
 "    0 success; 1 an input file unreadable; 2 usage or bad input (one line\n"
@@ -380,6 +420,10 @@ int main(int argc, char **argv)
         return wrap_rc;
     if (swe_cmd_run_is(argv[1])) /* Allrun's commands parse their own options */
         return swe_cmd_run(argc, argv);
+    if (!strcmp(argv[1], "allrun-options")) /* Allrun's command line (swe_cmd_opts.c) */
+        return swe_cmd_opts(argc, argv);
+    if (!strcmp(argv[1], "spray-entry")) /* an entry of constant/sprayProperties (swe_cmd_opts.c) */
+        return swe_cmd_spray_entry(argc, argv);
     swe_options o = {0};
     swe_cli_parse(argc, argv, &o);
     int rc;

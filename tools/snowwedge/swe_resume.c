@@ -289,3 +289,107 @@ int swe_restart_tables(const char *dir, const char *t, int mode, FILE *out, char
     }
     return rc;
 }
+
+/* the first K with no log.SOLVER.partK */
+static int first_free_part(const char *solver)
+{
+    char p[4096];
+    struct stat st;
+    int k = 1;
+    for (;; k++) {
+        snprintf(p, sizeof p, "log.%s.part%d", solver, k);
+        if (stat(p, &st))
+            return k;
+    }
+}
+
+int swe_resume_start(const char *solver, const char *t, char *msg, size_t nmsg, char *err, size_t nerr)
+{
+    const char *cd = "system/controlDict", *tmp = "system/controlDict.resume";
+    FILE *in = fopen(cd, "r"), *out = in ? fopen(tmp, "w") : NULL;
+    char *line = NULL;
+    size_t cap = 0;
+    int set = 0;
+    while (out && getline(&line, &cap, in) >= 0)
+        if (!strncmp(line, "startFrom ", 10))
+            fputs("startFrom       startTime;\n", out);
+        else if (!strncmp(line, "startTime ", 10) && ++set)
+            fprintf(out, "startTime       %s;\n", t);
+        else
+            fputs(line, out);
+    free(line);
+    if (in)
+        fclose(in);
+    struct stat st;
+    if (!out || fclose(out) || stat(cd, &st) || chmod(tmp, st.st_mode) || rename(tmp, cd) || !set) {
+        remove(tmp);
+        return fail(err, nerr, 1, "-resume: could not set startTime %s in system/controlDict", t);
+    }
+    char log[4096], part[4096];
+    snprintf(log, sizeof log, "log.%s", solver);
+    snprintf(part, sizeof part, "log.%s.part%d", solver, first_free_part(solver));
+    if (!stat(log, &st) && rename(log, part))
+        return fail(err, nerr, 1, "-resume: could not move %s to %s", log, part);
+    char e[8400];
+    if (swe_restart_tables("postProcessing", t, SWE_TABLES_REMOVE, stdout, e, sizeof e))
+        return fail(err, nerr, 1, "-resume: %s", e);
+    FILE *r = fopen("log.Allrun.resumes", "a+");
+    if (!r || fprintf(r, "%s\n", t) < 0 || fseek(r, 0, SEEK_SET)) {
+        if (r)
+            fclose(r);
+        return fail(err, nerr, 1, "-resume: could not write log.Allrun.resumes");
+    }
+    int n = 0;
+    for (int c; (c = fgetc(r)) != EOF;)
+        n += c == '\n';
+    fclose(r);
+    snprintf(msg, nmsg, "resume: %s from time %s (the last time folder written whole), resume %d", solver, t, n);
+    return 0;
+}
+
+int swe_resume_join(const char *solver, char *msg, size_t nmsg, char *err, size_t nerr)
+{
+    const int n = first_free_part(solver);
+    char log[4096], joined[4110], names[8192] = "";
+    snprintf(log, sizeof log, "log.%s", solver);
+    snprintf(joined, sizeof joined, "%s.joined", log);
+    FILE **parts = calloc((size_t)n, sizeof *parts);
+    if (!parts)
+        return fail(err, nerr, 1, "out of memory");
+    char p[4096];
+    snprintf(p, sizeof p, "log.%s.part%d", solver, n);
+    int rc = rename(log, p) ? fail(err, nerr, 1, "-resume: could not move %s to %s", log, p) : 0;
+    size_t used = 0;
+    for (int k = 1; k <= n && !rc; k++) {
+        snprintf(p, sizeof p, "log.%s.part%d", solver, k);
+        used += (size_t)snprintf(names + used, used < sizeof names ? sizeof names - used : 0, "%s%s", k > 1 ? " " : "", p);
+        if (!(parts[k - 1] = fopen(p, "r")))
+            rc = fail(err, nerr, 1, "-resume: could not join the solver logs (cannot read %s)", p);
+    }
+    FILE *out = rc ? NULL : fopen(joined, "w");
+    char e[512];
+    if (!rc) {
+        int bad = !out || swe_join_logs(parts, n, out, e, sizeof e);
+        if ((out && fclose(out)) || bad || rename(joined, log))
+            rc = fail(err, nerr, 1, "-resume: could not join the solver logs %s", names);
+    }
+    for (int k = 0; k < n; k++)
+        if (parts[k])
+            fclose(parts[k]);
+    free(parts);
+    FILE *r = rc ? NULL : fopen("log.Allrun.resumes", "r");
+    if (!rc && !r)
+        rc = fail(err, nerr, 1, "-resume: cannot read log.Allrun.resumes");
+    char t[256], te[8400];
+    while (!rc && fgets(t, sizeof t, r)) {
+        char *a = t + strspn(t, " \t");
+        a[strcspn(a, " \t\n")] = '\0';
+        if (swe_restart_tables("postProcessing", a, SWE_TABLES_JOIN, stdout, te, sizeof te))
+            rc = fail(err, nerr, 1, "-resume: %s", te);
+    }
+    if (r)
+        fclose(r);
+    if (!rc)
+        snprintf(msg, nmsg, "resume: the logs of %d parts joined into %s; the tables of postProcessing/ joined", n, log);
+    return rc;
+}

@@ -381,6 +381,46 @@ void swe_progress_line(char *s, size_t n, double t, double t_end, double t_flow,
              100 * t / t_end, elapsed, left);
 }
 
+int swe_last_time(const char *path, char *out, size_t n)
+{
+    FILE *f = fopen(path, "r");
+    out[0] = '\0';
+    if (!f)
+        return 1;
+    /* backwards from the end in blocks, each overlapping the next by a line's length */
+    enum { BLOCK = 1 << 16, OVERLAP = 1 << 10 };
+    char *buf = malloc(BLOCK + 1);
+    long end = fseek(f, 0, SEEK_END) ? -1 : ftell(f);
+    while (buf && end > 0 && !out[0]) {
+        const long start = end > BLOCK ? end - BLOCK : 0;
+        const size_t len = (size_t)(end - start);
+        if (fseek(f, start, SEEK_SET) || fread(buf, 1, len, f) != len)
+            break;
+        buf[len] = '\0';
+        /* the last "Time = " at the start of a line wholly inside the block */
+        for (long i = (long)len - 1; i >= 0 && !out[0]; i--) {
+            if ((i > 0 && buf[i - 1] != '\n') || (i == 0 && start > 0) || strncmp(buf + i, "Time = ", 7))
+                continue;
+            const char *eol = strchr(buf + i, '\n');
+            if (!eol && start + (long)len < end)
+                continue;
+            char line[256];
+            snprintf(line, sizeof line, "%.*s", (int)(eol ? eol - (buf + i) : (long)strlen(buf + i)), buf + i);
+            char *save = NULL, *f1 = strtok_r(line, " \t", &save), *f2 = strtok_r(NULL, " \t", &save);
+            const char *f3 = f1 && f2 ? strtok_r(NULL, " \t", &save) : NULL;
+            snprintf(out, n, "%s", f3 ? f3 : "");
+            if (!f3) /* "Time =" alone: awk's $3 is empty, the reading skipped */
+                break;
+        }
+        if (out[0] || start == 0)
+            break;
+        end = start + OVERLAP;
+    }
+    free(buf);
+    fclose(f);
+    return 0;
+}
+
 /* ---- the nozzles ---------------------------------------------------------------------- */
 static int is_num_token(const char *s)
 {

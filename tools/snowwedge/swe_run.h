@@ -106,6 +106,9 @@ int swe_times(const swe_times_in *in, swe_times_out *out, char *err, size_t nerr
  * in the flow phase of a replayed run (t_flow >= 0) the time left to t_flow only */
 void swe_progress_line(char *s, size_t n, double t, double t_end, double t_flow, int replay_phase,
                        double ts, long elapsed, long phase_elapsed, long allrun);
+/* the time of a solver log's last step: the third field of its last line beginning
+   "Time = " (out "" when there is none yet); 0, or 1 when LOG cannot be read */
+int swe_last_time(const char *path, char *out, size_t n);
 
 /* ---- the nozzles' coneInjection dictionaries ------------------------------------------ */
 /* the points "x y z" of a nozzleArray file (// comments and parentheses removed;
@@ -159,6 +162,14 @@ int swe_resume_time(const char *case_dir, int nproc, char *t, size_t n, char *er
    (swe_join_table), removes it and then every empty NAME/t */
 enum { SWE_TABLES_LIST, SWE_TABLES_REMOVE, SWE_TABLES_JOIN };
 int swe_restart_tables(const char *dir, const char *t, int mode, FILE *out, char *err, size_t nerr);
+/* -resume in the case folder (the working directory): the solver SOLVER started again
+   from time t (system/controlDict's startFrom and startTime lines set, the interrupted
+   log.SOLVER kept as log.SOLVER.partK, K the first free, the tables an earlier resume
+   from t began removed from postProcessing, t appended to log.Allrun.resumes); and the
+   run's parts joined (log.SOLVER.part1.. and log.SOLVER as one log, the tables of
+   postProcessing of every time of log.Allrun.resumes). msg: the line Allrun logs */
+int swe_resume_start(const char *solver, const char *t, char *msg, size_t nmsg, char *err, size_t nerr);
+int swe_resume_join(const char *solver, char *msg, size_t nmsg, char *err, size_t nerr);
 
 /* ---- the total error against a resolution ladder (results/total_error.md) -------------- */
 /* why the run is not on the ladder (settings "KEY VALUE" against the ladder's
