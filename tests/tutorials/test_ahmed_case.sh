@@ -67,6 +67,8 @@ check "Cd $cd_ finite, in (0.15, 1)" awk -v x="$cd_" 'BEGIN { exit !(x == x + 0 
 check "the stilts add drag ($cda > $cd_)" awk -v a="$cda" -v b="$cd_" 'BEGIN { exit !(a > b && a < b + 0.3) }'
 check "the rear face under suction (Cp $cpb in (-1, 0))" awk -v x="$cpb" 'BEGIN { exit !(x > -1 && x < 0) }'
 check "the sensor's Cp $cps in (-1, 0.2)" awk -v x="$cps" 'BEGIN { exit !(x > -1 && x < 0.2) }'
+sh=$(val pressure_drag_share)
+check "pressure drag share $sh in (0.5, 1)" awk -v x="$sh" 'BEGIN { exit !(x > 0.5 && x < 1) }'
 check "results/flow.md states the published Cd" grep -q '| published Cd, square back (Ahmed, Ramm & Faltin 1984) | 0.25 |' "$c/results/flow.md"
 check "a second run is refused until Allclean" bash -c "SNOWWALL_TOP='$top' '$c/Allrun' -test > /dev/null 2>&1; [ \$? = 1 ]"
 "$c/Allclean"
