@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # test_ahmed_case.sh - tutorials/ahmed end to end on its test level (Allrun
-# -test, in a temporary copy; about 20 s unloaded): the surface written by
+# -test, in a temporary copy; about 10 s on an idle machine): the surface written by
 # snowbody is closed; the mesh passes checkMesh and has the body's patches with
 # the sensor as its own wall patch on the rear face; snappyHexMesh added wall
 # layers (the layer mesh has more cells than the snapped one, and the body's
