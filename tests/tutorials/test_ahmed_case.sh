@@ -69,7 +69,7 @@ check "the rear face under suction (Cp $cpb in (-1, 0))" awk -v x="$cpb" 'BEGIN 
 check "the sensor's Cp $cps in (-1, 0.2)" awk -v x="$cps" 'BEGIN { exit !(x > -1 && x < 0.2) }'
 sh=$(val pressure_drag_share)
 check "pressure drag share $sh in (0.5, 1)" awk -v x="$sh" 'BEGIN { exit !(x > 0.5 && x < 1) }'
-check "results/flow.md states the published Cd" grep -q '| published Cd, square back (Ahmed, Ramm & Faltin 1984) | 0.25 |' "$c/results/flow.md"
+check "results/flow.md states the published Cd" grep -q '| published Cd, square back (Ahmed, Ramm & Faltin 1984, as quoted: not yet checked against the paper) | 0.25 |' "$c/results/flow.md"
 check "a second run is refused until Allclean" bash -c "SNOWWALL_TOP='$top' '$c/Allrun' -test > /dev/null 2>&1; [ \$? = 1 ]"
 "$c/Allclean"
 (cd "$c" && find . -type f | sed 's|^\./||' | sort) > "$tmp/after"
