@@ -3,6 +3,7 @@
  * case in the current folder and parse their own options; --name NAME sets
  * the prefix of their messages (the calling script's name). */
 #include "swe_cli.h"
+#include "swe_plot.h"
 #include "swe_post.h"
 
 #include <glob.h>
@@ -363,15 +364,9 @@ static int deposit(const post_opts *o)
 static int map_max(const post_opts *o)
 {
     double m = 0;
-    for (int k = 0; k < o->nfiles; k++) {
-        FILE *f = swe_cli_open(o->files[k]);
-        char line[512];
-        double y, z, v;
-        for (int ln = 0; fgets(line, sizeof line, f); ln++)
-            if (ln && sscanf(line, "%lf,%lf,%lf", &y, &z, &v) == 3 && v > m)
-                m = v;
-        fclose(f);
-    }
+    char err[1024];
+    if (swe_plot_map_max(o->files, o->nfiles, &m, err, sizeof err))
+        swe_cli_die(1, "cannot read %s", err);
     const double r = o->rel ? swe_cli_number("--rel", o->rel) : 1;
     printf("%.6g %.6g\n", m, r * (o->exact ? m : swe_post_round(m, 6)));
     return 0;
