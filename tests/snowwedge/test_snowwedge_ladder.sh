@@ -96,6 +96,25 @@ check "errortime-points: spray only (flow and no time left out)" "[ \"\$(cat '$t
 "$S" errortime-plot --region left --title T --dir "$tmp" "$tmp/p" > "$tmp/gp"
 check "errortime-plot: the design's series, its line e sqrt(t / x)" "[ -s '$tmp/d_spray' ] && grep -qF \"'$tmp/d_spray' using 3:4 with points pt 7 ps 1.5 title 'spray', (40) * (30 / x) ** 2 > 0 ? 30 * sqrt(40 / x)\" '$tmp/gp'"
 bad 2 "--region: 'top' is not" errortime-points --region top "$tmp/cost.csv" run
+# its files are its own: a design's file already there, a design that is a path, a run or
+# title that would end a gnuplot string, a time that is not a number: refused, nothing written
+bad 2 "$tmp/d_spray exists: not replaced" errortime-plot --region left --title T --dir "$tmp" "$tmp/p"
+mkdir "$tmp/et"
+printf 'spray\trun\t40\t30\n../x\trun\t40\t30\n' > "$tmp/p2"
+bad 2 "design '../x' is not a name" errortime-plot --region left --title T --dir "$tmp/et" "$tmp/p2"
+printf "spray\trun\t40\t30\nspray\tru'n\t40\t30\n" > "$tmp/p2"
+bad 2 "run 'ru'n' holds a quote" errortime-plot --region left --title T --dir "$tmp/et" "$tmp/p2"
+printf 'spray\trun\t40\tsystem(1)\n' > "$tmp/p2"
+bad 2 "error 'system(1)' is not a number" errortime-plot --region left --title T --dir "$tmp/et" "$tmp/p2"
+bad 2 "--title 'it's' holds a quote" errortime-plot --region left --title "it's" --dir "$tmp/et" "$tmp/p"
+check "errortime-plot: nothing written by the refusals" "[ -z \"\$(ls -A '$tmp/et')\" ]"
+printf 'spray\tA\t40\t30\nspray\tB\t80\t20\n' > "$tmp/p2"
+"$S" errortime-plot --region left --title T --dir "$tmp/et" "$tmp/p2" > /dev/null
+check "errortime-plot: a design's points in one file, in order" "[ \"\$(cut -f2 '$tmp/et/d_spray' | tr '\n' ' ')\" = 'A B ' ]"
+# ladder-plot --points: never over a folder or a device
+mkdir "$tmp/ptsdir"
+bad 2 "cannot write '$tmp/ptsdir': it exists and is a folder" ladder-plot --quantity Cd --targets 10 --points "$tmp/ptsdir" --png x.png "$tmp/te.csv"
+bad 2 "cannot write '/dev/null': it exists and is a character device" ladder-plot --quantity Cd --targets 10 --points /dev/null --png x.png "$tmp/te.csv"
 
 # ---- the composition: its options and the classes' table
 bad 2 "--mvd: 'abc' is not a diameter in [0.1, 1000] um" compose-check --mvd abc --sigma-g 1.8 --range 2,150 --freeze 1.03 --sampled 1

@@ -55,6 +55,15 @@ sed -i 's/^rear snow 110 40 60/rear snow 110 41 60/' "$c/postProcessing/c:snowWa
 check "patch-table: counts by reason that do not add up: exit 1, named" \
     "[ $rc = 1 ] && grep -q '^wedge-post: patch rear: the counts by reason (stuck 41' '$tmp/err'"
 sed -i 's/^rear snow 110 41 60/rear snow 110 40 60/' "$c/postProcessing/c:snowWall/0.6/reasons.dat"
+check "patch-table: the failed table's CSV not written, no temporary left" \
+    "[ ! -e '$tmp/bad.csv' ] && [ -z \"\$(ls -A '$tmp' | grep '^\.tmp-')\" ]"
+# its CSV never over a folder or a device
+mkdir "$tmp/csvdir"
+(cd "$c" && "$S" patch-table --cloud c --csv "$tmp/csvdir") > /dev/null 2> "$tmp/err"; rc=$?
+check "patch-table: --csv a folder: refused (2), the folder left" \
+    "[ $rc = 2 ] && grep -q \"cannot write '$tmp/csvdir': it exists and is a folder\" '$tmp/err' && [ -d '$tmp/csvdir' ]"
+(cd "$c" && "$S" patch-table --cloud c --csv /dev/null) > /dev/null 2> "$tmp/err"; rc=$?
+check "patch-table: --csv /dev/null: refused (2)" "[ $rc = 2 ] && grep -q 'character device' '$tmp/err'"
 
 (cd "$c" && "$S" balance --cloud c --gate off --log log) > "$tmp/mb"
 check "balance: injected 100, escaped 2 x 3 x 1 = 6 kg, airborne 0.5" \

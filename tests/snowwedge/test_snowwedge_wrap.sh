@@ -215,6 +215,11 @@ printf '# x y z v\n0 1 0 7\n' > "$c/postProcessing/deposit_rear/surface/0.6/c:sn
 mkdir -p "$tmp/bad"
 (cd "$c" && "$S" rear-maps --name wedge-post --cloud c --dir "$tmp/bad" --window 0.2,0.4,0.6) 2> "$tmp/err"; rc=$?
 check "rear-maps: maps of different faces: exit 1, nothing left behind" "[ $rc = 1 ] && grep -q 'rear-face maps .* differ' '$tmp/err' && [ -z \"\$(ls -A '$tmp/bad')\" ]"
+printf '# x y z v\n0 1 0 7\n0 -1 0 5\n' > "$c/postProcessing/deposit_rear/surface/0.6/c:snowDeposit_patch_rear.raw"
+mkdir -p "$tmp/dirmap/rear_deposit.csv"
+(cd "$c" && "$S" rear-maps --name wedge-post --cloud c --dir "$tmp/dirmap") 2> "$tmp/err"; rc=$?
+check "rear-maps: a folder where the map goes: refused (2), left as it was" \
+    "[ $rc = 2 ] && grep -q 'it exists and is a folder' '$tmp/err' && [ -d '$tmp/dirmap/rear_deposit.csv' ] && [ \"\$(ls -A '$tmp/dirmap')\" = rear_deposit.csv ]"
 
 # ---- variant --part regions: the head of the regions table ---------------------------------
 "$S" variant --variant rough --results . --gate off --part regions --rel 0.2 --threshold 0.004 > "$tmp/v"

@@ -8,8 +8,10 @@
 
 #include "swe_ladder.h"
 #include "swe_spray.h"
+#include "swo_out.h"
 
 #include <ctype.h>
+#include <errno.h>
 #include <glob.h>
 #include <regex.h>
 #include <math.h>
@@ -465,6 +467,37 @@ static size_t targets_of(const char *list, double *t, size_t max)
     return n;
 }
 
+/* TEXT into the file OPT PATH whole or not at all (common/swo_out.h): refused (exit 2)
+   when PATH is there and is not a regular file or its folder is missing */
+static void write_whole(const char *opt, const char *path, const char *text)
+{
+    char err[1024];
+    swo_set *set = NULL;
+    const swo_spec spec = {"snowwedge", opt, NULL, 0, 0};
+    int rc = swo_alloc(&spec, &set, err, sizeof err);
+    if (rc != SWO_OK)
+        swe_cli_die(rc, "%s", err);
+    err[0] = 0;
+    FILE *f = swo_open(set, path, err, sizeof err);
+    if (!f || fputs(text, f) < 0 || swo_commit(set, err, sizeof err) != SWO_OK) {
+        rc = swo_code(set);
+        swo_free(set);
+        if (err[0])
+            swe_cli_die(rc ? rc : 1, "%s", err);
+        swe_cli_die(1, "cannot write %s", path);
+    }
+    swo_free(set);
+}
+
+/* a text written into a gnuplot string: refused (exit 2) when it holds a quote, a
+   backslash, a backquote or a newline, which could end the string or run a command */
+static void plain(const char *what, const char *text)
+{
+    if (strpbrk(text, "'\"\\`\n"))
+        swe_cli_die(2, "errortime-plot: %s '%s' holds a quote, backslash, backquote or newline "
+                       "(not written into a gnuplot script)", what, text);
+}
+
 /* ladder-plot --quantity Q --targets LIST --points FILE --png PNG TOTAL_ERROR.csv:
    per run of Q with a relative error "time error% run(design)" into FILE, and on
    standard output the gnuplot script of the plot into PNG (log-log, the ranges
@@ -506,9 +539,7 @@ static int cmd_plot(const opts *o)
     fclose(mem);
     if (!n)
         swe_cli_die(2, "--plot %s: no such quantity with a relative error in %s", q, o->arg[0]);
-    FILE *out = fopen(pf, "w");
-    if (!out || fputs(pts, out) < 0 || fclose(out))
-        swe_cli_die(1, "cannot write %s", pf);
+    write_whole("--points", pf, pts);
     double tv[64], range[4];
     char r[4][64];
     const size_t nt = targets_of(tg, tv, 64);
@@ -847,6 +878,9 @@ static int cmd_etplot(const opts *o)
                *title = need(o, "--title", "errortime-plot"), *dir = need(o, "--dir", "errortime-plot");
     if (o->narg != 1)
         swe_cli_die(2, "errortime-plot: give one POINTS file (see --help)");
+    plain("--title", title);
+    plain("--region", region);
+    plain("--dir", dir);
     char *t = slurp(o->arg[0]), *cur = t, *l, path[4096];
     if (!t)
         swe_cli_die(1, "cannot read %s", o->arg[0]);
@@ -860,16 +894,42 @@ static int cmd_etplot(const opts *o)
             swe_cli_die(2, "%s line %d is not \"design run wall_s error\" (tab-separated)",
                         o->arg[0], n + 1);
         d[n] = f[0], lab[n] = f[1], tt[n] = f[2], e[n] = f[3];
-        snprintf(path, sizeof path, "%s/d_%s", dir, d[n]);
-        FILE *df = fopen(path, "a");
-        if (!df || fprintf(df, "%s\t%s\t%s\t%s\n", d[n], lab[n], tt[n], e[n]) < 0 || fclose(df))
-            swe_cli_die(1, "cannot write %s", path);
+        if (!*d[n] || strspn(d[n], "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
+                                   "0123456789_.+-") != strlen(d[n]) || d[n][0] == '.')
+            swe_cli_die(2, "%s line %d: design '%s' is not a name of letters, digits and _ . + -",
+                        o->arg[0], n + 1, d[n]);
+        plain("run", lab[n]);
+        for (int k = 2; k < 4; k++) {
+            char *end;
+            const double v = strtod(f[k], &end);
+            if (!*f[k] || *end || !isfinite(v))
+                swe_cli_die(2, "%s line %d: %s '%s' is not a number", o->arg[0], n + 1,
+                            k == 2 ? "wall_s" : "error", f[k]);
+        }
         int seen = 0;
         for (int k = 0; k < nn; k++)
             seen |= !strcmp(names[k], d[n]);
         if (!seen)
             names[nn++] = d[n];
         n++;
+    }
+    /* every line checked: each design's file, created here (never one that was there) */
+    for (int k = 0; k < nn; k++) {
+        struct stat st;
+        snprintf(path, sizeof path, "%s/d_%s", dir, names[k]);
+        if (!lstat(path, &st))
+            swe_cli_die(2, "%s exists: not replaced (--dir needs a folder without d_* files)", path);
+    }
+    for (int i = 0; i < n; i++) {
+        int first = 1;
+        for (int k = 0; k < i; k++)
+            first &= strcmp(d[k], d[i]) != 0;
+        snprintf(path, sizeof path, "%s/d_%s", dir, d[i]);
+        FILE *df = fopen(path, first ? "wx" : "a");
+        if (!df && first && errno == EEXIST)
+            swe_cli_die(2, "%s exists: not replaced (--dir needs a folder without d_* files)", path);
+        if (!df || fprintf(df, "%s\t%s\t%s\t%s\n", d[i], lab[i], tt[i], e[i]) < 0 || fclose(df))
+            swe_cli_die(1, "cannot write %s", path);
     }
     qsort(names, (size_t)nn, sizeof *names, by_name);
     printf("set terminal pngcairo size 800,560 font ',11'\nset output '%s/plot.png'\n"

@@ -3,6 +3,7 @@
  * case in the current folder and parse their own options; --name NAME sets
  * the prefix of their messages (the calling script's name). */
 #include "swe_cli.h"
+#include "swo_out.h"
 #include "swe_plot.h"
 #include "swe_post.h"
 
@@ -19,19 +20,48 @@ static const char *prog = "snowwedge";
 static const char *const patches[6] = {"rear", "nose", "top", "bottom", "sideYneg", "sideYpos"};
 
 static void die(int code, const char *fmt, ...) __attribute__((noreturn, format(printf, 2, 3)));
-static char pending[4096]; /* a temporary output file, removed when the command fails */
+static swo_set *live; /* the output file being written (common/swo_out.h), removed when the
+                        command fails */
 
 static void die(int code, const char *fmt, ...)
 {
     va_list ap;
-    if (pending[0])
-        remove(pending);
+    swo_free(live);
     fprintf(stderr, "%s: ", prog);
     va_start(ap, fmt);
     vfprintf(stderr, fmt, ap);
     va_end(ap);
     fputc('\n', stderr);
     exit(code);
+}
+
+/* one output file OPT PATH, written whole or not at all: a temporary in its folder (mode
+   644), renamed by out_commit(); refused (exit 2) when PATH is there and is not a regular
+   file (a folder, link, device, FIFO) or its folder is missing */
+static FILE *out_open(const char *opt, const char *path)
+{
+    char err[1024];
+    const swo_spec spec = {prog, opt, NULL, 0, 0};
+    if (swo_alloc(&spec, &live, err, sizeof err) != SWO_OK)
+        die(2, "%s", err);
+    const char *tmp = swo_add(live, path, err, sizeof err);
+    if (!tmp)
+        die(swo_code(live), "%s", err);
+    FILE *f = fopen(tmp, "w");
+    if (!f || chmod(tmp, 0644))
+        die(1, "cannot write %s", path);
+    return f;
+}
+
+static void out_commit(FILE *f, const char *path)
+{
+    char err[1024];
+    if (fclose(f))
+        die(1, "cannot write %s", path);
+    if (swo_commit(live, err, sizeof err) != SWO_OK)
+        die(swo_code(live), "%s", err);
+    swo_free(live);
+    live = NULL;
 }
 
 /* the options of the post commands (NULL: not given) */
@@ -183,21 +213,14 @@ static int rear_map(const post_opts *o)
     return 0;
 }
 
-/* the map into DIR/NAME, whole or not at all: a temporary file renamed (mode 644) */
+/* the map into DIR/NAME, whole or not at all (out_open) */
 static void publish_map(const char *dir, const char *name, const char *minus, const char *raw, double k)
 {
-    char tmp[4096], path[4096];
-    snprintf(tmp, sizeof tmp, "%s/.map.XXXXXX", dir);
+    char path[4096];
     snprintf(path, sizeof path, "%s/%s", dir, name);
-    const int fd = mkstemp(tmp);
-    FILE *f = fd < 0 ? NULL : fdopen(fd, "w");
-    if (!f)
-        die(1, "cannot write %s", tmp);
-    snprintf(pending, sizeof pending, "%s", tmp);
+    FILE *f = out_open("--dir", path);
     write_map(minus, raw, k, f);
-    if (fflush(f) || fchmod(fd, 0644) || fclose(f) || rename(tmp, path))
-        die(1, "cannot write %s", path);
-    pending[0] = 0;
+    out_commit(f, path);
 }
 
 /* the raw rear-face file of the cloud's field written at time T (numerically), or the latest */
@@ -276,9 +299,7 @@ static int patch_table(const post_opts *o)
     char t[3][64] = {"last", "last", ""};
     if (o->window && split_times(o->window, t) != 2)
         die(2, "patch-table: --window '%s' is not T0,T1", o->window);
-    FILE *csv = fopen(o->csv, "w");
-    if (!csv)
-        die(1, "cannot write %s", o->csv);
+    FILE *csv = out_open("--csv", o->csv);
     fputs("patch,area_m2,deposit_kg,mean_kg_m2,impacts,sticks,bounces,ripoffs,logged_kg,stuck,"
           "criterion,tangential,shear,probability\n", csv);
     puts("| patch | area [m2] | deposit [kg] | mean [kg/m2] | impacts | sticks | bounces | "
@@ -331,7 +352,8 @@ static int patch_table(const post_opts *o)
            "gate, bounces = criterion + tangential gate + probability draw; checked to add up; - "
            "without one).\n", total, o->gate ? o->gate : "off", o->cloud,
            o->what ? o->what : "30 min");
-    return fclose(csv) ? (die(1, "cannot write %s", o->csv), 1) : 0;
+    out_commit(csv, o->csv);
+    return 0;
 }
 
 /* ---- time-dir, deposit, map-max: single numbers of the run ---------------------------- */
