@@ -6,6 +6,7 @@
  * -errortime) prints the values as shell assignments for the script to eval (or,
  * for --help, the commands that print the help and exit 0). */
 #include "swe_cli.h"
+#include "swe_opts.h"
 
 #include <ctype.h>
 #include <glob.h>
@@ -231,10 +232,9 @@ static void num_list(const char *opt, const char *text, char *out, size_t n)
 /* one shell assignment NAME='VALUE' */
 static void assign(const char *name, const char *value)
 {
-    printf("%s='", name);
-    for (const char *p = value; *p; p++)
-        *p == '\'' ? fputs("'\\''", stdout) : putchar(*p);
-    fputs("'\n", stdout);
+    printf("%s=", name);
+    swe_opts_quote(stdout, value); /* single-quoted: no value runs as code */
+    putchar('\n');
 }
 
 static void assign_all(const wrap_vals *v)
@@ -247,10 +247,9 @@ static void assign_list(const char *name, const wrap_vals *v)
 {
     printf("%s=(", name);
     for (int i = 0; i < v->nlist; i++) {
-        fputs(i ? " '" : "'", stdout);
-        for (const char *p = v->list[i]; *p; p++)
-            *p == '\'' ? fputs("'\\''", stdout) : putchar(*p);
-        putchar('\'');
+        if (i)
+            putchar(' ');
+        swe_opts_quote(stdout, v->list[i]);
     }
     fputs(")\n", stdout);
 }
