@@ -175,7 +175,7 @@ static void test_list(void **state)
 static void spray(const char *kind, const char *value, int code, const char *want)
 {
     char out[256], err[512];
-    const int rc = swe_opts_spray_entry(kind, "k/e", value, out, sizeof out, err, sizeof err);
+    const int rc = swe_opts_spray_entry(NULL, kind, "k/e", value, out, sizeof out, err, sizeof err);
     if (rc != code || strcmp(rc ? err : out, want))
         fail_msg("%s '%s': %d '%s', want %d '%s'", kind, value, rc, rc ? err : out, code, want);
 }

@@ -1,6 +1,7 @@
 /* sbd_main.c - snowbody: the square-back Ahmed body as an STL surface for
  * snappyHexMesh, and the checks of that surface. */
 #include "sbd_body.h"
+#include "sbd_cmd.h"
 #include "sbd_stl.h"
 
 #include <errno.h>
@@ -17,6 +18,7 @@ static const char *usage =
 "SYNOPSIS\n"
 "    snowbody stl --out FILE [--force] [--set KEY=VALUE]...\n"
 "    snowbody check [--set KEY=VALUE]...\n"
+"    snowbody snow-post --case DIR --fill T --sample T --build-up S --out DIR ...\n"
 "    snowbody --help\n"
 "\n"
 "DESCRIPTION\n"
@@ -29,6 +31,10 @@ static const char *usage =
 "    stilts is its own closed shell reaching stilt_below under the ground and\n"
 "    stilt_into into the body (snappyHexMesh cuts them with the ground and keeps\n"
 "    the union).\n"
+"\n"
+"    snow-post reads a snow run on the body (tutorials/ahmed/snow) and writes the\n"
+"    deposit per patch, the sensor's deposit against time, the rear-face map and\n"
+"    the error table; its options: snowbody snow-post --help.\n"
 "\n"
 "    check builds the same surface and prints 'key = value' lines: vertices,\n"
 "    triangles, open_edges and nonmanifold_edges (0 and 0 for a closed surface),\n"
@@ -129,16 +135,18 @@ static int print_check(const sbd_params *p, const sbd_surface *s)
 int main(int argc, char **argv)
 {
     if (argc < 2) {
-        fprintf(stderr, "snowbody: missing command (stl or check); see snowbody --help\n");
+        fprintf(stderr, "snowbody: missing command (stl, check or snow-post); see snowbody --help\n");
         return 2;
     }
     if (!strcmp(argv[1], "-h") || !strcmp(argv[1], "--help")) {
         fputs(usage, stdout);
         return finish_stdout(0);
     }
+    if (!strcmp(argv[1], "snow-post"))
+        return sbd_cmd_snow_post(argc, argv);
     int is_stl = !strcmp(argv[1], "stl"), is_check = !strcmp(argv[1], "check");
     if (!is_stl && !is_check) {
-        fprintf(stderr, "snowbody: unknown command '%s' (stl or check); see snowbody --help\n", argv[1]);
+        fprintf(stderr, "snowbody: unknown command '%s' (stl, check or snow-post); see snowbody --help\n", argv[1]);
         return 2;
     }
     sbd_params p;

@@ -1,6 +1,6 @@
 /* swe_cmd_opts.c - snowwedge allrun-options: tutorials/wedge/Allrun's command line
  * checked (swe_opts.h) and written as the shell assignments Allrun evaluates; and
- * snowwedge spray-entry: one entry of constant/sprayProperties checked. */
+ * snowwedge spray-entry: one entry of constant/sprayProperties (or --file) checked. */
 #include "swe_cli.h"
 #include "swe_opts.h"
 
@@ -43,7 +43,7 @@ int swe_cmd_opts(int argc, char **argv)
 
 int swe_cmd_spray_entry(int argc, char **argv)
 {
-    const char *kind = NULL, *key = NULL;
+    const char *kind = NULL, *key = NULL, *file = NULL;
     int i = 2;
     for (; i < argc && strcmp(argv[i], "--"); i++) {
         if (!strcmp(argv[i], "-h") || !strcmp(argv[i], "--help")) {
@@ -53,6 +53,8 @@ int swe_cmd_spray_entry(int argc, char **argv)
             kind = argv[++i];
         } else if (i + 1 < argc && !strcmp(argv[i], "--key")) {
             key = argv[++i];
+        } else if (i + 1 < argc && !strcmp(argv[i], "--file")) {
+            file = argv[++i];
         } else {
             swe_cli_die(2, "spray-entry: unknown option or missing value '%s' (see --help)", argv[i]);
         }
@@ -62,7 +64,7 @@ int swe_cmd_spray_entry(int argc, char **argv)
     if (!key || i + 2 != argc)
         swe_cli_die(2, "spray-entry: give --key KEY and the value after -- (see --help)");
     char out[SWE_OPTS_TEXT], err[SWE_OPTS_TEXT + 256];
-    if (swe_opts_spray_entry(kind, key, argv[i + 1], out, sizeof out, err, sizeof err))
+    if (swe_opts_spray_entry(file, kind, key, argv[i + 1], out, sizeof out, err, sizeof err))
         swe_cli_die(2, "%s", err);
     puts(out);
     return 0;

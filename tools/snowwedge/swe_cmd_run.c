@@ -383,8 +383,13 @@ static int cmd_nozzles(int argc, char **argv)
 {
     run_opt opts[] = {{"--array", 0, 0, 0}, {"--wake", 1, 0, 0},   {"--derived", 0, 0, 0},
                       {"--parcels", 0, 0, 0}, {"--factor", 0, 0, 0}, {"--size", 0, 0, 0},
-                      {0}};
+                      {"--speed", 0, 0, 0}, {0}};
     options_only(argc, argv, opts, "nozzles");
+    const char *speed = val(opts, "--speed", NULL);
+    if (speed && !(swe_cli_number("--speed", speed) > 0 && swe_cli_number("--speed", speed) < 1e4))
+        swe_cli_die(2, "--speed: '%s' is not a speed in m/s (above 0, below 1e4)", speed);
+    if (speed && flag(opts, "--wake"))
+        swe_cli_die(2, "--speed with --wake: the wake source's speed is 1 m/s");
     const char *C = "nozzles", *size = need(opts, "--size", C);
     const int wake = flag(opts, "--wake");
     const double sz = strcmp(size, "spray") ? swe_cli_number("--size", size) : 0;
@@ -419,7 +424,7 @@ static int cmd_nozzles(int argc, char **argv)
     fclose(f);
     if (!soi[0] || !mass[0] || !dur[0])
         swe_cli_die(2, "%s: SOI, massTotal and duration are required", dpath);
-    swe_nozzles_write(stdout, pts, np, parcels, soi, strtod(mass, NULL), dur, sz, wake);
+    swe_nozzles_write(stdout, pts, np, parcels, soi, strtod(mass, NULL), dur, sz, wake, speed);
     free(pts);
     return 0;
 }

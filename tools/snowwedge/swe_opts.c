@@ -223,9 +223,11 @@ int swe_opts_list(const char *opt, const char *text, int num, char *out, size_t 
     return rc;
 }
 
-int swe_opts_spray_entry(const char *kind, const char *key, const char *value, char *out, size_t n, char *err,
-                         size_t nerr)
+int swe_opts_spray_entry(const char *file, const char *kind, const char *key, const char *value, char *out, size_t n,
+                         char *err, size_t nerr)
 {
+    if (!file)
+        file = "constant/sprayProperties";
     const char *num = "[+]?([0-9]+[.]?[0-9]*|[.][0-9]+)([eE][+-]?[0-9]+)?";
     char re[256];
     int ok;
@@ -255,13 +257,13 @@ int swe_opts_spray_entry(const char *kind, const char *key, const char *value, c
         return 0;
     const char *v = *out ? out : "<missing>";
     if (!strcmp(kind, "num"))
-        return fail(2, err, nerr, "constant/sprayProperties: '%s' must be a positive number, got '%s'", key, v);
+        return fail(2, err, nerr, "%s: '%s' must be a positive number, got '%s'", file, key, v);
     if (!strcmp(kind, "list2"))
         return fail(2, err, nerr,
-                    "constant/sprayProperties: '%s' must be two positive numbers, the first the smaller, got '%s'",
-                    key, v);
-    return fail(2, err, nerr, "constant/sprayProperties: '%s' must be a list of whole numbers from 1, got '%s'", key,
-                v);
+                    "%s: '%s' must be two positive numbers, the first the smaller, got '%s'",
+                    file, key, v);
+    return fail(2, err, nerr, "%s: '%s' must be a list of whole numbers from 1, got '%s'", file,
+                key, v);
 }
 
 /* the directory DIR (relative) seen from the logical folder BASE as `cd DIR && pwd`

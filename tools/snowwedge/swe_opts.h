@@ -36,8 +36,8 @@ int swe_opts_list(const char *opt, const char *text, int num, char *out, size_t 
    the smaller, and "intlist" whole numbers from 1 (at most 7 digits), both with the
    parentheses removed and the blanks collapsed (intlist then comma-separated).
    0 and the value in out, or 2 and err naming KEY and the value */
-int swe_opts_spray_entry(const char *kind, const char *key, const char *value, char *out, size_t n, char *err,
-                         size_t nerr);
+int swe_opts_spray_entry(const char *file, const char *kind, const char *key, const char *value, char *out, size_t n,
+                         char *err, size_t nerr);
 
 #define SWE_OPTS_TEXT 4096
 typedef struct {

@@ -117,9 +117,10 @@ int swe_nozzle_points(const char *path, char (**pts)[128], char *err, size_t ner
 /* the 9 wake-source points: x 0.36, y, z = -0.04, 0, 0.04 m + 0.1 mm */
 int swe_wake_points(char (**pts)[128]);
 /* one coneInjection per point: soi, mass_total, duration as in sprayDerived;
-   size_um <= 0: the spray's table (#include "sprayDistribution") */
+   size_um <= 0: the spray's table (#include "sprayDistribution"); speed: the
+   nozzles' Umag as written (NULL: the wedge's tunnel speed, 19.444 m/s) */
 void swe_nozzles_write(FILE *f, char (*pts)[128], int np, long parcels, const char *soi,
-                       double mass_total, const char *duration, double size_um, int wake);
+                       double mass_total, const char *duration, double size_um, int wake, const char *speed);
 
 /* ---- the decomposition into slabs along y --------------------------------------------- */
 /* proc[i] of cell i: the cells up to the first layer of centres downstream of

@@ -28,6 +28,16 @@ Description
     converged steady flow, say) are held, and the time loop only evolves
     the clouds, as icoUncoupledKinematicParcelFoam does for one cloud.
 
+    With -frozen -speedScale S the held flow is first scaled to S times its
+    speed at the same geometry: U, phi and the turbulence velocity scales
+    by S, and every field of the list below by S^-n where n is the time
+    exponent of its dimensions (p, k by S^2, omega, nut by S, epsilon by
+    S^3), boundary values included. This is the flow at S times the speed
+    with S times the viscosity (the same Reynolds number, exactly); read as
+    the flow at S times the speed in the same air, it assumes the mean flow
+    does not depend on the Reynolds number between the two. The cloud's
+    viscosity stays transportProperties' nu.
+
     With -replay the flow is solved until a library of snapshots is
     complete (controlDict sub-dictionary replay: start, period, interval,
     fields), then played back periodically while the clouds go on moving
@@ -47,7 +57,8 @@ Description
 
 Usage
     pimpleUncoupledKinematicParcelFoam [-cloud NAME | -clouds '(NAME ...)']
-                                       [-frozen | -replay] [-checkpoint S]
+                                       [-frozen [-speedScale S] | -replay]
+                                       [-checkpoint S]
                                        [-parallel] [-help]
 
     -cloud NAME         the cloud (default kinematicCloud)
@@ -95,6 +106,13 @@ int main(int argc, char *argv[])
         "frozen",
         "hold the flow of the start time: evolve the clouds only"
     );
+    argList::addOption
+    (
+        "speedScale",
+        "factor",
+        "with -frozen: the held flow scaled to this many times its speed"
+        " (U, phi by S; p, k by S^2; omega, nut by S; epsilon by S^3)"
+    );
     argList::addBoolOption
     (
         "replay",
@@ -115,21 +133,27 @@ int main(int argc, char *argv[])
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
 
+    // a positive finite number given as text: a nan must not reach a
+    // comparison (the floating-point traps OpenFOAM sets would kill the run
+    // without a word); false if the text is not one
+    const auto positiveNumber = [](const std::string& txt, scalar& out)
+    {
+        char* end = nullptr;
+        const double v = std::strtod(txt.c_str(), &end);
+        const bool whole = !txt.empty() && end && *end == '\0';
+        if (!whole || !std::isfinite(v) || v <= 0)
+        {
+            return false;
+        }
+        out = v;
+        return true;
+    };
+
     // -checkpoint: a positive finite number of seconds (wall clock)
     scalar checkpoint = 0;
     if (args.found("checkpoint"))
     {
-        // read as text: a nan must not reach a comparison (the floating-point
-        // traps OpenFOAM sets would kill the run without a word)
-        const std::string txt(args["checkpoint"]);
-        char* end = nullptr;
-        const double v = std::strtod(txt.c_str(), &end);
-        const bool whole = !txt.empty() && end && *end == '\0';
-        if (whole && std::isfinite(v) && v > 0)
-        {
-            checkpoint = v;
-        }
-        else
+        if (!positiveNumber(args["checkpoint"], checkpoint))
         {
             FatalErrorInFunction
                 << "-checkpoint: a positive number of seconds of wall clock, "
@@ -137,6 +161,28 @@ int main(int argc, char *argv[])
         }
         Info<< "Checkpoint: a write whenever " << checkpoint << " s of wall "
             << "clock have passed since the last one" << nl << endl;
+    }
+
+    // -speedScale: with -frozen only, a factor in [1e-3, 1e3]
+    scalar speedScale = 1;
+    if (args.found("speedScale"))
+    {
+        if
+        (
+            !positiveNumber(args["speedScale"], speedScale)
+         || speedScale < 1e-3 || speedScale > 1e3
+        )
+        {
+            FatalErrorInFunction
+                << "-speedScale: a factor from 0.001 to 1000, got "
+                << args["speedScale"].c_str() << exit(FatalError);
+        }
+        if (!args.found("frozen"))
+        {
+            FatalErrorInFunction
+                << "-speedScale scales the held flow: give -frozen too"
+                << exit(FatalError);
+        }
     }
 
     #include "createTime.H"
@@ -149,6 +195,31 @@ int main(int argc, char *argv[])
     #include "createCloudFields.H"     // rho, mu, g and the cloud
     #include "CourantNo.H"
     #include "setInitialDeltaT.H"
+
+    if (speedScale != 1)
+    {
+        // the held flow at speedScale times its speed: each field read from
+        // the start time by speedScale^-n, n its dimensions' time exponent
+        const auto factor = [&](const dimensionSet& d)
+        {
+            return Foam::pow(speedScale, -d[dimensionSet::TIME]);
+        };
+        U == factor(U.dimensions())*U;
+        phi == factor(phi.dimensions())*phi;
+        p == factor(p.dimensions())*p;
+        for (const word name : {"k", "omega", "epsilon", "nut", "nuTilda"})
+        {
+            if (mesh.foundObject<volScalarField>(name))
+            {
+                volScalarField& f = mesh.lookupObjectRef<volScalarField>(name);
+                const scalar c = factor(f.dimensions());
+                f == c*f;
+                Info<< "Frozen flow: " << name << " x " << c << nl;
+            }
+        }
+        Info<< "Frozen flow: U, phi x " << speedScale << ", p x "
+            << factor(p.dimensions()) << " (-speedScale)" << nl << endl;
+    }
 
     turbulence->validate();
 

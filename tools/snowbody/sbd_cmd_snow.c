@@ -1,0 +1,644 @@
+/* sbd_cmd_snow.c - snowbody snow-post: the snow on the Ahmed body from a run's
+ * stick records and deposit tables (sbd_snow.h), written as one output set. */
+#include "sbd_body.h"
+#include "sbd_cmd.h"
+#include "sbd_snow.h"
+#include "swo_out.h"
+
+#include <errno.h>
+#include <glob.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#define NPATCH 16
+#define MINUTES_STEPS 30
+#define MAP_NY 8    /* bins across the half rear face */
+#define MAP_NZ 12   /* bins up the rear face */
+
+typedef struct {
+    char name[64];
+    double area;        /* in the mesh (the half model) [m2] */
+    double deposit;     /* the deposit field's integral at the last write [kg] */
+    sbd_sticks st;
+    sbd_window_stat w;
+} patch;
+
+typedef struct {
+    const char *case_dir, *out, *flow, *ladder, *cloud;
+    double fill, sample, build_up, speed, snow_seconds;
+    long parcels, nozzles, processes;
+    int half, force;
+} options;
+
+static swo_set *g_set;   /* freed by die() */
+
+static int die(int code, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    fputs("snowbody: snow-post: ", stderr);
+    vfprintf(stderr, fmt, ap);
+    fputc('\n', stderr);
+    va_end(ap);
+    swo_free(g_set);
+    g_set = NULL;
+    return code;
+}
+
+static int positive(const char *opt, const char *v, double lo, double hi, double *out);
+/* a whole number in [lo, hi] */
+static int whole(const char *opt, const char *v, double lo, double hi, long *out)
+{
+    double x = 0;
+    if (positive(opt, v, lo, hi, &x))
+        return 2;
+    if (x != floor(x))
+        return die(2, "%s needs a whole number, got '%s'", opt, v);
+    *out = (long)x;
+    return 0;
+}
+
+static int positive(const char *opt, const char *v, double lo, double hi, double *out)
+{
+    double x;
+    if (!sbd_number(v, &x) || x < lo || x > hi)
+        return die(2, "%s needs a number from %g to %g, got '%s'", opt, lo, hi, v);
+    *out = x;
+    return 0;
+}
+
+/* "# Area : X" and the last row's value of one surfaceFieldValue table */
+static int read_deposit_table(const char *path, double *area, double *last, char *err, size_t n)
+{
+    FILE *f = fopen(path, "r");
+    if (!f)
+        return snprintf(err, n, "%s: cannot read (%s)", path, strerror(errno)), -1;
+    char line[1024];
+    int have_area = 0, rows = 0;
+    while (fgets(line, sizeof line, f)) {
+        double t, v;
+        if (sscanf(line, "# Area : %lf", area) == 1)
+            have_area = 1;
+        else if (line[0] != '#' && sscanf(line, "%lf %lf", &t, &v) == 2) {
+            *last = v;
+            rows++;
+        }
+    }
+    fclose(f);
+    if (!have_area || !(*area > 0) || !rows)
+        return snprintf(err, n, "%s: no '# Area' header or no row", path), -1;
+    return 0;
+}
+
+static int cmp_str(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
+
+/* the patches: postProcessing/deposit_<patch>/<time>/surfaceFieldValue*.dat (the last file in
+ * name order, the latest restart's), their sticks from every write's <patch>.post */
+static int load_patches(const options *o, patch *p, int *np)
+{
+    char pat[4096], err[1024];
+    glob_t g;
+    snprintf(pat, sizeof pat, "%s/postProcessing/deposit_*", o->case_dir);
+    if (glob(pat, 0, NULL, &g) || g.gl_pathc == 0)
+        return die(1, "%s: no deposit tables (postProcessing/deposit_<patch>): did the snow run finish?",
+                   o->case_dir);
+    if (g.gl_pathc > NPATCH) {
+        globfree(&g);
+        return die(1, "%s: more than %d deposit tables", o->case_dir, NPATCH);
+    }
+    *np = 0;
+    for (size_t k = 0; k < g.gl_pathc; k++) {
+        patch *q = &p[(*np)++];
+        memset(q, 0, sizeof *q);
+        const char *base = strrchr(g.gl_pathv[k], '/') + 1 + strlen("deposit_");
+        snprintf(q->name, sizeof q->name, "%s", base);
+        glob_t t;
+        snprintf(pat, sizeof pat, "%s/*/surfaceFieldValue*.dat", g.gl_pathv[k]);
+        if (glob(pat, 0, NULL, &t) || t.gl_pathc == 0) {
+            globfree(&g);
+            return die(1, "%s: no surfaceFieldValue table", pat);
+        }
+        int rc = read_deposit_table(t.gl_pathv[t.gl_pathc - 1], &q->area, &q->deposit, err, sizeof err);
+        globfree(&t);
+        if (rc) {
+            globfree(&g);
+            return die(1, "%s", err);
+        }
+        snprintf(pat, sizeof pat, "%s/postProcessing/lagrangian/%s/snowWallSticks/*/%s.post", o->case_dir, o->cloud,
+                 q->name);
+        int grc = glob(pat, 0, NULL, &t);
+        if (grc == 0) {
+            qsort(t.gl_pathv, t.gl_pathc, sizeof *t.gl_pathv, cmp_str);
+            for (size_t i = 0; i < t.gl_pathc; i++)
+                if (sbd_sticks_read(&q->st, t.gl_pathv[i], err, sizeof err)) {
+                    globfree(&t);
+                    globfree(&g);
+                    return die(1, "%s", err);
+                }
+            globfree(&t);
+        } else if (grc != GLOB_NOMATCH) {
+            globfree(&g);
+            return die(1, "%s: cannot list the stick records", pat);
+        }
+        if (q->deposit > 0 && q->st.n == 0) {
+            globfree(&g);
+            return die(1, "patch %s holds %g kg of deposit but no stick records (%s): is it among stickRecords?",
+                       q->name, q->deposit, pat);
+        }
+    }
+    globfree(&g);
+    return 0;
+}
+
+static int find(const patch *p, int np, const char *name)
+{
+    for (int k = 0; k < np; k++)
+        if (!strcmp(p[k].name, name))
+            return k;
+    return -1;
+}
+
+/* "key = value" of results/flow.txt */
+static int flow_value(const char *path, const char *key, char *out, size_t n)
+{
+    FILE *f = fopen(path, "r");
+    if (!f)
+        return -1;
+    char line[1024], k[256], v[512];
+    int found = -1;
+    while (found && fgets(line, sizeof line, f))
+        if (sscanf(line, " %255s = %511s", k, v) == 2 && !strcmp(k, key) && strlen(v) < n) {
+            memcpy(out, v, strlen(v) + 1);
+            found = 0;
+        }
+    fclose(f);
+    return found;
+}
+
+static FILE *out_open(const char *name)
+{
+    char err[1024];
+    FILE *f = swo_open(g_set, name, err, sizeof err);
+    if (!f)
+        die(swo_code(g_set), "%s", err);
+    return f;
+}
+
+/* a gnuplot single-quoted string: a quote doubled */
+static void gp_quoted(FILE *f, const char *s)
+{
+    fputc('\'', f);
+    for (; *s; s++) {
+        if (*s == '\'')
+            fputc('\'', f);
+        fputc(*s, f);
+    }
+    fputc('\'', f);
+}
+
+static int run_gnuplot(const char *script)
+{
+    pid_t pid = fork();
+    if (pid < 0)
+        return -1;
+    if (pid == 0) {
+        execlp("gnuplot", "gnuplot", script, (char *)NULL);
+        _exit(127);
+    }
+    swo_signal_child(pid);
+    int st;
+    while (waitpid(pid, &st, 0) < 0)
+        if (errno != EINTR)
+            return -1;
+    swo_signal_child(0);
+    return WIFEXITED(st) && WEXITSTATUS(st) == 0 ? 0 : -1;
+}
+
+static const char usage_snow[] =
+"NAME\n"
+"    snowbody snow-post - the snow on the Ahmed body from a run's stick records\n"
+"\n"
+"SYNOPSIS\n"
+"    snowbody snow-post --case DIR --fill T --sample T --build-up S --out DIR\n"
+"                       [--flow FILE] [--ladder CSV] [--half-model] [--cloud NAME]\n"
+"                       [--speed U] [--parcels N] [--nozzles N] [--snow-seconds S]\n"
+"                       [--processes N] [--force]\n"
+"\n"
+"DESCRIPTION\n"
+"    Reads the snow run in DIR (tutorials/ahmed/snow): every body patch's deposit\n"
+"    table (postProcessing/deposit_<patch>/*/surfaceFieldValue*.dat: the patch's\n"
+"    area and the deposit field's integral) and its stick records\n"
+"    (postProcessing/lagrangian/<cloud>/snowWallSticks/*/<patch>.post). The\n"
+"    records must add up to the deposit field (relative difference below 1e-4,\n"
+"    else exit 1): no stick is missed.\n"
+"\n"
+"    The sticks of the counting window (T_fill, T_fill + T_sample] carry the\n"
+"    deposit of the exposure (--build-up seconds; the spray's mass was scaled\n"
+"    so). For every patch, for the rear face (ahmed_rear and ahmed_sensor\n"
+"    together) and for the sensor: the mass (whole body with --half-model: x 2),\n"
+"    the mass per area, the relative sampling error (the sticks grouped by the\n"
+"    injected parcel they descend from, whose copies under parcel splitting are\n"
+"    correlated: sqrt(sum of each origin's mass squared) / mass) and the halves'\n"
+"    z (a steady deposit gives |z| < 2 mostly). The sensor's and the rear face's\n"
+"    deposit against the exposure's minutes is the cumulative mass of the\n"
+"    window at %d equal steps. The rear-face map bins the window's sticks on\n"
+"    the rear face (mirrored about y = 0 with --half-model).\n"
+"\n"
+"    With --ladder (the resolution ladder: rows level, cells, seconds,\n"
+"    rear_kg_m2, rear_rel, sensor_kg_m2, sensor_rel measured on each mesh level\n"
+"    with the default snow) and --flow (results/flow.txt, its 'level'): the\n"
+"    mesh error of the run's level (the relative change to the next finer\n"
+"    level; the finest takes the change from the one below), the total error\n"
+"    sqrt(sampling^2 + mesh^2), the run against the ladder's value of its level\n"
+"    (z), and the error against run time of every level.\n"
+"\n"
+"OUTPUTS (in --out, a SnowWall output folder; written whole or not at all)\n"
+"    snow.md          the tables: per patch, the sensor against time, the errors\n"
+"    summary.txt      'key = value': the rear face's and the sensor's deposit,\n"
+"                     errors, halves' z, run time\n"
+"    deposit.csv      patch,area_m2,sticks,origins,mass_kg,kg_m2,rel_err,halves_z\n"
+"    sensor.csv       minutes,sensor_kg_m2,sensor_sd,rear_kg_m2,rear_sd\n"
+"    rear_map.csv     y_m,z_m,kg_m2 (bin centres)\n"
+"    error_time.csv   level,cells,seconds,quantity,sampling,mesh,total (--ladder)\n"
+"    rear_deposit.png the rear-face map with the sensor's outline (gnuplot)\n"
+"    sensor.png       the sensor and the rear face: kg/m2 against minutes, 2 sigma\n"
+"\n"
+"OPTIONS\n"
+"    --case DIR        the snow run's case folder\n"
+"    --fill T, --sample T  the counting window's start and length [s]\n"
+"    --build-up S      the exposure the window stands for [s] (1 .. 1e6)\n"
+"    --out DIR         the output folder (created; refused if it holds other\n"
+"                      files and no SnowWall marker, unless --force)\n"
+"    --flow FILE       the flow's results (level, cells, mesh_seconds,\n"
+"                      flow_seconds)\n"
+"    --ladder CSV      the resolution ladder (above)\n"
+"    --half-model      the mesh is the half body (a symmetry plane y = 0)\n"
+"    --cloud NAME      the cloud (default kinematicCloud)\n"
+"    --speed U, --parcels N, --nozzles N, --snow-seconds S, --processes N\n"
+"                      the run's settings and cost, for the tables\n"
+"    --force           write into a foreign --out folder\n"
+"    -h, --help        this text\n"
+"\n"
+"EXIT STATUS\n"
+"    0 written; 2 a usage error or refused --out; 1 unreadable or inconsistent\n"
+"    records, a failed write or gnuplot. One line on standard error.\n";
+
+int sbd_cmd_snow_post(int argc, char **argv)
+{
+    options o = {.cloud = "kinematicCloud", .speed = 0, .processes = 1};
+    int have[3] = {0, 0, 0};
+    for (int i = 2; i < argc; i++) {
+        const char *a = argv[i];
+        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
+            printf(usage_snow, MINUTES_STEPS);
+            return fflush(stdout) ? 1 : 0;
+        }
+        if (!strcmp(a, "--half-model")) { o.half = 1; continue; }
+        if (!strcmp(a, "--force")) { o.force = 1; continue; }
+        if (i + 1 >= argc)
+            return die(2, "option '%s' unknown or missing its value (see --help)", a);
+        const char *v = argv[++i];
+        if (!strcmp(a, "--case")) o.case_dir = v;
+        else if (!strcmp(a, "--out")) o.out = v;
+        else if (!strcmp(a, "--flow")) o.flow = v;
+        else if (!strcmp(a, "--ladder")) o.ladder = v;
+        else if (!strcmp(a, "--cloud")) o.cloud = v;
+        else if (!strcmp(a, "--fill")) { if (positive(a, v, 0, 1e6, &o.fill)) return 2; have[0] = 1; }
+        else if (!strcmp(a, "--sample")) { if (positive(a, v, 1e-9, 1e6, &o.sample)) return 2; have[1] = 1; }
+        else if (!strcmp(a, "--build-up")) { if (positive(a, v, 1, 1e6, &o.build_up)) return 2; have[2] = 1; }
+        else if (!strcmp(a, "--speed")) { if (positive(a, v, 1e-6, 1e4, &o.speed)) return 2; }
+        else if (!strcmp(a, "--snow-seconds")) { if (positive(a, v, 0, 1e9, &o.snow_seconds)) return 2; }
+        else if (!strcmp(a, "--parcels")) { if (whole(a, v, 1, 1e9, &o.parcels)) return 2; }
+        else if (!strcmp(a, "--nozzles")) { if (whole(a, v, 1, 1e6, &o.nozzles)) return 2; }
+        else if (!strcmp(a, "--processes")) { if (whole(a, v, 1, 1e6, &o.processes)) return 2; }
+        else
+            return die(2, "unknown option '%s' (see --help)", a);
+    }
+    if (!o.case_dir || !o.out || !have[0] || !have[1] || !have[2])
+        return die(2, "give --case, --fill, --sample, --build-up and --out (see --help)");
+    if (strpbrk(o.cloud, "/*?[") || !*o.cloud)
+        return die(2, "--cloud '%s' is not a cloud name", o.cloud);
+    if (strchr(o.out, '\n'))
+        return die(2, "--out: a folder name with a newline is refused");
+
+    /* the output folder checked before the work */
+    char err[2048];
+    swo_spec spec = {.tool = "snowbody snow-post", .dir = o.out, .force = o.force, .parents = 1};
+    int rc = swo_alloc(&spec, &g_set, err, sizeof err);
+    if (rc)
+        return die(rc, "%s", err);
+    if (swo_note(g_set))
+        fprintf(stderr, "snowbody: snow-post: note: %s\n", swo_note(g_set));
+    swo_signals_on();
+
+    /* the ladder and the run's level */
+    sbd_ladder lad;
+    int have_ladder = 0, krow = -1;
+    char level[64] = "", cells[64] = "", ms[64] = "", fs[64] = "";
+    if (o.flow) {
+        if (flow_value(o.flow, "level", level, sizeof level))
+            return die(1, "--flow %s: no 'level = ...' line", o.flow);
+        flow_value(o.flow, "cells", cells, sizeof cells);
+        flow_value(o.flow, "mesh_seconds", ms, sizeof ms);
+        flow_value(o.flow, "flow_seconds", fs, sizeof fs);
+    }
+    if (o.ladder) {
+        if (sbd_ladder_read(o.ladder, &lad, err, sizeof err))
+            return die(1, "--ladder: %s", err);
+        have_ladder = 1;
+        krow = level[0] ? sbd_ladder_find(&lad, level) : -1;
+    }
+
+    patch p[NPATCH];
+    int np = 0;
+    memset(p, 0, sizeof p);
+    if ((rc = load_patches(&o, p, &np)))
+        goto done;
+    const int kr = find(p, np, "ahmed_rear"), ks = find(p, np, "ahmed_sensor");
+    if (kr < 0 || ks < 0) {
+        rc = die(1, "%s: no deposit table of ahmed_rear or ahmed_sensor", o.case_dir);
+        goto done;
+    }
+    const double t0 = o.fill, t1 = o.fill + o.sample, mult = o.half ? 2 : 1;
+    /* every patch: the records against the deposit field, the window */
+    for (int k = 0; k < np; k++) {
+        double all = 0;
+        for (size_t i = 0; i < p[k].st.n; i++)
+            all += p[k].st.s[i].mass;
+        const double ref = fmax(fabs(p[k].deposit), 1e-300);
+        if (fabs(all - p[k].deposit) > 1e-4 * ref && fabs(all - p[k].deposit) > 1e-15) {
+            rc = die(1, "patch %s: the stick records add up to %.8g kg, the deposit field to %.8g kg", p[k].name, all,
+                     p[k].deposit);
+            goto done;
+        }
+        if (sbd_window(p[k].st.s, p[k].st.n, t0, t1, &p[k].w)) {
+            rc = die(1, "out of memory");
+            goto done;
+        }
+    }
+    /* the rear face: ahmed_rear and ahmed_sensor together */
+    sbd_sticks rear = {0};
+    {
+        const size_t n = p[kr].st.n + p[ks].st.n;
+        rear.s = malloc((n ? n : 1) * sizeof *rear.s);
+        if (!rear.s) {
+            rc = die(1, "out of memory");
+            goto done;
+        }
+        memcpy(rear.s, p[kr].st.s, p[kr].st.n * sizeof *rear.s);
+        memcpy(rear.s + p[kr].st.n, p[ks].st.s, p[ks].st.n * sizeof *rear.s);
+        rear.n = rear.cap = n;
+    }
+    sbd_window_stat wr, ws = p[ks].w;
+    sbd_window(rear.s, rear.n, t0, t1, &wr);
+    const double area_r = p[kr].area + p[ks].area, area_s = p[ks].area;
+    const double q_val[2] = {wr.mass / area_r, ws.mass / area_s};
+    const double q_rel[2] = {wr.mass > 0 ? sqrt(wr.var) / wr.mass : 1, ws.mass > 0 ? sqrt(ws.var) / ws.mass : 1};
+    const char *q_name[2] = {"rear face", "sensor"};
+    const double minutes = o.build_up / 60;
+
+    /* deposit.csv */
+    FILE *f = out_open("deposit.csv");
+    if (!f) { rc = swo_code(g_set); goto free_rear; }
+    fprintf(f, "patch,area_m2,sticks,origins,mass_kg,kg_m2,rel_err,halves_z\n");
+    for (int k = 0; k < np; k++) {
+        const sbd_window_stat *w = &p[k].w;
+        fprintf(f, "%s,%.6g,%zu,%zu,%.6g,%.6g,%.4g,%.3f\n", p[k].name, p[k].area * mult, w->sticks, w->origins,
+                w->mass * mult, w->mass / p[k].area, w->mass > 0 ? sqrt(w->var) / w->mass : 0, sbd_halves_z(w));
+    }
+    fprintf(f, "rear_face,%.6g,%zu,%zu,%.6g,%.6g,%.4g,%.3f\n", area_r * mult, wr.sticks, wr.origins, wr.mass * mult,
+            q_val[0], q_rel[0], sbd_halves_z(&wr));
+
+    /* sensor.csv: the cumulative deposit against the exposure's minutes */
+    double cum[MINUTES_STEPS + 1][4];
+    for (int k = 0; k <= MINUTES_STEPS; k++) {
+        const double tk = t0 + o.sample * k / MINUTES_STEPS;
+        sbd_window_stat a = {0}, b = {0};
+        if (k > 0) {
+            sbd_window(p[ks].st.s, p[ks].st.n, t0, tk, &a);
+            sbd_window(rear.s, rear.n, t0, tk, &b);
+        }
+        cum[k][0] = a.mass / area_s;
+        cum[k][1] = sqrt(a.var) / area_s;
+        cum[k][2] = b.mass / area_r;
+        cum[k][3] = sqrt(b.var) / area_r;
+    }
+    if (!(f = out_open("sensor.csv"))) { rc = swo_code(g_set); goto free_rear; }
+    fprintf(f, "minutes,sensor_kg_m2,sensor_sd,rear_kg_m2,rear_sd\n");
+    for (int k = 0; k <= MINUTES_STEPS; k++)
+        fprintf(f, "%.4g,%.6g,%.4g,%.6g,%.4g\n", minutes * k / MINUTES_STEPS, cum[k][0], cum[k][1], cum[k][2],
+                cum[k][3]);
+
+    /* rear_map.csv: the rear face from the body's published dimensions */
+    sbd_params bp;
+    sbd_params_default(&bp);
+    const double ymax = bp.width / 2, z0 = bp.clearance, z1 = bp.clearance + bp.height;
+    const double ymin = o.half ? 0 : -ymax;
+    const int ny = o.half ? MAP_NY : 2 * MAP_NY;
+    double map[2 * MAP_NY * MAP_NZ];
+    size_t outside = 0;
+    sbd_map(rear.s, rear.n, t0, t1, 1, 2, ymin, ymax, ny, z0, z1, MAP_NZ, map, &outside);
+    if (outside)
+        fprintf(stderr, "snowbody: snow-post: note: %zu rear-face sticks outside the face's rectangle\n", outside);
+    if (!(f = out_open("rear_map.csv"))) { rc = swo_code(g_set); goto free_rear; }
+    fprintf(f, "y_m,z_m,kg_m2\n");
+    double map_max = 0;
+    const double dy = (ymax - ymin) / ny, dz = (z1 - z0) / MAP_NZ;
+    for (int j = 0; j < MAP_NZ; j++) {
+        for (int side = o.half ? -1 : 1; side <= 1; side += 2)
+            for (int i = 0; i < ny; i++) {
+                const int ii = side < 0 ? ny - 1 - i : i;   /* the mirror image first, from -W/2 */
+                const double y = ymin + (ii + 0.5) * dy;
+                fprintf(f, "%.5g,%.5g,%.6g\n", side < 0 ? -y : y, z0 + (j + 0.5) * dz, map[j * ny + ii]);
+                map_max = fmax(map_max, map[j * ny + ii]);
+            }
+    }
+
+    /* the errors */
+    double mesh[2] = {NAN, NAN}, noise[2] = {NAN, NAN}, total[2] = {NAN, NAN}, zlad[2] = {NAN, NAN};
+    if (have_ladder && krow >= 0)
+        for (int q = 0; q < 2; q++) {
+            mesh[q] = sbd_ladder_mesh_error(&lad, krow, q, &noise[q]);
+            total[q] = sqrt(q_rel[q] * q_rel[q] + mesh[q] * mesh[q]);
+            const sbd_ladder_row *r = &lad.row[krow];
+            const double sa = q_rel[q] * q_val[q], sb = r->rel[q] * r->value[q];
+            zlad[q] = (q_val[q] - r->value[q]) / sqrt(sa * sa + sb * sb);
+        }
+    const double run_seconds = atof(ms) + atof(fs) + o.snow_seconds;
+
+    /* error_time.csv */
+    if (have_ladder) {
+        if (!(f = out_open("error_time.csv"))) { rc = swo_code(g_set); goto free_rear; }
+        fprintf(f, "level,cells,seconds,quantity,sampling,mesh,total\n");
+        for (int k = 0; k < lad.n; k++)
+            for (int q = 0; q < 2; q++) {
+                const double m = sbd_ladder_mesh_error(&lad, k, q, NULL), s = lad.row[k].rel[q];
+                fprintf(f, "%s,%ld,%.0f,%s,%.4f,%.4f,%.4f\n", lad.row[k].level, lad.row[k].cells, lad.row[k].seconds,
+                        q ? "sensor" : "rear", s, m, sqrt(s * s + m * m));
+            }
+    }
+
+    /* summary.txt */
+    if (!(f = out_open("summary.txt"))) { rc = swo_code(g_set); goto free_rear; }
+    fprintf(f, "# snowbody snow-post: the deposit of %.4g min (the window %.6g .. %.6g s of the snow run)\n",
+            minutes, t0, t1);
+    fprintf(f, "level = %s\n", level[0] ? level : "-");
+    for (int q = 0; q < 2; q++) {
+        const char *k = q ? "sensor" : "rear";
+        const sbd_window_stat *w = q ? &ws : &wr;
+        fprintf(f, "%s_kg_m2 = %.6g\n%s_rel_sampling = %.4f\n%s_sticks = %zu\n%s_origins = %zu\n%s_halves_z = %.3f\n",
+                k, q_val[q], k, q_rel[q], k, w->sticks, k, w->origins, k, sbd_halves_z(w));
+        if (!isnan(mesh[q]))
+            fprintf(f, "%s_rel_mesh = %.4f\n%s_rel_total = %.4f\n%s_z_vs_ladder = %.2f\n", k, mesh[q], k, total[q], k,
+                    zlad[q]);
+    }
+    fprintf(f, "snow_seconds = %.0f\nrun_seconds = %.0f\n", o.snow_seconds, run_seconds);
+
+    /* snow.md */
+    if (!(f = out_open("snow.md"))) { rc = swo_code(g_set); goto free_rear; }
+    fprintf(f, "# Snow on the square-back Ahmed body\n\n");
+    fprintf(f, "%s level%s%s cells; the snow at %.5g m/s, %ld parcels per nozzle x %ld nozzles, "
+               "%ld process(es); the deposit of %.4g min of spray (the sticks of %.6g .. %.6g s). "
+               "Masses are of the whole body%s.\n\n",
+            level[0] ? level : "(unknown)", cells[0] ? ", " : "", cells, o.speed, o.parcels, o.nozzles, o.processes,
+            minutes, t0, t1, o.half ? " (the half model's x 2)" : "");
+    fprintf(f, "## Deposit per patch\n\n| patch | area [m²] | sticks | origins | deposit [g] | [kg/m²] | "
+               "sampling error | halves z |\n|---|---|---|---|---|---|---|---|\n");
+    for (int k = 0; k < np; k++) {
+        const sbd_window_stat *w = &p[k].w;
+        fprintf(f, "| %s | %.4g | %zu | %zu | %.4g | %.3g | %s%.0f %% | %.2f |\n", p[k].name, p[k].area * mult,
+                w->sticks, w->origins, 1e3 * w->mass * mult, w->mass / p[k].area, w->mass > 0 ? "" : "(none) ",
+                w->mass > 0 ? 100 * sqrt(w->var) / w->mass : 0, sbd_halves_z(w));
+    }
+    fprintf(f, "| **rear face** (rear + sensor) | %.4g | %zu | %zu | %.4g | %.3g | %.0f %% | %.2f |\n\n",
+            area_r * mult, wr.sticks, wr.origins, 1e3 * wr.mass * mult, q_val[0], 100 * q_rel[0],
+            sbd_halves_z(&wr));
+    fprintf(f, "Sampling error: 1 sigma, the sticks grouped by the injected parcel they descend from. "
+               "Halves z: the window's second half against its first, in sigmas (|z| < 2 for a steady deposit "
+               "in 95 %% of runs).\n\n");
+    fprintf(f, "## The sensor against time\n\n| minutes | sensor [kg/m²] | ± 1 sigma | rear face [kg/m²] | "
+               "± 1 sigma |\n|---|---|---|---|---|\n");
+    for (int k = 0; k <= MINUTES_STEPS; k += MINUTES_STEPS / 6)
+        fprintf(f, "| %.3g | %.3g | %.2g | %.3g | %.2g |\n", minutes * k / MINUTES_STEPS, cum[k][0], cum[k][1],
+                cum[k][2], cum[k][3]);
+    fprintf(f, "\n(sensor.csv: every %.3g min; sensor.png)\n\n## The error\n\n", minutes / MINUTES_STEPS);
+    if (!have_ladder)
+        fprintf(f, "No resolution ladder given: the sampling error only.\n\n");
+    else if (krow < 0)
+        fprintf(f, "The level '%s' is not on the resolution ladder (%s): its mesh error is not known; the "
+                   "sampling error only.\n\n", level[0] ? level : "-", o.ladder);
+    fprintf(f, "| quantity | 30-min deposit [kg/m²] | sampling | mesh | total | vs the ladder's %s |\n"
+               "|---|---|---|---|---|---|\n", krow >= 0 ? level : "level");
+    for (int q = 0; q < 2; q++) {
+        if (isnan(mesh[q]))
+            fprintf(f, "| %s | %.3g | %.0f %% | – | ≥ %.0f %% | – |\n", q_name[q], q_val[q], 100 * q_rel[q],
+                    100 * q_rel[q]);
+        else
+            fprintf(f, "| %s | %.3g | %.0f %% | %.0f %% (noise %.0f %%) | %.0f %% | z = %.2f |\n", q_name[q], q_val[q],
+                    100 * q_rel[q], 100 * mesh[q], 100 * noise[q], 100 * total[q], zlad[q]);
+    }
+    fprintf(f, "\nMesh: the relative change to the next finer level of the ladder (the finest level: from the "
+               "one below); noise: the sampling error of that change (a mesh error below it is not resolved). "
+               "Total: the root sum of squares.\n\n");
+    if (have_ladder) {
+        fprintf(f, "### The error against run time (%s)\n\n| level | cells | run time [min] | rear: sampling | mesh | "
+                   "total | sensor: sampling | mesh | total |\n|---|---|---|---|---|---|---|---|---|\n", o.ladder);
+        for (int k = 0; k < lad.n; k++) {
+            const sbd_ladder_row *r = &lad.row[k];
+            fprintf(f, "| %s | %ld | %.1f", r->level, r->cells, r->seconds / 60);
+            for (int q = 0; q < 2; q++) {
+                const double m = sbd_ladder_mesh_error(&lad, k, q, NULL);
+                fprintf(f, " | %.0f %% | %.0f %% | %.0f %%", 100 * r->rel[q], 100 * m,
+                        100 * sqrt(r->rel[q] * r->rel[q] + m * m));
+            }
+            fprintf(f, " |\n");
+        }
+        fprintf(f, "| this run (%s) | %s | %.1f | %.0f %% | | | %.0f %% | | |\n\n", level[0] ? level : "-",
+                cells[0] ? cells : "-", run_seconds / 60, 100 * q_rel[0], 100 * q_rel[1]);
+    }
+
+    /* the pictures: one gnuplot script, its PNGs written to the set's temporaries */
+    {
+        const char *png_map = swo_add(g_set, "rear_deposit.png", err, sizeof err);
+        const char *png_sensor = png_map ? swo_add(g_set, "sensor.png", err, sizeof err) : NULL;
+        const char *csv_map = swo_final(g_set, "rear_map.csv");
+        (void)csv_map;
+        char script[4096];
+        snprintf(script, sizeof script, "%s/.tmp-snow-post-%ld.gp", o.out, (long)getpid());
+        FILE *g = png_sensor ? fopen(script, "w") : NULL;
+        if (!g) {
+            rc = die(png_sensor ? 1 : swo_code(g_set), "%s", png_sensor ? "cannot write the gnuplot script" : err);
+            goto free_rear;
+        }
+        swo_signal_scratch(script);
+        /* the data inline (the set's files are not final yet) */
+        fprintf(g, "set terminal pngcairo size 900,700 font 'sans,11'\nset output ");
+        gp_quoted(g, png_map);
+        fprintf(g, "\n$map << EOD\n");
+        for (int j = 0; j < MAP_NZ; j++)
+            for (int side = o.half ? -1 : 1; side <= 1; side += 2)
+                for (int i = 0; i < ny; i++) {
+                    const int ii = side < 0 ? ny - 1 - i : i;
+                    const double y = ymin + (ii + 0.5) * dy;
+                    fprintf(g, "%.5g %.5g %.6g\n", side < 0 ? -y : y, z0 + (j + 0.5) * dz, map[j * ny + ii]);
+                }
+        fprintf(g, "EOD\n");
+        fprintf(g, "set title \"Snow on the rear face, %.3g min (%s level; kg/m^2)\"\n", minutes,
+                level[0] ? level : "?");
+        fprintf(g, "set xlabel 'y [m]'\nset ylabel 'z [m]'\nset size ratio -1\nset xrange [%g:%g]\nset yrange [%g:%g]\n",
+                -ymax, ymax, z0, z1);
+        fprintf(g, "set cblabel 'kg/m^2'\nset cbrange [0:%g]\nset palette defined (0 'white', 1 '#9ecae1', 2 '#3182bd', "
+                   "3 '#08306b')\n", map_max > 0 ? map_max : 1);
+        fprintf(g, "set object 1 rect from %g,%g to %g,%g front fillstyle empty border lc rgb 'red' lw 2\n",
+                bp.sensor_y - bp.sensor_width / 2, bp.sensor_z - bp.sensor_height / 2,
+                bp.sensor_y + bp.sensor_width / 2, bp.sensor_z + bp.sensor_height / 2);
+        fprintf(g, "set label 1 'sensor' at %g,%g front tc rgb 'red'\n", bp.sensor_y + bp.sensor_width / 2 + 0.005,
+                bp.sensor_z);
+        fprintf(g, "plot $map using 1:2:3 with image notitle\n");
+        fprintf(g, "set output\nunset object 1\nunset label 1\nset size noratio\nset autoscale\nset output ");
+        gp_quoted(g, png_sensor);
+        fprintf(g, "\n$cum << EOD\n");
+        for (int k = 0; k <= MINUTES_STEPS; k++)
+            fprintf(g, "%.5g %.6g %.6g %.6g %.6g\n", minutes * k / MINUTES_STEPS, cum[k][0], cum[k][1], cum[k][2],
+                    cum[k][3]);
+        fprintf(g, "EOD\nset title \"Deposit against time (%s level; band: 2 sigma of sampling)\"\n",
+                level[0] ? level : "?");
+        fprintf(g, "set xlabel 'minutes of spray'\nset ylabel 'kg/m^2'\nset key top left\nset grid\n"
+                   "set style fill transparent solid 0.25 noborder\n");
+        fprintf(g, "plot $cum using 1:($2-2*$3 > 0 ? $2-2*$3 : 0):($2+2*$3) with filledcurves lc rgb '#e6550d' notitle, "
+                   "$cum using 1:2 with lines lw 2 lc rgb '#e6550d' title 'sensor', "
+                   "$cum using 1:($4-2*$5 > 0 ? $4-2*$5 : 0):($4+2*$5) with filledcurves lc rgb '#3182bd' notitle, "
+                   "$cum using 1:4 with lines lw 2 lc rgb '#3182bd' title 'rear face (mean)'\n");
+        fprintf(g, "set output\n");
+        int bad = fclose(g);
+        int grc = bad ? -1 : run_gnuplot(script);
+        remove(script);
+        swo_signal_scratch(NULL);
+        if (grc) {
+            rc = die(1, "gnuplot failed on the pictures (is gnuplot with pngcairo installed?)");
+            goto free_rear;
+        }
+    }
+
+    if ((rc = swo_commit(g_set, err, sizeof err))) {
+        rc = die(rc, "%s", err);
+        goto free_rear;
+    }
+    printf("sensor: %.3g kg/m2 in %.4g min, sampling %.0f %%%s; rear face %.3g kg/m2, sampling %.0f %%; written to %s/\n",
+           q_val[1], minutes, 100 * q_rel[1], "", q_val[0], 100 * q_rel[0], o.out);
+    rc = 0;
+free_rear:
+    sbd_sticks_free(&rear);
+done:
+    for (int k = 0; k < np; k++)
+        sbd_sticks_free(&p[k].st);
+    swo_free(g_set);
+    g_set = NULL;
+    return rc;
+}
