@@ -460,6 +460,18 @@ int sbd_cmd_snow_post(int argc, char **argv)
             }
     }
 
+    /* the half model's symmetry plane: the rear face's deposit per area within 5 mm of it
+       against the rest of the face (1 for a deposit that does not see the plane) */
+    double strip_ratio = NAN;
+    if (o.half) {
+        double m_in = 0, m_out = 0;
+        for (size_t i = 0; i < rear.n; i++)
+            if (rear.s[i].t > t0 && rear.s[i].t <= t1)
+                *(rear.s[i].x[1] < 0.005 ? &m_in : &m_out) += rear.s[i].mass;
+        if (m_out > 0)
+            strip_ratio = (m_in / 0.005) / (m_out / (ymax - 0.005));
+    }
+
     /* the errors */
     double mesh[2] = {NAN, NAN}, noise[2] = {NAN, NAN}, total[2] = {NAN, NAN}, zlad[2] = {NAN, NAN};
     if (have_ladder && krow >= 0)
@@ -498,6 +510,8 @@ int sbd_cmd_snow_post(int argc, char **argv)
             fprintf(f, "%s_rel_mesh = %.4f\n%s_rel_total = %.4f\n%s_z_vs_ladder = %.2f\n", k, mesh[q], k, total[q], k,
                     zlad[q]);
     }
+    if (!isnan(strip_ratio))
+        fprintf(f, "rear_symmetry_strip_ratio = %.3f\n", strip_ratio);
     fprintf(f, "snow_seconds = %.0f\nrun_seconds = %.0f\n", o.snow_seconds, run_seconds);
 
     /* snow.md */
@@ -519,6 +533,9 @@ int sbd_cmd_snow_post(int argc, char **argv)
     fprintf(f, "| **rear face** (rear + sensor) | %.4g | %zu | %zu | %.4g | %.3g | %.0f %% | %.2f |\n\n",
             area_r * mult, wr.sticks, wr.origins, 1e3 * wr.mass * mult, q_val[0], 100 * q_rel[0],
             sbd_halves_z(&wr));
+    if (!isnan(strip_ratio))
+        fprintf(f, "Half model: the rear face's deposit per area within 5 mm of the symmetry plane is %.2f times "
+                   "the rest of the face's (near 1 when the plane does not bias the deposit).\n\n", strip_ratio);
     fprintf(f, "Sampling error: 1 sigma, the sticks grouped by the injected parcel they descend from. "
                "Halves z: the window's second half against its first, in sigmas (|z| < 2 for a steady deposit "
                "in 95 %% of runs).\n\n");

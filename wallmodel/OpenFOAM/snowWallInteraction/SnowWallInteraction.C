@@ -18,6 +18,8 @@ Description
 #include "fvMesh.H"
 #include "Time.H"
 #include "wallPolyPatch.H"
+#include "symmetryPlanePolyPatch.H"
+#include "symmetryPolyPatch.H"
 #include "regionModel.H"
 #include "snowMachineLimits.H"
 #include "OStringStream.H"

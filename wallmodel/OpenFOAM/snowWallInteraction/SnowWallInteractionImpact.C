@@ -130,6 +130,16 @@ bool Foam::SnowWallInteraction<CloudType>::correct
             }
             U -= patchData_[groupi].mu()*Ut;
             U += Up;
+            // On a symmetry plane the parcel that comes back is the mirror
+            // image's: its turbulent fluctuation is mirrored too. Kept as it
+            // was (as OpenFOAM's reflection does), a fluctuation pointing into
+            // the plane drives the parcel back against it for the rest of its
+            // eddy's life: parcels gather in the plane's first cells.
+            if (isA<symmetryPlanePolyPatch>(pp) || isA<symmetryPolyPatch>(pp))
+            {
+                vector& uTurb = p.UTurb();
+                uTurb -= 2*(uTurb & nw)*nw;
+            }
             return true;
         }
         case PatchInteractionModel<CloudType>::itStick:
