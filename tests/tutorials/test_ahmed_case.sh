@@ -81,6 +81,7 @@ check "results/flow.md states the published Cd" grep -q '| published Cd, square 
 sr=$c/results/snow
 sl=$c/snow/log.snow
 check "the snow run's flow scaled to 19.444 m/s" grep -q '^Frozen flow: U, phi x 0.32406' "$sl"
+check "the snow's cost estimated before the run (1050 parcels)" grep -q 'snow: estimate: 1050 parcels, at most .* GB of memory' "$tmp/allrun.log"
 check "k by the square of the scale" grep -q '^Frozen flow: k x 0.10501' "$sl"
 check "omega and nut by the scale" bash -c "grep -q '^Frozen flow: omega x 0.32406' '$sl' && grep -q '^Frozen flow: nut x 0.32406' '$sl'"
 check "every body patch has a deposit table" bash -c "[ \$(ls -d '$c'/snow/postProcessing/deposit_ahmed_* | wc -l) = 7 ]"

@@ -268,6 +268,8 @@ static const char usage_snow[] =
 "    error_time.csv   level,cells,seconds,quantity,sampling,mesh,total (--ladder)\n"
 "    rear_deposit.png the rear-face map with the sensor's outline (gnuplot)\n"
 "    sensor.png       the sensor and the rear face: kg/m2 against minutes, 2 sigma\n"
+"    error_time.png   the ladder's total and sampling errors against run time\n"
+"                     (--ladder)\n"
 "\n"
 "OPTIONS\n"
 "    --case DIR        the snow run's case folder\n"
@@ -564,7 +566,7 @@ int sbd_cmd_snow_post(int argc, char **argv)
                "one below); noise: the sampling error of that change (a mesh error below it is not resolved). "
                "Total: the root sum of squares.\n\n");
     if (have_ladder) {
-        fprintf(f, "### The error against run time (%s)\n\n| level | cells | run time [min] | rear: sampling | mesh | "
+        fprintf(f, "### The error against run time (%s)\n\n| level | cells | run time [CPU min] | rear: sampling | mesh | "
                    "total | sensor: sampling | mesh | total |\n|---|---|---|---|---|---|---|---|---|\n", o.ladder);
         for (int k = 0; k < lad.n; k++) {
             const sbd_ladder_row *r = &lad.row[k];
@@ -576,7 +578,7 @@ int sbd_cmd_snow_post(int argc, char **argv)
             }
             fprintf(f, " |\n");
         }
-        fprintf(f, "| this run (%s) | %s | %.1f | %.0f %% | | | %.0f %% | | |\n\n", level[0] ? level : "-",
+        fprintf(f, "| this run (%s; wall clock) | %s | %.1f | %.0f %% | | | %.0f %% | | |\n\n", level[0] ? level : "-",
                 cells[0] ? cells : "-", run_seconds / 60, 100 * q_rel[0], 100 * q_rel[1]);
     }
 
@@ -584,8 +586,9 @@ int sbd_cmd_snow_post(int argc, char **argv)
     {
         const char *png_map = swo_add(g_set, "rear_deposit.png", err, sizeof err);
         const char *png_sensor = png_map ? swo_add(g_set, "sensor.png", err, sizeof err) : NULL;
-        const char *csv_map = swo_final(g_set, "rear_map.csv");
-        (void)csv_map;
+        const char *png_err = (png_sensor && have_ladder) ? swo_add(g_set, "error_time.png", err, sizeof err) : NULL;
+        if (png_sensor && have_ladder && !png_err)
+            png_sensor = NULL;   /* the failure is reported below */
         char script[4096];
         snprintf(script, sizeof script, "%s/.tmp-snow-post-%ld.gp", o.out, (long)getpid());
         FILE *g = png_sensor ? fopen(script, "w") : NULL;
@@ -633,6 +636,28 @@ int sbd_cmd_snow_post(int argc, char **argv)
                    "$cum using 1:($4-2*$5 > 0 ? $4-2*$5 : 0):($4+2*$5) with filledcurves lc rgb '#3182bd' notitle, "
                    "$cum using 1:4 with lines lw 2 lc rgb '#3182bd' title 'rear face (mean)'\n");
         fprintf(g, "set output\n");
+        if (png_err) {   /* the ladder's total error against its run time, log-log */
+            fprintf(g, "unset style\nset style fill solid\nset output ");
+            gp_quoted(g, png_err);
+            fprintf(g, "\n$err << EOD\n");
+            for (int k = 0; k < lad.n; k++) {
+                const sbd_ladder_row *r = &lad.row[k];
+                fprintf(g, "%.6g", r->seconds / 60);
+                for (int q = 0; q < 2; q++) {
+                    const double m = sbd_ladder_mesh_error(&lad, k, q, NULL);
+                    fprintf(g, " %.6g %.6g", 100 * sqrt(r->rel[q] * r->rel[q] + m * m), 100 * r->rel[q]);
+                }
+                fprintf(g, " %s\n", r->level);
+            }
+            fprintf(g, "EOD\nset title \"Error of the 30-min deposit against run time (the resolution ladder)\"\n"
+                       "set xlabel 'run time: mesh, flow and snow [CPU min]'\nset ylabel 'error [%%]'\n"
+                       "set logscale xy\nset key top right\nset grid\nset xrange [*:*]\nset yrange [*:*]\n");
+            fprintf(g, "plot $err using 1:2 with linespoints lw 2 pt 7 lc rgb '#3182bd' title 'rear face, total', "
+                       "$err using 1:3 with linespoints dt 2 pt 6 lc rgb '#3182bd' title 'rear face, sampling', "
+                       "$err using 1:4 with linespoints lw 2 pt 7 lc rgb '#e6550d' title 'sensor, total', "
+                       "$err using 1:5 with linespoints dt 2 pt 6 lc rgb '#e6550d' title 'sensor, sampling', "
+                       "$err using 1:4:6 with labels offset 0,1 notitle\nset output\n");
+        }
         int bad = fclose(g);
         int grc = bad ? -1 : run_gnuplot(script);
         remove(script);
