@@ -483,6 +483,8 @@ int sbd_cmd_snow_post(int argc, char **argv)
             const sbd_ladder_row *r = &lad.row[krow];
             const double sa = q_rel[q] * q_val[q], sb = r->rel[q] * r->value[q];
             zlad[q] = (q_val[q] - r->value[q]) / sqrt(sa * sa + sb * sb);
+            if (fabs(zlad[q]) < 0.005)
+                zlad[q] = 0;   /* printed as 0.00, not -0.00 */
         }
     const double run_seconds = atof(ms) + atof(fs) + o.snow_seconds;
 
