@@ -43,6 +43,18 @@ for bad in "-bogus" "-iterations 5" "-iterations x" "-parallel 0" "-test -fine" 
     rc=$?
     check "Allrun $bad refused (exit $rc)" [ "$rc" = 2 ]
 done
+# a bad constant/snowProperties is refused before any work, naming the entry
+sp=$c/constant/snowProperties
+cp "$sp" "$tmp/snowProperties"
+for edit in 's/^sprayRate .*/sprayRate -1;/:sprayRate' 's/^speed .*/speed nan;/:speed' \
+            's/^parcelsPerNozzle .*/parcelsPerNozzle 1e999;/:out of range' 's/^fillTime .*/fillTime 0.4;/:whole multiple'; do
+    sed -i "${edit%%:*}" "$sp"
+    SNOWWALL_TOP="$top" "$c/Allrun" -test > "$tmp/refuse.log" 2>&1
+    rc=$?
+    check "constant/snowProperties '${edit%%:*}' refused (exit $rc): $(head -c 120 "$tmp/refuse.log")" \
+        bash -c "[ $rc = 2 ] && grep -q '${edit#*:}' '$tmp/refuse.log'"
+    cp "$tmp/snowProperties" "$sp"
+done
 check "Allrun --help" bash -c "SNOWWALL_TOP='$top' '$c/Allrun' --help | grep -q '^Usage: tutorials/ahmed/Allrun'"
 check "nothing written by the refusals" bash -c "[ \$(cd '$c' && find . -type f | wc -l) = \$(wc -l < '$tmp/tracked') ]"
 
