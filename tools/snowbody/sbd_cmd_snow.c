@@ -37,6 +37,7 @@ typedef struct {
 } options;
 
 static swo_set *g_set;   /* freed by die() */
+static int g_out_rc;     /* the exit status of the last failed out_open() */
 
 static int die(int code, const char *fmt, ...)
 {
@@ -186,7 +187,7 @@ static FILE *out_open(const char *name)
     char err[1024];
     FILE *f = swo_open(g_set, name, err, sizeof err);
     if (!f)
-        die(swo_code(g_set), "%s", err);
+        g_out_rc = die(swo_code(g_set), "%s", err);
     return f;
 }
 
@@ -407,7 +408,7 @@ int sbd_cmd_snow_post(int argc, char **argv)
 
     /* deposit.csv */
     FILE *f = out_open("deposit.csv");
-    if (!f) { rc = swo_code(g_set); goto free_rear; }
+    if (!f) { rc = g_out_rc; goto free_rear; }
     fprintf(f, "patch,area_m2,sticks,origins,mass_kg,kg_m2,rel_err,halves_z\n");
     for (int k = 0; k < np; k++) {
         const sbd_window_stat *w = &p[k].w;
@@ -431,7 +432,7 @@ int sbd_cmd_snow_post(int argc, char **argv)
         cum[k][2] = b.mass / area_r;
         cum[k][3] = sqrt(b.var) / area_r;
     }
-    if (!(f = out_open("sensor.csv"))) { rc = swo_code(g_set); goto free_rear; }
+    if (!(f = out_open("sensor.csv"))) { rc = g_out_rc; goto free_rear; }
     fprintf(f, "minutes,sensor_kg_m2,sensor_sd,rear_kg_m2,rear_sd\n");
     for (int k = 0; k <= MINUTES_STEPS; k++)
         fprintf(f, "%.4g,%.6g,%.4g,%.6g,%.4g\n", minutes * k / MINUTES_STEPS, cum[k][0], cum[k][1], cum[k][2],
@@ -448,7 +449,7 @@ int sbd_cmd_snow_post(int argc, char **argv)
     sbd_map(rear.s, rear.n, t0, t1, 1, 2, ymin, ymax, ny, z0, z1, MAP_NZ, map, &outside);
     if (outside)
         fprintf(stderr, "snowbody: snow-post: note: %zu rear-face sticks outside the face's rectangle\n", outside);
-    if (!(f = out_open("rear_map.csv"))) { rc = swo_code(g_set); goto free_rear; }
+    if (!(f = out_open("rear_map.csv"))) { rc = g_out_rc; goto free_rear; }
     fprintf(f, "y_m,z_m,kg_m2\n");
     double map_max = 0;
     const double dy = (ymax - ymin) / ny, dz = (z1 - z0) / MAP_NZ;
@@ -490,7 +491,7 @@ int sbd_cmd_snow_post(int argc, char **argv)
 
     /* error_time.csv */
     if (have_ladder) {
-        if (!(f = out_open("error_time.csv"))) { rc = swo_code(g_set); goto free_rear; }
+        if (!(f = out_open("error_time.csv"))) { rc = g_out_rc; goto free_rear; }
         fprintf(f, "level,cells,seconds,quantity,sampling,mesh,total\n");
         for (int k = 0; k < lad.n; k++)
             for (int q = 0; q < 2; q++) {
@@ -501,7 +502,7 @@ int sbd_cmd_snow_post(int argc, char **argv)
     }
 
     /* summary.txt */
-    if (!(f = out_open("summary.txt"))) { rc = swo_code(g_set); goto free_rear; }
+    if (!(f = out_open("summary.txt"))) { rc = g_out_rc; goto free_rear; }
     fprintf(f, "# snowbody snow-post: the deposit of %.4g min (the window %.6g .. %.6g s of the snow run)\n",
             minutes, t0, t1);
     fprintf(f, "level = %s\n", level[0] ? level : "-");
@@ -519,7 +520,7 @@ int sbd_cmd_snow_post(int argc, char **argv)
     fprintf(f, "snow_seconds = %.0f\nrun_seconds = %.0f\n", o.snow_seconds, run_seconds);
 
     /* snow.md */
-    if (!(f = out_open("snow.md"))) { rc = swo_code(g_set); goto free_rear; }
+    if (!(f = out_open("snow.md"))) { rc = g_out_rc; goto free_rear; }
     fprintf(f, "# Snow on the square-back Ahmed body\n\n");
     fprintf(f, "%s level%s%s cells; the snow at %.5g m/s, %ld parcels per nozzle x %ld nozzles, "
                "%ld process(es); the deposit of %.4g min of spray (the sticks of %.6g .. %.6g s). "
