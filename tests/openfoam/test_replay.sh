@@ -11,8 +11,9 @@
 #    the library, started again from its last write, the same flow to 1e-9 as a run
 #    never stopped; a late start without store, and a stored snapshot missing, refused;
 #    a FIFO, a link or a file in the library's place refused before any step;
-#  - -checkpoint: every step written when it is due, the flow unchanged; 0, -1 and
-#    nan refused;
+#  - -checkpoint: every step written when it is due, the flow unchanged; 0, -1,
+#    nan and 1e999 refused; -speedScale's bad factors and its use without -frozen
+#    refused;
 #  - memory: a mesh whose library (100 000 snapshots of U and p) is about twice the
 #    machine's MemAvailable: refused with the estimate before the first step, in seconds.
 # About 15 s.
@@ -233,12 +234,22 @@ n=$(cd "$c" && ls -d 0.0* | wc -l)
 grep -q '^Checkpoint: a write whenever [0-9.e-]* s of wall clock' "$c/log.run" || fail "checkpoint: not announced"
 u_ascii "$c" 0.06 > "$tmp/u.ckpt"
 cmp -s "$tmp/u.whole" "$tmp/u.ckpt" || fail "checkpoint: U at 0.06 s is not the run's without checkpoints"
-for v in 0 -1 nan inf abc 5s; do
+for v in 0 -1 nan inf abc 5s 1e999; do
     (cd "$c" && "$solver" -replay -checkpoint "$v" > log.bad 2>&1) && fail "checkpoint $v: accepted"
     grep -q -- "-checkpoint: a positive number of seconds of wall clock, got $v" "$c/log.bad" ||
         { tail -5 "$c/log.bad" >&2; fail "checkpoint $v: no named error"; }
 done
-echo "checkpoint: every step written, U at 0.06 s unchanged; 0, -1, nan, inf, abc, 5s refused"
+echo "checkpoint: every step written, U at 0.06 s unchanged; 0, -1, nan, inf, abc, 5s, 1e999 refused"
+# -speedScale (with -frozen only): a factor in [0.001, 1000]; 1e999 refused by name, not
+# by the overflow trap
+for v in 0 -1 nan 1e999 2000 abc; do
+    (cd "$c" && "$solver" -frozen -speedScale "$v" > log.bad 2>&1) && fail "speedScale $v: accepted"
+    grep -q -- "-speedScale: a factor from 0.001 to 1000, got $v" "$c/log.bad" ||
+        { tail -5 "$c/log.bad" >&2; fail "speedScale $v: no named error"; }
+done
+(cd "$c" && "$solver" -speedScale 0.5 > log.bad 2>&1) && fail "speedScale without -frozen: accepted"
+grep -q -- "-speedScale scales the held flow: give -frozen too" "$c/log.bad" || fail "speedScale without -frozen: no named error"
+echo "speedScale: 0, -1, nan, 1e999, 2000, abc and no -frozen refused"
 
 # 3. memory: 100 000 snapshots of U and p (32 bytes a cell) on a mesh whose library is
 # about twice MemAvailable: refused at once, with the estimate

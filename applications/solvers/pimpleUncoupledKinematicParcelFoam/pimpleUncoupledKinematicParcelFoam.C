@@ -74,6 +74,7 @@ Usage
 #include "fvOptions.H"
 #include "basicKinematicCloud.H"
 #include "flowReplay.H"
+#include <cfenv>
 #include <chrono>
 #include <cstdlib>
 #include <string>
@@ -138,8 +139,14 @@ int main(int argc, char *argv[])
     // without a word); false if the text is not one
     const auto positiveNumber = [](const std::string& txt, scalar& out)
     {
+        // strtod in non-stop mode: an overflowing text (1e999) must not
+        // raise the overflow trap OpenFOAM has set; it is refused below
         char* end = nullptr;
+        std::fenv_t env;
+        std::feholdexcept(&env);
         const double v = std::strtod(txt.c_str(), &end);
+        std::feclearexcept(FE_ALL_EXCEPT);
+        std::fesetenv(&env);
         const bool whole = !txt.empty() && end && *end == '\0';
         if (!whole || !std::isfinite(v) || v <= 0)
         {
