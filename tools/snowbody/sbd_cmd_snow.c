@@ -52,7 +52,15 @@ static int die(int code, const char *fmt, ...)
     return code;
 }
 
-static int positive(const char *opt, const char *v, double lo, double hi, double *out);
+static int positive(const char *opt, const char *v, double lo, double hi, double *out)
+{
+    double x;
+    if (!sbd_number(v, &x) || x < lo || x > hi)
+        return die(2, "%s needs a number from %g to %g, got '%s'", opt, lo, hi, v);
+    *out = x;
+    return 0;
+}
+
 /* a whole number in [lo, hi] */
 static int whole(const char *opt, const char *v, double lo, double hi, long *out)
 {
@@ -62,15 +70,6 @@ static int whole(const char *opt, const char *v, double lo, double hi, long *out
     if (x != floor(x))
         return die(2, "%s needs a whole number, got '%s'", opt, v);
     *out = (long)x;
-    return 0;
-}
-
-static int positive(const char *opt, const char *v, double lo, double hi, double *out)
-{
-    double x;
-    if (!sbd_number(v, &x) || x < lo || x > hi)
-        return die(2, "%s needs a number from %g to %g, got '%s'", opt, lo, hi, v);
-    *out = x;
     return 0;
 }
 
@@ -219,6 +218,29 @@ static int run_gnuplot(const char *script)
             return -1;
     swo_signal_child(0);
     return WIFEXITED(st) && WEXITSTATUS(st) == 0 ? 0 : -1;
+}
+
+/* the rear-face map's bins as rows "y SEP z SEP kg/m2" (bin centres, z upwards), with a
+ * half model's mirror image first (from -W/2); returns the largest value */
+typedef struct {
+    const double *map;  /* row-major, ny bins along y per row */
+    int ny;
+    double y0, dy, z0, dz;
+    int mirror;
+} map_grid;
+
+static double map_rows(FILE *f, char sep, const map_grid *g)
+{
+    double max = 0;
+    for (int j = 0; j < MAP_NZ; j++)
+        for (int side = g->mirror ? -1 : 1; side <= 1; side += 2)
+            for (int i = 0; i < g->ny; i++) {
+                const int ii = side < 0 ? g->ny - 1 - i : i;
+                const double y = g->y0 + (ii + 0.5) * g->dy, v = g->map[j * g->ny + ii];
+                fprintf(f, "%.5g%c%.5g%c%.6g\n", side < 0 ? -y : y, sep, g->z0 + (j + 0.5) * g->dz, sep, v);
+                max = fmax(max, v);
+            }
+    return max;
 }
 
 static const char usage_snow[] =
@@ -451,17 +473,8 @@ int sbd_cmd_snow_post(int argc, char **argv)
         fprintf(stderr, "snowbody: snow-post: note: %zu rear-face sticks outside the face's rectangle\n", outside);
     if (!(f = out_open("rear_map.csv"))) { rc = g_out_rc; goto free_rear; }
     fprintf(f, "y_m,z_m,kg_m2\n");
-    double map_max = 0;
-    const double dy = (ymax - ymin) / ny, dz = (z1 - z0) / MAP_NZ;
-    for (int j = 0; j < MAP_NZ; j++) {
-        for (int side = o.half ? -1 : 1; side <= 1; side += 2)
-            for (int i = 0; i < ny; i++) {
-                const int ii = side < 0 ? ny - 1 - i : i;   /* the mirror image first, from -W/2 */
-                const double y = ymin + (ii + 0.5) * dy;
-                fprintf(f, "%.5g,%.5g,%.6g\n", side < 0 ? -y : y, z0 + (j + 0.5) * dz, map[j * ny + ii]);
-                map_max = fmax(map_max, map[j * ny + ii]);
-            }
-    }
+    const map_grid grid = {map, ny, ymin, (ymax - ymin) / ny, z0, (z1 - z0) / MAP_NZ, o.half};
+    const double map_max = map_rows(f, ',', &grid);
 
     /* the half model's symmetry plane: the rear face's deposit per area within 5 mm of it
        against the rest of the face (1 for a deposit that does not see the plane) */
@@ -495,9 +508,9 @@ int sbd_cmd_snow_post(int argc, char **argv)
         fprintf(f, "level,cells,seconds,quantity,sampling,mesh,total\n");
         for (int k = 0; k < lad.n; k++)
             for (int q = 0; q < 2; q++) {
-                const double m = sbd_ladder_mesh_error(&lad, k, q, NULL), s = lad.row[k].rel[q];
                 fprintf(f, "%s,%ld,%.0f,%s,%.4f,%.4f,%.4f\n", lad.row[k].level, lad.row[k].cells, lad.row[k].seconds,
-                        q ? "sensor" : "rear", s, m, sqrt(s * s + m * m));
+                        q ? "sensor" : "rear", lad.row[k].rel[q], sbd_ladder_mesh_error(&lad, k, q, NULL),
+                        sbd_ladder_total(&lad, k, q));
             }
     }
 
@@ -575,9 +588,8 @@ int sbd_cmd_snow_post(int argc, char **argv)
             const sbd_ladder_row *r = &lad.row[k];
             fprintf(f, "| %s | %ld | %.1f", r->level, r->cells, r->seconds / 60);
             for (int q = 0; q < 2; q++) {
-                const double m = sbd_ladder_mesh_error(&lad, k, q, NULL);
-                fprintf(f, " | %.0f %% | %.0f %% | %.0f %%", 100 * r->rel[q], 100 * m,
-                        100 * sqrt(r->rel[q] * r->rel[q] + m * m));
+                fprintf(f, " | %.0f %% | %.0f %% | %.0f %%", 100 * r->rel[q],
+                        100 * sbd_ladder_mesh_error(&lad, k, q, NULL), 100 * sbd_ladder_total(&lad, k, q));
             }
             fprintf(f, " |\n");
         }
@@ -604,13 +616,7 @@ int sbd_cmd_snow_post(int argc, char **argv)
         fprintf(g, "set terminal pngcairo size 900,700 font 'sans,11'\nset output ");
         gp_quoted(g, png_map);
         fprintf(g, "\n$map << EOD\n");
-        for (int j = 0; j < MAP_NZ; j++)
-            for (int side = o.half ? -1 : 1; side <= 1; side += 2)
-                for (int i = 0; i < ny; i++) {
-                    const int ii = side < 0 ? ny - 1 - i : i;
-                    const double y = ymin + (ii + 0.5) * dy;
-                    fprintf(g, "%.5g %.5g %.6g\n", side < 0 ? -y : y, z0 + (j + 0.5) * dz, map[j * ny + ii]);
-                }
+        map_rows(g, ' ', &grid);
         fprintf(g, "EOD\n");
         fprintf(g, "set title \"Snow on the rear face, %.3g min (%s level; kg/m^2)\"\n", minutes,
                 level[0] ? level : "?");
@@ -646,10 +652,8 @@ int sbd_cmd_snow_post(int argc, char **argv)
             for (int k = 0; k < lad.n; k++) {
                 const sbd_ladder_row *r = &lad.row[k];
                 fprintf(g, "%.6g", r->seconds / 60);
-                for (int q = 0; q < 2; q++) {
-                    const double m = sbd_ladder_mesh_error(&lad, k, q, NULL);
-                    fprintf(g, " %.6g %.6g", 100 * sqrt(r->rel[q] * r->rel[q] + m * m), 100 * r->rel[q]);
-                }
+                for (int q = 0; q < 2; q++)
+                    fprintf(g, " %.6g %.6g", 100 * sbd_ladder_total(&lad, k, q), 100 * r->rel[q]);
                 fprintf(g, " %s\n", r->level);
             }
             fprintf(g, "EOD\nset title \"Error of the 30-min deposit against run time (the resolution ladder)\"\n"

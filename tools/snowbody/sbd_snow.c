@@ -37,7 +37,6 @@ int sbd_number(const char *tok, double *v)
     fesetenv(&env);
     return end != tok && *end == '\0' && !range && isfinite(*v);
 }
-#define number sbd_number
 
 /* ---- the stick records -------------------------------------------------------- */
 enum { C_T, C_X, C_Y, C_Z, C_PROC, C_ID, C_NP, C_D, C_RHO, C_N };
@@ -97,7 +96,7 @@ int sbd_sticks_read(sbd_sticks *st, const char *path, char *err, size_t errlen)
         }
         double v[C_N];
         for (int c = 0; c < C_N; c++)
-            if (!number(tok[col[c]], &v[c])) {
+            if (!sbd_number(tok[col[c]], &v[c])) {
                 fclose(f);
                 return fail(err, errlen, "%s:%ld: %s '%s' is not a finite number", path, lineno, col_name[c],
                             tok[col[c]]);
@@ -280,7 +279,7 @@ int sbd_ladder_read(const char *path, sbd_ladder *l, char *err, size_t errlen)
                         path, lineno, fld[0]);
         }
         for (int k = 0; k < 6; k++)
-            if (!number(fld[k + 1], &v[k]) || !(v[k] > 0)) {
+            if (!sbd_number(fld[k + 1], &v[k]) || !(v[k] > 0)) {
                 fclose(f);
                 return fail(err, errlen, "%s:%ld: field %d '%s' is not a positive finite number", path, lineno,
                             k + 2, fld[k + 1]);
@@ -327,4 +326,10 @@ double sbd_ladder_mesh_error(const sbd_ladder *l, int k, int q, double *noise)
     if (noise)
         *noise = sqrt(l->row[a].rel[q] * l->row[a].rel[q] + l->row[b].rel[q] * l->row[b].rel[q]);
     return fabs(*va / *vb - 1);
+}
+
+double sbd_ladder_total(const sbd_ladder *l, int k, int q)
+{
+    const double s = l->row[k].rel[q], m = sbd_ladder_mesh_error(l, k, q, NULL);
+    return sqrt(s * s + m * m);
 }

@@ -109,5 +109,7 @@ int sbd_ladder_find(const sbd_ladder *l, const char *level);
  * |v_k-1 / v_k - 1|); *noise gets the sampling error of that ratio,
  * sqrt(rel_k^2 + rel_k+1^2) (a mesh error below it is not resolved) */
 double sbd_ladder_mesh_error(const sbd_ladder *l, int k, int q, double *noise);
+/* the total error of row k for quantity q: sqrt(rel^2 + mesh error^2) */
+double sbd_ladder_total(const sbd_ladder *l, int k, int q);
 
 #endif
