@@ -40,6 +40,26 @@ double swp_wrms_plus(double yplus)
     return rms_fit(yplus, 0.19, 1, 0.0361, 1.21);
 }
 
+/* d/dy+ of a y / (1 + b y^p) (the m = 1 fits) */
+static double rms_fit1_deriv(double yplus, double a, double b, double p)
+{
+    if (bad(yplus))
+        return NAN;
+    const double bp = b * pow(yplus, p);
+    const double den = 1.0 + bp;
+    return a * (1.0 + bp - p * bp) / (den * den);
+}
+
+double swp_durms_plus(double yplus)
+{
+    return rms_fit1_deriv(yplus, 0.4, 0.0239, 1.496);
+}
+
+double swp_dwrms_plus(double yplus)
+{
+    return rms_fit1_deriv(yplus, 0.19, 0.0361, 1.21);
+}
+
 double swp_dvrms_plus(double yplus)
 {
     if (bad(yplus))

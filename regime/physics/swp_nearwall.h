@@ -38,8 +38,11 @@ extern "C" {
 double swp_urms_plus(double yplus);
 double swp_vrms_plus(double yplus);
 double swp_wrms_plus(double yplus);
-/* d v'+ / d y+ (exact derivative of swp_vrms_plus). */
+/* d u'+ / d y+, d v'+ / d y+, d w'+ / d y+: the exact derivatives of the
+ * three fits (the drift of the random walk needs the gradient of each). */
+double swp_durms_plus(double yplus);
 double swp_dvrms_plus(double yplus);
+double swp_dwrms_plus(double yplus);
 /* Lagrangian integral time scale of the fluid, T_L+(y+). */
 double swp_tl_plus(double yplus);
 /* Reichardt's mean velocity u+(y+) and its derivative du+/dy+. */

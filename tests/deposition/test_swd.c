@@ -2,6 +2,7 @@
  * wall-layer formulas (regime/physics/swp_nearwall.h) and the 1-D channel
  * (tools/snowdeposit/swc_channel.h). */
 #include <math.h>
+#include <stdint.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -90,7 +91,7 @@ static void settings(void **s)
     assert_int_equal(swd_commit(m), SWD_EINVAL);
     assert_non_null(strstr(swd_errmsg(m), "blendYPlus"));
     assert_false(swd_ready(m));
-    swd_local at = { 1e-4, 0.5, 1.5e-5, 0.1, 1.0 };
+    swd_local at = { .y = 1e-4, .u_tau = 0.5, .nu = 1.5e-5, .k = 0.1, .eps = 1.0 };
     double w[3] = { 0, 0, 0 }, xi[3] = { 0, 0, 0 };
     assert_int_equal(swd_advance(m, &at, 1e-4, 1e-4, w, xi, NULL, NULL), SWD_ENOTREADY);
     assert_int_equal(swd_set(m, "blendYPlus", 120), SWD_OK);
@@ -108,12 +109,13 @@ static void statistics(void **s)
     swd_model *m = swd_alloc();
     const double nu = 1.5e-5, ut = 0.5;
     swd_stats st;
-    swd_local at = { 10 * nu / ut, ut, nu, 0.0, 0.0 };   /* y+ = 10, no k */
+    swd_local at = { .y = 10 * nu / ut, .u_tau = ut, .nu = nu };   /* y+ = 10, no k */
     assert_int_equal(swd_stats_at(m, &at, &st), SWD_OK);
     ASSERT_REL(st.yplus, 10.0, 1e-12);
     ASSERT_REL(st.sigma[1], ut * swp_vrms_plus(10.0), 1e-12);
     ASSERT_REL(st.tl, swp_tl_plus(10.0) * nu / (ut * ut), 1e-12);
-    ASSERT_REL(st.dsigma_n, swp_dvrms_plus(10.0) * ut * ut / nu, 1e-12);
+    ASSERT_REL(st.dsigma[1], swp_dvrms_plus(10.0) * ut * ut / nu, 1e-12);
+    assert_true(st.dsigma[0] == 0.0 && st.dsigma[2] == 0.0);   /* u_tau's layer: only y varies */
     assert_true(st.layer == 1.0);
     /* bulk: isotropic sqrt(2k/3), T_L = 0.3 k/eps */
     at.y = 1.0;
@@ -123,7 +125,7 @@ static void statistics(void **s)
     for (int i = 0; i < 3; i++)
         ASSERT_REL(st.sigma[i], sqrt(0.4), 1e-12);
     ASSERT_REL(st.tl, 0.3 * 0.6 / 2.0, 1e-12);
-    assert_true(st.layer == 0.0 && st.dsigma_n == 0.0);
+    assert_true(st.layer == 0.0 && st.dsigma[1] == 0.0);   /* k uniform: no drift */
     /* no wall */
     at.y = -1;
     assert_int_equal(swd_stats_at(m, &at, &st), SWD_OK);
@@ -157,7 +159,8 @@ static void statistics(void **s)
     assert_int_equal(swd_scale_of("max"), SWD_USTAR_MAX);
     assert_int_equal(swd_scale_of("Max"), -1);
     assert_int_equal(swd_scale_of(NULL), -1);
-    assert_null(swd_scale_name(3));
+    assert_string_equal(swd_scale_name(3), "wallCell");
+    assert_null(swd_scale_name(4));
     assert_int_equal(swd_set_scale(m, -1), SWD_EINVAL);
     assert_non_null(strstr(swd_errmsg(m), "-1"));
     assert_int_equal(swd_get_scale(m), SWD_USTAR_TURBULENCE);
@@ -194,7 +197,7 @@ static void statistics(void **s)
         for (size_t b = 0; b < 6; b++)
             for (size_t c = 0; c < 5; c++)
                 for (size_t e = 0; e < 5; e++) {
-                    swd_local x = { ys[a], uts[b], 1e-5, ks[c], ks[e] };
+                    swd_local x = { .y = ys[a], .u_tau = uts[b], .nu = 1e-5, .k = ks[c], .eps = ks[e] };
                     double w[3] = { 1, -2, 3 }, xi[3] = { 0.5, -0.5, 1.0 }, kick[3];
                     assert_int_equal(swd_advance(m, &x, 1e-4, 1e-5, w, xi, kick, &st), SWD_OK);
                     for (int i = 0; i < 3; i++)
@@ -238,22 +241,27 @@ static void wall_frame(void **s)
 }
 
 /* One step against its closed form: w <- a w + sqrt(1 - a^2) xi (+ drift) and
- * the kick sigma w (1 - exp(-dt/tau_p)). */
+ * the kick sigma w (1 - exp(-dt/tau_p)) with the new w. */
 static void one_step(void **s)
 {
     (void)s;
     swd_model *m = swd_alloc();
     const double nu = 1.5e-5, ut = 0.5, dt = 2e-5, tp = 1e-4;
-    swd_local at = { 8 * nu / ut, ut, nu, 0, 0 };
+    swd_local at = { .y = 8 * nu / ut, .u_tau = ut, .nu = nu };
     swd_stats st;
     swd_stats_at(m, &at, &st);
     double w[3] = { 0.3, -0.7, 1.1 }, w0[3] = { 0.3, -0.7, 1.1 }, xi[3] = { 0.2, 0.4, -0.6 }, kick[3];
     assert_int_equal(swd_advance(m, &at, dt, tp, w, xi, kick, NULL), SWD_OK);
     const double a = exp(-dt / st.tl);
     for (int i = 0; i < 3; i++) {
-        ASSERT_REL(kick[i], st.sigma[i] * w0[i] * (1 - exp(-dt / tp)), 1e-12);
-        const double want = a * w0[i] + sqrt(1 - a * a) * xi[i] + (i == 1 ? (1 - a) * st.tl * st.dsigma_n : 0);
+        const double want = a * w0[i] + sqrt(1 - a * a) * xi[i] + (1 - a) * st.tl * st.dsigma[i];
         ASSERT_REL(w[i], want, 1e-12);
+        /* sigma at the coming step's midpoint (k uniform here: y alone moves) */
+        swd_local mid = at;
+        mid.y = at.y + 0.5 * st.sigma[1] * w[1] * dt;
+        swd_stats sm;
+        swd_stats_at(m, &mid, &sm);
+        ASSERT_REL(kick[i], sm.sigma[i] * w[i] * (1 - exp(-dt / tp)), 1e-12);
     }
     /* a bad step leaves w alone */
     double keep[3] = { w[0], w[1], w[2] };
@@ -369,7 +377,7 @@ static void closure_table(void **s)
     assert_true(swd_closure_vs(m, 0.01) == 1e-6 && swd_closure_vs(m, 100) == 0.0);
     /* the rate inside the sublayer only */
     const double nu = 1.5e-5, ut = 0.5, tp = 1.0 * nu / (ut * ut);   /* tau+ = 1 */
-    swd_local at = { 5 * nu / ut, ut, nu, 0, 0 };
+    swd_local at = { .y = 5 * nu / ut, .u_tau = ut, .nu = nu };
     swd_stats st;
     swd_stats_at(m, &at, &st);
     ASSERT_REL(swd_deposit_rate(m, &st, nu, tp), 1e-4 * ut * ut / (10 * nu), 1e-9);
@@ -381,6 +389,159 @@ static void closure_table(void **s)
     assert_int_equal(swd_commit(m), SWD_EINVAL);
     swd_closure_off(m);
     assert_int_equal(swd_commit(m), SWD_OK);
+    swd_free(m);
+}
+
+/* sigma_i at x = x0 + h e_j of a place whose k varies linearly (gradient g in
+ * the wall frame) and whose wall distance is y0 + x_1 */
+
+static double sigma_at(const swd_model *m, const swd_local *at0, int i, int j, double h)
+{
+    swd_local x = *at0;
+    x.k = at0->k + h * at0->grad_k[j];
+    if (j == 1)
+        x.y = at0->y + h;
+    swd_stats st;
+    assert_int_equal(swd_stats_at(m, &x, &st), SWD_OK);
+    return st.sigma[i];
+}
+
+/* The drift is the derivative of the same sigma that sets the noise: the
+ * model's d sigma_i / d x_i against central differences of sigma_i, in the
+ * sublayer, the buffer and log layer, the blend and the bulk, for every
+ * velocity scale (where u* follows the k at the particle, its change counts). */
+static void drift_is_the_gradient(void **s)
+{
+    (void)s;
+    swd_model *m = swd_alloc();
+    const double nu = 1.5e-5, ut = 0.3;
+    const double yps[] = { 0.5, 3.0, 20.0, 90.0, 120.0, 140.0, 400.0 };
+    for (int sc = SWD_USTAR_MAX; sc <= SWD_USTAR_WALLCELL; sc++) {
+        assert_int_equal(swd_set_scale(m, sc), SWD_OK);
+        assert_int_equal(swd_commit(m), SWD_OK);
+        for (size_t a = 0; a < sizeof yps / sizeof *yps; a++) {
+            /* k with u_k = 0.45 > u_tau (the k scale wins in max), rising
+               away from the wall and varying along it */
+            swd_local at = { .y = yps[a] * nu / 0.45, .u_tau = ut, .nu = nu, .k = 0.45 * 0.45 / 0.3,
+                             .eps = 5.0, .grad_k = { 40.0, 300.0, -25.0 }, .k_wall = 0.5 };
+            swd_stats st;
+            assert_int_equal(swd_stats_at(m, &at, &st), SWD_OK);
+            for (int i = 0; i < 3; i++) {
+                const double h = 1e-4 * at.y;
+                const double fd = (sigma_at(m, &at, i, i, h) - sigma_at(m, &at, i, i, -h)) / (2 * h);
+                const double scale_ = fabs(fd) + 1e-3 * st.sigma[i] / at.y;
+                if (fabs(st.dsigma[i] - fd) > 1e-5 * scale_)
+                    fail_msg("scale %s y+ %g component %d: d sigma/dx %.9g, central difference %.9g",
+                             swd_scale_name(sc), st.yplus, i, st.dsigma[i], fd);
+            }
+        }
+    }
+    swd_free(m);
+}
+
+static uint64_t splitmix(uint64_t *x)
+{
+    uint64_t z = (*x += 0x9e3779b97f4a7c15ULL);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+}
+
+/* 1-D tracers between a reflecting wall (y = 0) and a mirror (y = H) in
+ * wall-bounded turbulence whose k rises linearly away from the wall, with u*
+ * from the k at the particle (the scale where the old walk piled tracers up
+ * next to the wall): the time-averaged share of the tracers in each y+ band
+ * over the band's share of the height. `grad` 0 gives the walk no gradient
+ * of k (the walk before the drift took u*'s change into account). */
+static void tracer_shares(const swd_model *m, int grad, double ratio[4])
+{
+    const double H = 400.0, nu = 1.0, k0 = 0.3 / 0.3, k1 = 1.2 / 0.3;   /* u_k^2 = 0.3 k */
+    const double dkdy = (k1 - k0) / H;
+    const double edges[5] = { 0.0, 5.0, 30.0, 100.0, 1e300 };
+    /* the band edges in y: y+ = y u*(y) / nu is monotonic */
+    double ye[5] = { 0.0, 0.0, 0.0, 0.0, H };
+    for (int b = 1; b < 4; b++) {
+        double lo = 0, hi = H;
+        for (int it = 0; it < 100; it++) {
+            const double mid = 0.5 * (lo + hi);
+            const double yp = mid * sqrt(0.3 * (k0 + dkdy * mid)) / nu;
+            if (yp < edges[b])
+                lo = mid;
+            else
+                hi = mid;
+        }
+        ye[b] = 0.5 * (lo + hi);
+    }
+    enum { N = 3000 };
+    static double y[N], w[N][3];
+    uint64_t st = 12345;
+    for (int i = 0; i < N; i++) {
+        y[i] = H * (i + 0.5) / N;
+        for (int c = 0; c < 3; c++)
+            w[i][c] = 0.0;
+    }
+    double occ[4] = { 0 }, tot = 0.0;
+    const double t_end = 6000.0, t_warm = 1000.0;
+    for (int i = 0; i < N; i++) {
+        double t = 0.0;
+        while (t < t_end) {
+            swd_local at = { .y = y[i], .u_tau = 0.0, .nu = nu, .k = k0 + dkdy * y[i] };
+            at.eps = pow(0.3 * at.k, 1.5) / (0.41 * fmax(y[i], 1.0));
+            at.grad_k[1] = grad ? dkdy : 0.0;
+            swd_stats s;
+            swd_stats_at(m, &at, &s);
+            const double dt = fmin(0.5 * s.tl, 8.0);   /* up to 2.4 t+ at the wall */
+            double xi[3];
+            for (int c = 0; c < 3; c++) {
+                /* Box-Muller from splitmix64: deterministic, no GSL needed */
+                const double u1 = (splitmix(&st) >> 11 | 1) / 9007199254740992.0;
+                const double u2 = (splitmix(&st) >> 11) / 9007199254740992.0;
+                xi[c] = sqrt(-2.0 * log(u1)) * cos(2.0 * M_PI * u2);
+            }
+            double kick[3];
+            swd_advance(m, &at, dt, 1e-9, w[i], xi, kick, &s);
+            if (t >= t_warm) {
+                int b = 0;
+                while (b < 3 && y[i] >= ye[b + 1])
+                    b++;
+                occ[b] += dt;
+                tot += dt;
+            }
+            y[i] += kick[1] * dt;   /* a tracer: the fluctuation's velocity */
+            if (y[i] < 0.0) {   /* the wall reflects the tracer and the fluid velocity it sees */
+                y[i] = -y[i];
+                w[i][1] = fabs(w[i][1]);
+            }
+            if (y[i] > H) {
+                y[i] = 2.0 * H - y[i];
+                w[i][1] = -fabs(w[i][1]);
+            }
+            t += dt;
+        }
+    }
+    for (int b = 0; b < 4; b++)
+        ratio[b] = (occ[b] / tot) / ((ye[b + 1] - ye[b]) / H);
+}
+
+/* Thomson's well-mixed condition in the wall layer: tracers released
+ * uniformly stay uniform in every y+ band (0-5, 5-30, 30-100, beyond) within
+ * 10 %, where u* changes with the particle's place; without the gradient of k
+ * (the walk whose drift took u* as fixed) they pile up at the wall. */
+static void well_mixed_1d(void **s)
+{
+    (void)s;
+    swd_model *m = swd_alloc();
+    assert_int_equal(swd_set_scale(m, SWD_USTAR_TURBULENCE), SWD_OK);
+    assert_int_equal(swd_commit(m), SWD_OK);
+    double r[4], r0[4];
+    tracer_shares(m, 1, r);
+    tracer_shares(m, 0, r0);
+    for (int b = 0; b < 4; b++)
+        if (fabs(r[b] - 1.0) > 0.1)
+            fail_msg("band %d: share %.3f of uniform (without the gradient: %.3f)", b, r[b], r0[b]);
+    printf("shares %.3f %.3f %.3f %.3f; without %.3f %.3f %.3f %.3f\n", r[0], r[1], r[2], r[3], r0[0], r0[1], r0[2], r0[3]);
+    if (!(r0[0] > 1.3))
+        fail_msg("without the gradient of k the wall band holds %.3f of uniform: the check cannot fail", r0[0]);
     swd_free(m);
 }
 
@@ -424,7 +585,8 @@ int main(void)
         cmocka_unit_test(settings),          cmocka_unit_test(statistics),
         cmocka_unit_test(one_step),          cmocka_unit_test(closure_table),
         cmocka_unit_test(closure_file),      cmocka_unit_test(wall_frame),
-        cmocka_unit_test(channel),
+        cmocka_unit_test(channel),           cmocka_unit_test(drift_is_the_gradient),
+        cmocka_unit_test(well_mixed_1d),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -73,12 +73,15 @@ typedef struct {
     double y, v, w[3];
 } particle;
 
-/* the bulk of a fully developed channel in wall units (see the header) */
-static void bulk(double yp, double h, double *k, double *eps)
+/* the bulk of a fully developed channel in wall units (see the header):
+   k, its wall-normal gradient (the walk's drift needs the gradient of the
+   same k) and eps at the particle */
+static void bulk(double yp, double h, swd_local *at)
 {
     const double f = 1.0 - 0.6 * yp / h;
-    *k = f / sqrt(0.09);
-    *eps = f / (SWP_KARMAN * fmax(yp, 1.0));
+    at->k = f / sqrt(0.09);
+    at->grad_k[1] = -0.6 / (h * sqrt(0.09));
+    at->eps = f / (SWP_KARMAN * fmax(yp, 1.0));
 }
 
 static void release(particle *q, const swd_model *m, double h, double rmin, gsl_rng *rng)
@@ -86,8 +89,8 @@ static void release(particle *q, const swd_model *m, double h, double rmin, gsl_
     q->y = rmin + (h - rmin) * gsl_rng_uniform_pos(rng);
     for (int i = 0; i < 3; i++)
         q->w[i] = gsl_ran_gaussian_ziggurat(rng, 1.0);
-    swd_local at = { q->y, 1.0, 1.0, 0.0, 0.0 };
-    bulk(q->y, h, &at.k, &at.eps);
+    swd_local at = { .y = q->y, .u_tau = 1.0, .nu = 1.0 };
+    bulk(q->y, h, &at);
     swd_stats s;
     swd_stats_at(m, &at, &s);
     q->v = s.sigma[1] * q->w[1];
@@ -127,8 +130,8 @@ int swc_run(const swd_model *m, const swc_params *p, swc_result *r, char *err, s
         particle *q = &ps[i];
         double t = 0.0;
         while (t < t_end) {
-            swd_local at = { q->y, 1.0, 1.0, 0.0, 0.0 };
-            bulk(q->y, h, &at.k, &at.eps);
+            swd_local at = { .y = q->y, .u_tau = 1.0, .nu = 1.0 };
+            bulk(q->y, h, &at);
             swd_stats s;
             swd_stats_at(m, &at, &s);
             double dt = p->dt_max;
@@ -138,18 +141,22 @@ int swc_run(const swd_model *m, const swc_params *p, swc_result *r, char *err, s
             dt = fmin(dt, t_end - t);
             if (!(dt > 0.0))
                 break;
-            const double vf = s.sigma[1] * q->w[1];
+            /* the fluctuation advanced first, then the particle moved with
+               it (the hosts' order: swd.h) */
+            double xi[3];
+            for (int c = 0; c < 3; c++)
+                xi[c] = gsl_ran_gaussian_ziggurat(rng, 1.0);
+            double kick[3];
+            swd_advance(m, &at, dt, tau, q->w, xi, kick, NULL);
             const double e = exp(-dt / tau), one_e = -expm1(-dt / tau);
+            /* the fluid's fluctuation over the step (sigma at its midpoint) */
+            const double vf = kick[1] / one_e;
             double ynew;
             if (p->scheme == SWC_EXACT)
                 ynew = q->y + vf * dt + (q->v - vf) * tau * one_e;
             else
                 ynew = q->y + q->v * dt;
             const double vnew = vf + (q->v - vf) * e;
-            double xi[3];
-            for (int c = 0; c < 3; c++)
-                xi[c] = gsl_ran_gaussian_ziggurat(rng, 1.0);
-            swd_advance(m, &at, dt, tau, q->w, xi, NULL, NULL);
             if (t >= p->t_warm) {
                 steps += 1.0;
                 tsum += dt;

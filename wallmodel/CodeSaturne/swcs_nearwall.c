@@ -250,7 +250,7 @@ void swcs_nearwall_force(cs_real_t dt_p, const cs_real_t taup[], cs_real_3_t fex
         if (c < 0) continue;
         if (cs_lagr_particles_get_flag(p_set, ip, CS_LAGR_PART_DEPOSITION_FLAGS)) continue;
         const double rho = cell_value(frho, c, ro0), mu = cell_value(fmu, c, mu0);
-        swd_local at;
+        swd_local at = { 0 };   /* the bulk drift: grad_k 0 (Code_Saturne gives no gradient here yet) */
         at.nu = mu / rho;
         at.k = fmax(fk->val[c], 0);
         at.eps = fmax(feps ? feps->val[c] : 0.09 * fk->val[c] * fomg->val[c], 0);

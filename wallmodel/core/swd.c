@@ -111,16 +111,16 @@ double swd_get(const swd_model *m, const char *key)
     return i < 0 ? NAN : m->v[i];
 }
 
-static const char *const scale_names[] = { "max", "wallShear", "turbulence" };
+static const char *const scale_names[] = { "max", "wallShear", "turbulence", "wallCell" };
 
 const char *swd_scale_name(int scale)
 {
-    return scale >= SWD_USTAR_MAX && scale <= SWD_USTAR_TURBULENCE ? scale_names[scale] : NULL;
+    return scale >= SWD_USTAR_MAX && scale <= SWD_USTAR_WALLCELL ? scale_names[scale] : NULL;
 }
 
 int swd_scale_of(const char *name)
 {
-    for (int i = SWD_USTAR_MAX; name && i <= SWD_USTAR_TURBULENCE; i++)
+    for (int i = SWD_USTAR_MAX; name && i <= SWD_USTAR_WALLCELL; i++)
         if (!strcmp(name, scale_names[i]))
             return i;
     return -1;
@@ -130,7 +130,7 @@ int swd_set_scale(swd_model *m, int scale)
 {
     if (!swd_scale_name(scale))
         return fail(m, SWD_EINVAL,
-                    "near-wall dispersion: velocity scale %d is not one of 0 (max), 1 (wallShear), 2 (turbulence)",
+                    "near-wall dispersion: velocity scale %d is not one of 0 (max), 1 (wallShear), 2 (turbulence), 3 (wallCell)",
                     scale);
     m->scale = scale;
     m->ready = 0;
@@ -169,10 +169,13 @@ void swd_describe(const swd_model *m, char *buf, size_t n)
         return;
     snprintf(buf, n,
              "continuous random walk: wall-layer statistics (v' Guha 1997, u', w', T_L Kallio & Reeks 1989) up to y+ %g, "
-             "isotropic sqrt(2k/3) with T_L = %g k/eps from y+ %g, u* = %s%g^(1/4) k^(1/2)%s",
+             "isotropic sqrt(2k/3) with T_L = %g k/eps from y+ %g, u* = %s%g^(1/4) k%s^(1/2)%s, "
+             "drift d sigma_i / d x_i (well mixed)",
              m->v[K_LAYER], m->v[K_CT], m->v[K_BLEND],
-             m->scale == SWD_USTAR_SHEAR ? "u_tau (not " : m->scale == SWD_USTAR_MAX ? "max(u_tau, " : "",
-             m->v[K_CMU], m->scale == SWD_USTAR_TURBULENCE ? " (not u_tau)" : ")");
+             m->scale == SWD_USTAR_SHEAR ? "u_tau (not "
+             : (m->scale == SWD_USTAR_MAX || m->scale == SWD_USTAR_WALLCELL) ? "max(u_tau, " : "",
+             m->v[K_CMU], m->scale == SWD_USTAR_WALLCELL ? "_wallcell" : "",
+             m->scale == SWD_USTAR_TURBULENCE ? " (not u_tau)" : ")");
 }
 
 void swd_wall_frame(const double n_out[3], const double u[3], double es[3], double en[3],
@@ -215,31 +218,51 @@ static int finite_pos(double x)
     return isfinite(x) && x > 0.0;
 }
 
+/* the isotropic bulk: sigma_i = sqrt(2k/3) in every direction, its
+   derivative along i from the gradient of k */
+static void bulk_stats(const swd_local *at, double s_iso, double tl_iso, swd_stats *out)
+{
+    for (int i = 0; i < 3; i++) {
+        out->sigma[i] = s_iso;
+        out->dsigma[i] = s_iso > 1e-300 ? at->grad_k[i] / (3.0 * s_iso) : 0.0;
+    }
+    out->tl = tl_iso;
+    out->layer = 0.0;
+}
+
 int swd_stats_at(const swd_model *m, const swd_local *at, swd_stats *out)
 {
     if (!swd_ready(m))
         return SWD_ENOTREADY;
     if (!isfinite(at->y) || !finite_nonneg(at->u_tau) || !finite_pos(at->nu)
-        || !finite_nonneg(at->k) || !finite_nonneg(at->eps))
+        || !finite_nonneg(at->k) || !finite_nonneg(at->eps) || !finite_nonneg(at->k_wall)
+        || !isfinite(at->grad_k[0]) || !isfinite(at->grad_k[1]) || !isfinite(at->grad_k[2]))
         return SWD_EINVAL;
 
     /* the isotropic RANS statistics (bulk) */
     const double s_iso = sqrt(2.0 * at->k / 3.0);
     const double tl_iso = (at->k > 0.0 && at->eps > 0.0) ? m->v[K_CT] * at->k / at->eps : INFINITY;
 
+    /* u* and its gradient (only a u* that follows the k at the particle
+       changes with the particle's place) */
     const double uk = m->cmu4 * sqrt(at->k);
-    const double ustar = m->scale == SWD_USTAR_SHEAR ? at->u_tau
-                         : m->scale == SWD_USTAR_TURBULENCE ? uk : fmax(at->u_tau, uk);
+    double ustar, dus[3] = { 0.0, 0.0, 0.0 };
+    int from_k = 0;
+    switch (m->scale) {
+    case SWD_USTAR_SHEAR: ustar = at->u_tau; break;
+    case SWD_USTAR_TURBULENCE: ustar = uk; from_k = 1; break;
+    case SWD_USTAR_WALLCELL: ustar = fmax(at->u_tau, m->cmu4 * sqrt(at->k_wall)); break;
+    default: ustar = fmax(at->u_tau, uk); from_k = uk > at->u_tau; break;
+    }
+    if (from_k && at->k > 0.0)
+        for (int j = 0; j < 3; j++)
+            dus[j] = 0.5 * uk / at->k * at->grad_k[j];
     out->ustar = ustar;
     /* below 1e-30 m/s there is no turbulence to speak of (and T_L = nu / u*^2
        would overflow) */
     if (at->y < 0.0 || !(ustar > 1e-30)) {
-        for (int i = 0; i < 3; i++)
-            out->sigma[i] = s_iso;
-        out->dsigma_n = 0.0;
-        out->tl = tl_iso;
+        bulk_stats(at, s_iso, tl_iso, out);
         out->yplus = at->y < 0.0 ? -1.0 : 0.0;
-        out->layer = 0.0;
         return SWD_OK;
     }
 
@@ -257,26 +280,27 @@ int swd_stats_at(const swd_model *m, const swd_local *at, swd_stats *out)
         wl = (yb - yp) / (yb - yl);
         dwl = -1.0 / (yb - yl);
     }
-    out->layer = wl;
     if (wl == 0.0) {
-        for (int i = 0; i < 3; i++)
-            out->sigma[i] = s_iso;
-        out->dsigma_n = 0.0;
-        out->tl = tl_iso;
+        bulk_stats(at, s_iso, tl_iso, out);
         return SWD_OK;
     }
+    out->layer = wl;
 
-    /* the wall layer in wall units, blended with the bulk */
-    const double yq = yp < yb ? yp : yb;
-    const double s_l[3] = { ustar * swp_urms_plus(yq), ustar * swp_vrms_plus(yq),
-                            ustar * swp_wrms_plus(yq) };
-    const double tl_l = swp_tl_plus(yq) * at->nu / (ustar * ustar);
-    for (int i = 0; i < 3; i++)
-        out->sigma[i] = wl * s_l[i] + (1.0 - wl) * s_iso;
-    /* d sigma_n / dy = (u*^2 / nu) d(sigma_n / u*) / dy+ */
-    const double ds_plus = wl * swp_dvrms_plus(yq) + dwl * (swp_vrms_plus(yq) - s_iso / ustar);
-    out->dsigma_n = ds_plus * ustar * ustar / at->nu;
-    out->tl = isinf(tl_iso) ? (wl > 0.0 ? tl_l : INFINITY) : wl * tl_l + (1.0 - wl) * tl_iso;
+    /* the wall layer in wall units, blended with the bulk:
+         sigma_i = wl(y+) u* f_i(y+) + (1 - wl(y+)) sqrt(2k/3),  y+ = y u* / nu,
+       and its derivative along x_j by the chain rule through y (j = 1 only),
+       u* and k */
+    const double f[3] = { swp_urms_plus(yp), swp_vrms_plus(yp), swp_wrms_plus(yp) };
+    const double df[3] = { swp_durms_plus(yp), swp_dvrms_plus(yp), swp_dwrms_plus(yp) };
+    const double tl_l = swp_tl_plus(yp) * at->nu / (ustar * ustar);
+    for (int i = 0; i < 3; i++) {
+        out->sigma[i] = wl * ustar * f[i] + (1.0 - wl) * s_iso;
+        const double dyp = ((i == 1 ? ustar : 0.0) + at->y * dus[i]) / at->nu;   /* d y+ / d x_i */
+        const double ds_iso = s_iso > 1e-300 ? at->grad_k[i] / (3.0 * s_iso) : 0.0;
+        out->dsigma[i] = (dwl * (ustar * f[i] - s_iso) + wl * ustar * df[i]) * dyp
+                         + wl * f[i] * dus[i] + (1.0 - wl) * ds_iso;
+    }
+    out->tl = isinf(tl_iso) ? tl_l : wl * tl_l + (1.0 - wl) * tl_iso;
     return SWD_OK;
 }
 
@@ -295,20 +319,45 @@ int swd_advance(const swd_model *m, const swd_local *at, double dt, double tau_p
     if (rc != SWD_OK)
         return rc;
 
-    if (kick) {
-        /* 1 - exp(-dt/tau_p) without cancellation for dt << tau_p */
-        const double f = -expm1(-dt / tau_p);
-        for (int i = 0; i < 3; i++)
-            kick[i] = s.sigma[i] * w[i] * f;
-    }
+    double wn[3] = { w[0], w[1], w[2] };
     if (isfinite(s.tl) && s.tl > 0.0) {
         const double r = dt / s.tl;
         const double a = exp(-r);
         const double b = sqrt(-expm1(-2.0 * r));   /* sqrt(1 - a^2) */
         const double one_a = -expm1(-r);            /* 1 - a */
+        for (int i = 0; i < 3; i++) {
+            /* the drift in w units over the step; bounded so that an extreme
+               gradient (k -> 0 with a finite dk/dx) cannot throw w to
+               infinity: 8 standard deviations is never reached by a
+               resolved gradient */
+            const double drift = fmax(-8.0, fmin(8.0, one_a * s.tl * s.dsigma[i]));
+            wn[i] = a * w[i] + b * xi[i] + (isfinite(drift) ? drift : 0.0);
+        }
+    }
+    for (int i = 0; i < 3; i++)
+        w[i] = wn[i];
+    if (kick) {
+        /* the fluctuation the particle sees over the coming step is sigma at
+           the step's midpoint, predicted with the fluid's own displacement
+           sigma w dt / 2 (along the wall normal for y, along every direction
+           for k): sigma taken at the start instead leaves a bias of the order
+           of (dt / T_L) (d ln sigma / d ln y)^2 that piles tracers up in the
+           buffer layer (20 % at dt = 1 t+, 60 % at 2.4 t+; doc/deposition.md) */
+        swd_local mid = *at;
+        double dx[3];
         for (int i = 0; i < 3; i++)
-            w[i] = a * w[i] + b * xi[i];
-        w[1] += one_a * s.tl * s.dsigma_n;
+            dx[i] = 0.5 * s.sigma[i] * w[i] * dt;
+        if (mid.y >= 0.0)
+            mid.y = fmax(0.0, mid.y + dx[1]);
+        mid.k = fmax(0.0, mid.k + mid.grad_k[0] * dx[0] + mid.grad_k[1] * dx[1] + mid.grad_k[2] * dx[2]);
+        swd_stats sm;
+        const double *sig = s.sigma;
+        if (isfinite(mid.y) && isfinite(mid.k) && swd_stats_at(m, &mid, &sm) == SWD_OK)
+            sig = sm.sigma;
+        /* 1 - exp(-dt/tau_p) without cancellation for dt << tau_p */
+        const double f = -expm1(-dt / tau_p);
+        for (int i = 0; i < 3; i++)
+            kick[i] = sig[i] * w[i] * f;
     }
     if (st)
         *st = s;

@@ -13,25 +13,37 @@
  *   y+ >= blendYPlus (or no wall): isotropic, sigma = sqrt(2k/3), T_L = CT k/eps
  *   in between:                 linear blend in y+
  * with u* = max(u_tau, Cmu^(1/4) sqrt(k)) (the friction velocity; the k-based
- * scale of wall functions where the wall shear stress vanishes, at separation
- * and reattachment) and y+ = y u* / nu. For a sensitivity study the scale can
- * be u_tau alone or Cmu^(1/4) sqrt(k) alone (swd_set_scale).
+ * scale of wall functions where the wall shear vanishes, at separation and
+ * reattachment) and y+ = y u* / nu. Other scales: u_tau alone,
+ * Cmu^(1/4) sqrt(k) alone, or max(u_tau, Cmu^(1/4) sqrt(k_wall)) with the k
+ * of the wall face's own cell, one value a face (swd_set_scale).
  *
  * The state of a particle is its normalized fluctuation w_i = u'_i / sigma_i
  * in the wall frame (0 streamwise, 1 wall-normal away from the wall, 2
- * spanwise), advanced by the normalized Langevin equation with the drift
- * correction that keeps tracers well mixed in inhomogeneous turbulence
- * (Thomson 1987; Iliopoulos & Hanratty 1999; Bocksell & Loth 2006; Dehbi 2008):
- *   dw_i = -w_i dt / T_L + sqrt(2 / T_L) dW_i + delta_i1 (d sigma_n / dy) dt,
- * integrated exactly over a step of constant coefficients:
- *   w_i <- a w_i + sqrt(1 - a^2) xi_i + delta_i1 (1 - a) T_L d sigma_n/dy,
+ * spanwise), advanced by the normalized Langevin equation whose drift keeps
+ * tracers well mixed in inhomogeneous turbulence (Thomson 1987; the
+ * normalized form of Wilson, Legg & Thomson 1983, exact for Gaussian
+ * turbulence with a diagonal stress; doc/deposition.md derives it):
+ *   dw_i = -w_i dt / T_L + sqrt(2 / T_L) dW_i + (d sigma_i / d x_i) dt,
+ * with d sigma_i / d x_i the whole derivative of the sigma_i that sets the
+ * noise along direction i: through the wall distance, through u* where u*
+ * follows the k at the particle, and through the bulk's sqrt(2k/3), from the
+ * gradient of k that the host gives (swd_local.grad_k; zero: k uniform).
+ * It is integrated exactly over a step of constant coefficients:
+ *   w_i <- a w_i + sqrt(1 - a^2) xi_i + (1 - a) T_L d sigma_i / d x_i,
  *   a = exp(-dt / T_L), xi_i standard normal numbers given by the host.
+ * The host moves the particle with the new fluctuation, sigma_i w_i at its
+ * place at the start of the next step (the kick below); at a wall that
+ * reflects the particle the host mirrors w too (w_n -> |w_n|), so that the
+ * fluid velocity it sees is reflected with it.
  *
  * Lifecycle (plain C11, no global state):
  *   swd_model *m = swd_alloc();
  *   swd_set(m, "layerYPlus", 100) ...     (optional; defaults below)
  *   swd_commit(m)                          (checks the settings together)
  *   swd_advance(m, &local, dt, tau_p, w, xi, kick)   per particle and step
+ *                                          (swd_local zero-initialised first:
+ *                                          fields added later read as 0)
  *   swd_free(m);
  * Set functions return SWD_OK or a negative SWD_E* code with the message in
  * swd_errmsg(m). swd_stats_at / swd_advance only read the model: thread-safe.
@@ -58,12 +70,18 @@ typedef struct {
     double nu;     /* kinematic viscosity of the fluid [m2/s], > 0               */
     double k;      /* modelled turbulent kinetic energy at the particle [m2/s2], >= 0 */
     double eps;    /* its dissipation rate [m2/s3], >= 0                         */
+    double grad_k[3]; /* the gradient of k at the particle [m/s2], in the frame of
+                      w (streamwise, wall-normal away from the wall, spanwise);
+                      the gradient of the same k field as k (the drift is only
+                      as consistent as the two); zeros: k uniform            */
+    double k_wall; /* k of the nearest wall face's own cell [m2/s2], >= 0: the
+                      scale SWD_USTAR_WALLCELL only                             */
 } swd_local;
 
 /* The statistics the particle sees there. */
 typedef struct {
     double sigma[3];  /* rms fluctuation [m/s]: streamwise, wall-normal, spanwise */
-    double dsigma_n;  /* d sigma_wall-normal / dy [1/s] (0 in the bulk)           */
+    double dsigma[3]; /* d sigma_i / d x_i [1/s]: the drift of component i        */
     double tl;        /* Lagrangian integral time scale [s] (INFINITY: frozen)    */
     double ustar;     /* velocity scale u* [m/s]                                  */
     double yplus;     /* y u* / nu (-1 without a wall)                            */
@@ -94,12 +112,16 @@ const char *swd_key(size_t i);
  *   SWD_USTAR_TURBULENCE  Cmu^(1/4) sqrt(k) alone (k at the particle: the
  *                         log layer's scale in a wall-function cell, small in
  *                         a resolved near-wall cell, where k falls as y^2)
+ *   SWD_USTAR_WALLCELL    max(u_tau, Cmu^(1/4) sqrt(k_wall)), k_wall the k of
+ *                         the wall face's cell: one u* a face, as wall
+ *                         functions take it (it does not change with the
+ *                         particle's place)
  * Another value is refused (SWD_EINVAL, the model unchanged). Makes the model
  * not ready until swd_commit, as every set does. */
-enum { SWD_USTAR_MAX = 0, SWD_USTAR_SHEAR = 1, SWD_USTAR_TURBULENCE = 2 };
+enum { SWD_USTAR_MAX = 0, SWD_USTAR_SHEAR = 1, SWD_USTAR_TURBULENCE = 2, SWD_USTAR_WALLCELL = 3 };
 int swd_set_scale(swd_model *m, int scale);
 int swd_get_scale(const swd_model *m);
-/* The name of a scale ("max", "wallShear", "turbulence"; NULL for another
+/* The name of a scale ("max", "wallShear", "turbulence", "wallCell"; NULL for another
  * value) and the scale of a name (-1 for another name). */
 const char *swd_scale_name(int scale);
 int swd_scale_of(const char *name);
@@ -109,16 +131,24 @@ int swd_ready(const swd_model *m);
 void swd_describe(const swd_model *m, char *buf, size_t n);
 
 /* The statistics at a place. SWD_EINVAL for a NaN or out-of-range input
- * (u_tau, k, eps negative or not finite, nu not positive). */
+ * (u_tau, k, eps, k_wall negative or not finite, nu not positive, grad_k
+ * not finite). */
 int swd_stats_at(const swd_model *m, const swd_local *at, swd_stats *out);
 
 /* One step of length dt [s] > 0 for a particle of relaxation time tau_p [s] > 0
- * at `at` (its place at the start of the step):
- *   kick[i] = sigma_i w_i (1 - exp(-dt / tau_p)), the change of the particle's
- *             velocity [m/s] that the fluctuation u'_i = sigma_i w_i causes over
- *             the step through linear drag (exact for a constant u'); the host
- *             adds it to the velocity its own drag gave towards the mean flow;
- *   w        is then advanced over dt (see the top of this file);
+ * at `at` (its place now, where the step starts):
+ *   w        is advanced over dt (see the top of this file), with the
+ *            statistics at `at`;
+ *   kick[i] = sigma_i w_i (1 - exp(-dt / tau_p)) with the new w and sigma_i
+ *             at the coming step's midpoint (predicted from the fluid's
+ *             displacement sigma w dt / 2), the change of the particle's
+ *             velocity [m/s] that the fluctuation u'_i = sigma_i w_i causes
+ *             over the step through linear drag (exact for a constant u');
+ *             the host adds it to the velocity its own drag gave towards the
+ *             mean flow and moves the particle with it over about dt (for a
+ *             tracer: u = U + sigma w). The midpoint keeps tracers well mixed
+ *             at steps of several wall units, where sigma at the start of the
+ *             step piles them up in the buffer layer;
  * xi: three independent standard normal numbers, new ones every step. kick
  * may be NULL. Components are in the wall frame (streamwise, wall-normal away
  * from the wall, spanwise); in the bulk any orthonormal frame. Returns SWD_OK,
