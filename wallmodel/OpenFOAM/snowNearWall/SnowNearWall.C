@@ -5,11 +5,12 @@
 #include "SnowNearWall.H"
 #include "SnowWallInteraction.H"
 #include "turbulenceModel.H"
-#include "indexedOctree.H"
-#include "treeDataFace.H"
+#include "snowWallLayer.H"
 #include "Pstream.H"
 #include "OSspecific.H"
 #include "StringStream.H"
+#include "volPointInterpolation.H"
+#include "wallPolyPatch.H"
 
 #include "swp_nearwall.h"
 
@@ -56,7 +57,7 @@ void Foam::SnowNearWall<CloudType>::readSettings(const dictionary& dict)
     {
         FatalIOErrorInFunction(dict)
             << "snowNearWall: velocityScale '" << scale << "' is not max,"
-            << " wallShear or turbulence" << exit(FatalIOError);
+            << " wallCell, wallShear or turbulence" << exit(FatalIOError);
     }
 
     const bool closure = dict.lookupOrDefault<bool>("closure", true);
@@ -201,47 +202,7 @@ void Foam::SnowNearWall<CloudType>::readSettings(const dictionary& dict)
 template<class CloudType>
 void Foam::SnowNearWall<CloudType>::buildNearest()
 {
-    const polyMesh& mesh = this->owner().mesh();
-    const polyBoundaryMesh& bm = mesh.boundaryMesh();
-
-    DynamicList<label> faces;
-    for (const label pi : patches_)
-    {
-        const polyPatch& pp = bm[pi];
-        forAll(pp, i)
-        {
-            faces.append(pp.start() + i);
-        }
-    }
-    nearestFace_.setSize(mesh.nCells());
-    nearestFace_ = -1;
-    if (faces.empty())
-    {
-        return;     // no wall of these patches on this processor
-    }
-
-    treeBoundBox bb(mesh.points());
-    Random rndGen(123456);
-    bb = bb.extend(rndGen, 1e-4);
-    bb.min() -= point::uniform(ROOTVSMALL);
-    bb.max() += point::uniform(ROOTVSMALL);
-
-    const labelList faceLabels(faces);
-    indexedOctree<treeDataFace> tree
-    (
-        treeDataFace(false, mesh, faceLabels),
-        bb, 8, 10, 3.0
-    );
-    const pointField& cc = mesh.cellCentres();
-    const scalar span2 = magSqr(bb.span());
-    forAll(cc, celli)
-    {
-        const pointIndexHit hit = tree.findNearest(cc[celli], span2);
-        if (hit.hit())
-        {
-            nearestFace_[celli] = faceLabels[hit.index()];
-        }
-    }
+    nearestFace_ = snowNearestWallFace(this->owner().mesh(), patches_);
 }
 
 
@@ -284,29 +245,16 @@ void Foam::SnowNearWall<CloudType>::refreshFlow()
             << " shear stress" << exit(FatalError);
     }
     checkTurbulent(*turb);
-    k_ = turb->k()().primitiveField();
+    {
+        const tmp<volScalarField> tk(turb->k());
+        k_ = tk().primitiveField();
+        kPoints_ = volPointInterpolation::New(mesh).interpolate(tk())().primitiveField();
+    }
     epsilon_ = turb->epsilon()().primitiveField();
     nu_ = turb->nu()().primitiveField();
 
-    // friction velocity of every face of the patches:
-    // u_tau^2 = nuEff |d U_t / dn| at the wall (the wall function's value on
-    // a wall-function mesh)
-    const volVectorField& U = turb->U();
-    uTau_.setSize(mesh.nBoundaryFaces());
-    uTau_ = 0;
-    for (const label pi : patches_)
-    {
-        const polyPatch& pp = mesh.boundaryMesh()[pi];
-        const vectorField snGradU(U.boundaryField()[pi].snGrad());
-        const scalarField nuEff(turb->nuEff(pi));
-        const vectorField& n = pp.faceNormals();
-        forAll(pp, i)
-        {
-            const vector g = snGradU[i] - (snGradU[i] & n[i])*n[i];
-            uTau_[pp.start() + i - mesh.nInternalFaces()] =
-                sqrt(nuEff[i]*mag(g));
-        }
-    }
+    // friction velocity of every face of the patches
+    snowFrictionVelocity(*turb, patches_, uTau_);
 }
 
 
@@ -339,6 +287,7 @@ Foam::SnowNearWall<CloudType>::SnowNearWall
     nearestFace_(),
     uTau_(),
     k_(),
+    kPoints_(),
     epsilon_(),
     nu_(),
     nClosure_(),
@@ -406,6 +355,7 @@ Foam::SnowNearWall<CloudType>::SnowNearWall(const SnowNearWall<CloudType>& nw)
     nearestFace_(nw.nearestFace_),
     uTau_(nw.uTau_),
     k_(nw.k_),
+    kPoints_(nw.kPoints_),
     epsilon_(nw.epsilon_),
     nu_(nw.nu_),
     nClosure_(nw.nClosure_),
@@ -444,7 +394,7 @@ void Foam::SnowNearWall<CloudType>::postMove
 (
     parcelType& p,
     const scalar dt,
-    const point& position0,
+    const point&,              // the start of the step: the walk takes the end
     bool& keepParticle
 )
 {
@@ -457,21 +407,47 @@ void Foam::SnowNearWall<CloudType>::postMove
     const label celli = p.cell();
     const label f = nearestFace_[celli];
 
-    // the place at the start of the step: wall distance and wall frame
-    swd_local at;
+    // the place now, where the coming step starts (the end of this tracking
+    // step): wall distance, wall frame, and k with its gradient from the
+    // cell-point interpolant of k in the parcel's tet
+    swd_local at = {};
     at.nu = nu_[celli];
-    at.k = max(k_[celli], scalar(0));
     at.eps = max(epsilon_[celli], scalar(0));
+    vector gradK(Zero);
+    {
+        const tetIndices tetIs = p.currentTetIndices();
+        const triFace tri = tetIs.faceTriIs(mesh);
+        const barycentric& c = p.coordinates();
+        const scalar v0 = k_[celli], v1 = kPoints_[tri[0]],
+            v2 = kPoints_[tri[1]], v3 = kPoints_[tri[2]];
+        at.k = max(v0*c[0] + v1*c[1] + v2*c[2] + v3*c[3], scalar(0));
+        const tetPointRef tet = tetIs.tet(mesh);
+        const vector ba = tet.b() - tet.a(), ca = tet.c() - tet.a(),
+            da = tet.d() - tet.a();
+        const tensor M
+        (
+            ba.x(), ba.y(), ba.z(),
+            ca.x(), ca.y(), ca.z(),
+            da.x(), da.y(), da.z()
+        );
+        const scalar dM = det(M);
+        if (mag(dM) > 1e-12*mag(ba)*mag(ca)*mag(da))
+        {
+            gradK = inv(M) & vector(v1 - v0, v2 - v0, v3 - v0);
+        }
+    }
     const vector Uc = cloud.U()[celli];
     vector n(0, -1, 0);         // the wall's outward normal (any without a wall)
+    const point& x = p.position();
     if (f >= 0)
     {
         n = mesh.faceAreas()[f]/mag(mesh.faceAreas()[f]);
         // the distance to the face itself (its nearest point), not to its
         // plane: away from the face's edges the two are the same, beyond them
         // the plane would bring a far parcel into the wall layer
-        at.y = mesh.faces()[f].nearestPoint(position0, mesh.points()).distance();
+        at.y = snowWallDistance(mesh, f, x);
         at.u_tau = uTau_[f - mesh.nInternalFaces()];
+        at.k_wall = max(k_[mesh.faceOwner()[f]], scalar(0));
     }
     else
     {
@@ -483,6 +459,9 @@ void Foam::SnowNearWall<CloudType>::postMove
     double fs[3], fn[3], fz[3];
     swd_wall_frame(nOut, uc, fs, fn, fz);
     const vector es(fs[0], fs[1], fs[2]), en(fn[0], fn[1], fn[2]), ez(fz[0], fz[1], fz[2]);
+    at.grad_k[0] = gradK & es;
+    at.grad_k[1] = gradK & en;
+    at.grad_k[2] = gradK & ez;
 
     Random& rnd = cloud.rndGen();
     // the parcel's normalized fluctuation (tTurb 1: drawn by this object)
@@ -519,12 +498,31 @@ void Foam::SnowNearWall<CloudType>::postMove
     {
         FatalErrorInFunction
             << "snowNearWall: invalid state of parcel " << p.origId()
-            << " at " << p.position() << ": y " << at.y << " u_tau "
-            << at.u_tau << " nu " << at.nu << " k " << at.k << " epsilon "
-            << at.eps << " dt " << dt << " tau_p " << tauP << exit(FatalError);
+            << " at " << x << ": y " << at.y << " u_tau "
+            << at.u_tau << " nu " << at.nu << " k " << at.k << " grad k "
+            << gradK << " epsilon " << at.eps << " dt " << dt << " tau_p "
+            << tauP << exit(FatalError);
     }
-    p.U() += kick[0]*es + kick[1]*en + kick[2]*ez;
-    p.UTurb() = w[0]*es + w[1]*en + w[2]*ez;
+    vector K(kick[0]*es + kick[1]*en + kick[2]*ez);
+    vector W(w[0]*es + w[1]*en + w[2]*ez);
+    // on a wall face the patch interaction comes next: the fluid velocity
+    // the parcel sees is reflected with it (Wilson & Flesch's perfect
+    // reflection). The kick points into the wall, which a rebound reverses,
+    // and the kept fluctuation away from it
+    if (p.onBoundaryFace())
+    {
+        const label hf = p.face();
+        const polyPatch& hp = mesh.boundaryMesh()[mesh.boundaryMesh().whichPatch(hf)];
+        if (isA<wallPolyPatch>(hp))
+        {
+            const vector nh = mesh.faceAreas()[hf]/mag(mesh.faceAreas()[hf]);
+            const scalar kn = K & nh, wn = W & nh;
+            if (kn < 0) K -= 2*kn*nh;
+            if (wn > 0) W -= 2*wn*nh;
+        }
+    }
+    p.U() += K;
+    p.UTurb() = W;
 
     // the sublayer closure: reaches the wall at the rate lambda
     if (f < 0 || !swd_closure_on(model_))
@@ -584,7 +582,6 @@ void Foam::SnowNearWall<CloudType>::postMove
     mClosure_[s] += mp;
     OStringStream rec;
     rec.precision(10);
-    const point& x = p.position();
     rec << this->owner().time().value() << ' ' << x.x() << ' ' << x.y() << ' '
         << x.z() << ' ' << p.origProc() << ' ' << p.origId() << ' '
         << p.nParticle() << ' ' << p.d() << ' ' << p.rho();

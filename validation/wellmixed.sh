@@ -1,0 +1,246 @@
+#!/usr/bin/env bash
+# wellmixed.sh - the tracer-limit check of the dispersion treatments on any
+# case: tracers released uniformly in its frozen flow must stay uniform
+#
+# Usage: validation/wellmixed.sh --case DIR --walls PATCHES --dt S --out DIR
+#            [--time T] [--models LIST] [--parcels N] [--tl-multiple M]
+#            [--zone NAME:X0,Y0,Z0:X1,Y1,Z1]... [--d D] [--force] [--help]
+#
+# Thomson's well-mixed condition (doc/deposition.md): in any turbulence,
+# tracers released well mixed stay well mixed. The check takes the case's mesh
+# and its converged flow at time T (default: its first time folder holding
+# U, k and omega or epsilon), and rides, in that flow frozen
+# (pimpleUncoupledKinematicParcelFoam -frozen), one cloud of near-tracer ice
+# spheres (diameter --d, default 0.2 um: tau+ well below 0.01 at wall shear
+# velocities under 1 m/s; no gravity) per treatment, released uniformly over
+# the whole mesh (cellZoneInjection at a number density that gives --parcels);
+# the walls of --walls and every other wall reflect them (localInteraction
+# rebound, e = 1, no friction), other patches let them out. The cloud function
+# wellMixedCheck of each cloud measures the parcels' time-averaged share of
+# each y+ band (0-1, 1-5, 5-30, 30-100, beyond; y to the nearest face of
+# --walls, u* = max(u_tau, Cmu^(1/4) k^(1/2)) of that face's cell) and of each
+# --zone (a box of cells, corners in metres) against the share of the volume
+# there, from the end of the first outer Lagrangian time to the end of
+# --tl-multiple of them (default 10; the outer Lagrangian time 0.3 k/eps, the
+# median over the cells).
+#
+# Treatments (--models, comma-separated; default none,crw): none (the mean
+# flow alone: the tracking itself must keep tracers uniform), crw
+# (snowNearWall's walk, closure off: tracers must not deposit), crw-utau,
+# crw-k, crw-wallcell (its wall layer's velocity scale from the wall shear, the
+# k at the parcel alone, the k of the wall face's cell), stochastic
+# (OpenFOAM's stochasticDispersionRAS, for comparison).
+#
+# Writes into DIR, only when the run succeeds: wellmixed.csv (per treatment,
+# region and band: volume share, parcel share, ratio, binomial and batch
+# standard errors, verdict), wellmixed.md (the table and the verdicts),
+# wellmixed.png (ratio against band per treatment with two binomial standard
+# errors), and the case (case/, logs included). DIR: the scripts' folder
+# rule (etc/outdir.sh): missing or empty or an earlier SnowWall output folder;
+# another is refused (exit 2) unless --force; nothing in it is deleted.
+# Exit status: 0 done (whatever the verdicts), 1 a run failed, 2 usage error.
+set -euo pipefail
+top=$(cd "$(dirname "$0")/.." && pwd)
+here="$top/validation/deposition"
+case_in= walls= out= time= dt= models=none,crw parcels=2000 mult=10 d=2e-7 force=0
+zones=()
+die2() { echo "wellmixed.sh: $*" >&2; exit 2; }
+while [ $# -gt 0 ]; do
+    case "$1" in
+        -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;;
+        --case) [ -n "${2:-}" ] || die2 "--case needs a case folder"; case_in=$2; shift ;;
+        --walls) [ -n "${2:-}" ] || die2 "--walls needs a patch list, e.g. \"(walls)\""; walls=$2; shift ;;
+        --out) [ -n "${2:-}" ] || die2 "--out needs a folder"; out=$2; shift ;;
+        --time) [ -n "${2:-}" ] || die2 "--time needs a time folder name"; time=$2; shift ;;
+        --dt) [ -n "${2:-}" ] || die2 "--dt needs a time step in seconds"; dt=$2; shift ;;
+        --models) [ -n "${2:-}" ] || die2 "--models needs a list"; models=$2; shift ;;
+        --parcels) [ -n "${2:-}" ] || die2 "--parcels needs a number"; parcels=$2; shift ;;
+        --tl-multiple) [ -n "${2:-}" ] || die2 "--tl-multiple needs a number"; mult=$2; shift ;;
+        --zone) [ -n "${2:-}" ] || die2 "--zone needs NAME:X0,Y0,Z0:X1,Y1,Z1"; zones+=("$2"); shift ;;
+        --d) [ -n "${2:-}" ] || die2 "--d needs a diameter in metres"; d=$2; shift ;;
+        --force) force=1 ;;
+        *) die2 "unknown option '$1' (see --help)" ;;
+    esac
+    shift
+done
+[ -n "$case_in" ] || die2 "--case DIR is required (see --help)"
+[ -n "$walls" ] || die2 "--walls PATCHES is required, e.g. --walls \"(walls)\""
+[ -n "$dt" ] || die2 "--dt S is required (about 2 nu/u_tau^2 of the walls)"
+[ -n "$out" ] || die2 "--out DIR is required"
+[ -f "$case_in/constant/polyMesh/owner" ] || [ -f "$case_in/constant/polyMesh/owner.gz" ] \
+    || die2 "--case: '$case_in' has no mesh (constant/polyMesh/owner)"
+[[ "$walls" =~ ^\(.*\)$ ]] || die2 "--walls: '$walls' is not a patch list in parentheses"
+num='^[0-9]*\.?[0-9]+([eE][-+]?[0-9]+)?$'
+[[ "$dt" =~ $num ]] && awk -v x="$dt" 'BEGIN { exit !(x > 0 && x < 1) }' || die2 "--dt: '$dt' is not a step in (0, 1) s"
+[[ "$parcels" =~ ^[1-9][0-9]{0,6}$ ]] || die2 "--parcels: '$parcels' is not a whole number in 1..9999999"
+[[ "$mult" =~ $num ]] && awk -v x="$mult" 'BEGIN { exit !(x >= 2 && x <= 1000) }' || die2 "--tl-multiple: '$mult' is not a number in [2, 1000]"
+[[ "$d" =~ $num ]] && awk -v x="$d" 'BEGIN { exit !(x > 0 && x < 1e-3) }' || die2 "--d: '$d' is not a diameter in (0, 1e-3) m"
+zre='^[A-Za-z][A-Za-z0-9_]*:(-?[0-9.eE+-]+,){2}-?[0-9.eE+-]+:(-?[0-9.eE+-]+,){2}-?[0-9.eE+-]+$'
+for z in "${zones[@]}"; do [[ "$z" =~ $zre ]] || die2 "--zone: '$z' is not NAME:X0,Y0,Z0:X1,Y1,Z1"; done
+# shellcheck source=../etc/outdir.sh
+. "$top/etc/outdir.sh"
+# shellcheck source=deposition/common.sh
+. "$here/common.sh"
+outdir_list models wellmixed.sh --models "$models" name
+IFS=, read -r -a modelList <<< "$models"
+dep_models wellmixed.sh "none crw crw-utau crw-k crw-wallcell stochastic" "${modelList[@]}" || exit 2
+dep_require wellmixed.sh "$top" checkMesh topoSet foamDictionary || exit 1
+# the flow's time
+if [ -z "$time" ]; then
+    for t in $(cd "$case_in" && ls -d [0-9]* 2>/dev/null | sort -g); do
+        if [ -f "$case_in/$t/U" ] && [ -f "$case_in/$t/k" ] && { [ -f "$case_in/$t/omega" ] || [ -f "$case_in/$t/epsilon" ]; }; then
+            time=$t; break
+        fi
+    done
+    [ -n "$time" ] || die2 "--case: no time folder of '$case_in' holds U, k and omega or epsilon"
+fi
+[ -f "$case_in/$time/U" ] && [ -f "$case_in/$time/k" ] || die2 "--time: '$case_in/$time' has no U and k"
+outdir_begin wellmixed.sh "$out" "$force"
+# shellcheck source=../etc/openfoam-env.sh
+. "$top/etc/openfoam-env.sh" >/dev/null
+t_start=$(date +%s)
+
+c="$tmp/case"
+mkdir -p "$c/constant" "$c/system" "$c/0"
+cp -r "$case_in/constant/polyMesh" "$c/constant/"
+for f in transportProperties turbulenceProperties; do cp "$case_in/constant/$f" "$c/constant/"; done
+[ ! -d "$case_in/constant/polyMesh/sets" ] || rm -rf "$c/constant/polyMesh/sets"
+for f in U p k omega epsilon nut phi; do [ ! -f "$case_in/$time/$f" ] || cp "$case_in/$time/$f" "$c/0/"; done
+cp "$case_in/system/fvSolution" "$c/system/"
+[ ! -f "$case_in/system/decomposeParDict" ] || cp "$case_in/system/decomposeParDict" "$c/system/"
+echo "FoamFile { version 2.0; format ascii; class uniformDimensionedVectorField; object g; }
+dimensions [0 1 -2 0 0 0 0];
+value (0 0 0);" > "$c/constant/g"
+dep_particle_schemes "$c"
+dep_control "$c" topoSet 1 1 1
+
+# the whole mesh as one cell zone (the release), and the --zone boxes
+{
+    echo "FoamFile { version 2.0; format ascii; class dictionary; object topoSetDict; }"
+    echo "actions ("
+    echo "  { name allSet; type cellSet; action new; source boxToCell; sourceInfo { box (-1e30 -1e30 -1e30) (1e30 1e30 1e30); } }"
+    echo "  { name all; type cellZoneSet; action new; source setToCellZone; sourceInfo { set allSet; } }"
+    zl=
+    for z in "${zones[@]}"; do
+        IFS=: read -r zn a b <<< "$z"
+        echo "  { name ${zn}Set; type cellSet; action new; source boxToCell; sourceInfo { box (${a//,/ }) (${b//,/ }); } }"
+        echo "  { name $zn; type cellZoneSet; action new; source setToCellZone; sourceInfo { set ${zn}Set; } }"
+        zl="$zl $zn"
+    done
+    echo ");"
+} > "$c/system/topoSetDict"
+(cd "$c" && topoSet > log.topoSet 2>&1 && checkMesh -constant > log.checkMesh 2>&1) \
+    || { dep_show_fail wellmixed.sh "topoSet / checkMesh" "$c/log.topoSet"; exit 1; }
+for z in "${zones[@]}"; do
+    zn=${z%%:*}
+    n=$(awk -v z="${zn}Set" '$0 ~ "cellSet " z { for (i = 1; i <= NF; i++) if ($i == "size") print $(i + 1) }' "$c/log.topoSet" | tail -1)
+    [ "${n:-0}" -gt 0 ] 2>/dev/null || { echo "wellmixed.sh: --zone $zn: the box holds no cell" >&2; exit 2; }
+done
+vol=$(awk '/Total volume/ { for (i = 1; i < NF; i++) if ($i == "volume" && $(i + 1) == "=") { v = $(i + 2); sub(/\.$/, "", v); print v } }' "$c/log.checkMesh" | tail -1)
+[ -n "$vol" ] || { echo "wellmixed.sh: checkMesh gave no volume ($c/log.checkMesh)" >&2; exit 1; }
+
+# the outer Lagrangian time: 0.3 k/eps, the median over the cells
+field_values() {   # file
+    foamDictionary -entry internalField -value "$1" 2>/dev/null | tr -s ' ()\n' '\n' | awk '
+        /^uniform$/ { u = 1; next } /^nonuniform$|^List<scalar>$/ { next }
+        u && /^[-0-9.eE+]+$/ { print; exit }
+        /^[-0-9.eE+]+$/ { if (!n++) next; print }'
+}
+ncells=$(awk '/^ *cells:/ { print $2 }' "$c/log.checkMesh" | head -1)
+if [ -f "$c/0/epsilon" ]; then field_values "$c/0/epsilon" > "$tmp/eps.txt"
+else paste <(field_values "$c/0/k") <(field_values "$c/0/omega") | awk '{ print 0.09 * $1 * $2 }' > "$tmp/eps.txt"; fi
+field_values "$c/0/k" > "$tmp/k.txt"
+tl=$(paste "$tmp/k.txt" "$tmp/eps.txt" | awk -v n="$ncells" '$2 > 0 { print 0.3 * $1 / $2 }' | sort -g \
+    | awk '{ v[NR] = $1 } END { if (NR) printf "%.6g", v[int((NR + 1) / 2)] }')
+[ -n "$tl" ] || { echo "wellmixed.sh: no cell with k and epsilon > 0 in the flow" >&2; exit 1; }
+tend=$(awk -v t="$tl" -v m="$mult" 'BEGIN { printf "%.6g", m * t }')
+nsteps=$(awk -v a="$tend" -v b="$dt" 'BEGIN { printf "%d", a / b + 0.999 }')
+[ "$nsteps" -le 200000 ] || { echo "wellmixed.sh: $nsteps steps of $dt s for $mult outer Lagrangian times of $tl s: more than 200 000 (raise --dt or lower --tl-multiple)" >&2; exit 2; }
+tend=$(awk -v n="$nsteps" -v b="$dt" 'BEGIN { printf "%.10g", n * b }')
+nd=$(awk -v n="$parcels" -v v="$vol" 'BEGIN { printf "%.10g", n / v }')
+dep_estimate wellmixed.sh "$parcels" "${#modelList[@]}" "$nsteps steps of $dt s ($mult x the outer Lagrangian time $tl s)" \
+    "$(awk -v p="$parcels" -v n="${#modelList[@]}" -v c="${ncells:-0}" 'BEGIN { print p * n * 2000 + c * 3000 + 2e8 }')" \
+    "$(awk -v p="$parcels" -v n="${#modelList[@]}" -v s="$nsteps" 'BEGIN { print p * n * s * 3e-6 / 60 }')" "lower --parcels" || exit 2
+
+# the patch types of the mesh: every wall reflects, every plain patch lets out;
+# constraint and coupled patches are left to the tracking
+read -r -a wallPatches <<< "$(awk '/^[ \t]*[A-Za-z_][A-Za-z0-9_.:-]*[ \t]*$/ { n = $1 } /^[ \t]*type[ \t]+wall;/ { printf "%s ", n }' "$c/constant/polyMesh/boundary")"
+read -r -a openPatches <<< "$(awk '/^[ \t]*[A-Za-z_][A-Za-z0-9_.:-]*[ \t]*$/ { n = $1 } /^[ \t]*type[ \t]+patch;/ { printf "%s ", n }' "$c/constant/polyMesh/boundary")"
+[ "${#wallPatches[@]}" -ge 1 ] || { echo "wellmixed.sh: the mesh has no wall patch" >&2; exit 2; }
+: > "$c/clouds.txt"
+for m in "${modelList[@]}"; do
+    name="t_${m//-/_}"
+    funcs=
+    case "$m" in
+        none) disp=none ;;
+        stochastic) disp=stochasticDispersionRAS ;;
+        crw|crw-utau|crw-k|crw-wallcell)
+            disp=none
+            scale=max
+            [ "$m" != crw-utau ] || scale=wallShear
+            [ "$m" != crw-k ] || scale=turbulence
+            [ "$m" != crw-wallcell ] || scale=wallCell
+            funcs="nearWall { type snowNearWall; patches $walls; closure off; velocityScale $scale; }" ;;
+    esac
+    {
+        echo "FoamFile { version 2.0; format ascii; class dictionary; object ${name}Properties; }"
+        dep_cloud_solution
+        cat <<EOF2
+constantProperties { rho0 920; }
+subModels
+{
+    particleForces { sphereDrag; }
+    injectionModels
+    {
+        uniform
+        {
+            type            cellZoneInjection;
+            cellZone        all;
+            numberDensity   $nd;
+            SOI             0;
+            parcelBasisType fixed;
+            nParticle       1;
+            massTotal       1;
+            U0              (0 0 0);
+            sizeDistribution { type fixedValue; fixedValueDistribution { value $d; } }
+        }
+    }
+    dispersionModel $disp;
+    patchInteractionModel localInteraction;
+    localInteractionCoeffs
+    {
+        patches
+        (
+$(for p in "${wallPatches[@]}"; do echo "            $p { type rebound; e 1; mu 0; }"; done)
+$(for p in "${openPatches[@]}"; do echo "            $p { type escape; }"; done)
+        );
+    }
+    surfaceFilmModel none;
+    stochasticCollisionModel none;
+    collisionModel  none;
+}
+cloudFunctions
+{
+    $funcs
+    wellMixed { type wellMixedCheck; patches $walls; startTime $tl; zones ($zl); }
+}
+EOF2
+    } > "$c/constant/${name}Properties"
+    echo "$name $m" >> "$c/clouds.txt"
+done
+dep_control "$c" pimpleUncoupledKinematicParcelFoam "$tend" "$dt" "$nsteps"
+echo "wellmixed.sh: ${#modelList[@]} clouds of about $parcels tracers (d $d m), $nsteps steps of $dt s, window $tl .. $tend s"
+dep_run_particles "$c" || { dep_show_fail wellmixed.sh "the tracer run" "$c/log.particles"; exit 1; }
+
+# the tables of every cloud
+csv="$tmp/wellmixed.csv"
+echo "model,region,band,yplus_lo,yplus_hi,volume_share,volume_share_se,parcel_share,ratio,se_binomial,se_batch,verdict" > "$csv"
+while read -r name m; do
+    f=$(ls -d "$c"/postProcessing/lagrangian/"$name"/wellMixed/*/wellMixed.dat 2>/dev/null | sort -V | tail -1)
+    [ -n "$f" ] || { echo "wellmixed.sh: cloud $name wrote no wellMixed.dat" >&2; exit 1; }
+    awk -v m="$m" '!/^#/ && NF == 11 { printf "%s", m; for (i = 1; i <= NF; i++) printf ",%s", $i; print "" }' "$f" >> "$csv"
+done < "$c/clouds.txt"
+"$here/wellmixed-report" --force --out "$tmp" "$csv" || { echo "wellmixed.sh: the report failed" >&2; exit 1; }
+echo "wellmixed.sh: done in $(( $(date +%s) - t_start )) s"
+cat "$tmp/wellmixed.md"
+outdir_commit

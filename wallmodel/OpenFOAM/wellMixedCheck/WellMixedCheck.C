@@ -1,0 +1,478 @@
+/*---------------------------------------------------------------------------*\
+  SnowWall: wallmodel/OpenFOAM/wellMixedCheck (see WellMixedCheck.H)
+\*---------------------------------------------------------------------------*/
+
+#include "WellMixedCheck.H"
+#include "snowWallLayer.H"
+#include "turbulenceModel.H"
+#include "polyMeshTetDecomposition.H"
+#include "OFstream.H"
+#include "Pstream.H"
+#include "OSspecific.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::WellMixedCheck<CloudType>::readSettings(const dictionary& dict)
+{
+    const wordList known
+    ({
+        "type", "patches", "bands", "zones", "startTime", "samplesPerCell",
+        "totalSamples", "Cmu"
+    });
+    for (const entry& e : dict)
+    {
+        if (!known.found(e.keyword()))
+        {
+            FatalIOErrorInFunction(dict)
+                << "wellMixedCheck: unknown key '" << e.keyword()
+                << "' (known: " << known << ")" << exit(FatalIOError);
+        }
+    }
+    const polyBoundaryMesh& bm = this->owner().mesh().boundaryMesh();
+    const wordRes sel(dict.get<wordRes>("patches"));
+    DynamicList<label> ids;
+    for (const polyPatch& pp : bm)
+    {
+        if (sel.match(pp.name()))
+        {
+            if (pp.coupled() || polyPatch::constraintType(pp.type()))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "wellMixedCheck: patch " << pp.name() << " is a "
+                    << pp.type() << " patch, not a wall" << exit(FatalIOError);
+            }
+            ids.append(pp.index());
+        }
+    }
+    if (ids.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "wellMixedCheck: patches " << sel << " match no patch"
+            << " (patches: " << bm.names() << ")" << exit(FatalIOError);
+    }
+    patches_ = ids;
+
+    edges_ = dict.lookupOrDefault<scalarList>
+    (
+        "bands", scalarList({0, 1, 5, 30, 100})
+    );
+    if (edges_.size() < 1 || edges_[0] != 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "wellMixedCheck: bands " << edges_ << " must start at 0"
+            << exit(FatalIOError);
+    }
+    for (label i = 1; i < edges_.size(); ++i)
+    {
+        if (!(edges_[i] > edges_[i-1]) || !std::isfinite(edges_[i]))
+        {
+            FatalIOErrorInFunction(dict)
+                << "wellMixedCheck: bands " << edges_ << ": " << edges_[i]
+                << " does not follow " << edges_[i-1]
+                << " (finite, strictly increasing)" << exit(FatalIOError);
+        }
+    }
+
+    const fvMesh& mesh = this->owner().mesh();
+    zoneNames_ = dict.lookupOrDefault<wordList>("zones", wordList());
+    cellZone_.setSize(mesh.nCells());
+    cellZone_ = -1;
+    forAll(zoneNames_, z)
+    {
+        const label zi = mesh.cellZones().findZoneID(zoneNames_[z]);
+        if (zi < 0)
+        {
+            FatalIOErrorInFunction(dict)
+                << "wellMixedCheck: zones: no cell zone '" << zoneNames_[z]
+                << "' (cell zones: " << mesh.cellZones().names() << ")"
+                << exit(FatalIOError);
+        }
+        for (const label c : mesh.cellZones()[zi])
+        {
+            cellZone_[c] = z;
+        }
+    }
+
+    startTime_ = dict.lookupOrDefault<scalar>
+    (
+        "startTime", this->owner().time().startTime().value()
+    );
+    samplesPerCell_ = dict.lookupOrDefault<label>("samplesPerCell", 64);
+    totalSamples_ = dict.lookupOrDefault<scalar>("totalSamples", 2e6);
+    const scalar cmu = dict.lookupOrDefault<scalar>("Cmu", 0.09);
+    if
+    (
+        samplesPerCell_ < 1 || samplesPerCell_ > 100000
+     || !(totalSamples_ >= 0 && totalSamples_ <= 1e9)
+     || !(cmu >= 0 && cmu <= 1) || !std::isfinite(startTime_)
+    )
+    {
+        FatalIOErrorInFunction(dict)
+            << "wellMixedCheck: samplesPerCell " << samplesPerCell_
+            << " (1 .. 100000), totalSamples " << totalSamples_
+            << " (0 .. 1e9), Cmu " << cmu << " (0 .. 1), startTime "
+            << startTime_ << " (finite): one is out of range"
+            << exit(FatalIOError);
+    }
+    cmu4_ = ::pow(cmu, 0.25);
+}
+
+
+template<class CloudType>
+Foam::label Foam::WellMixedCheck<CloudType>::band
+(
+    const label celli,
+    const point& x
+) const
+{
+    const label f = nearestFace_[celli];
+    if (f < 0)
+    {
+        return nBands() - 1;
+    }
+    const fvMesh& mesh = this->owner().mesh();
+    const scalar yp =
+        snowWallDistance(mesh, f, x)*uStar_[f - mesh.nInternalFaces()]
+       /nu_[celli];
+    label b = 0;
+    while (b + 1 < nBands() && yp >= edges_[b + 1])
+    {
+        ++b;
+    }
+    return b;
+}
+
+
+template<class CloudType>
+void Foam::WellMixedCheck<CloudType>::refreshFlow()
+{
+    const fvMesh& mesh = this->owner().mesh();
+    const word turbName =
+        IOobject::groupName
+        (
+            turbulenceModel::propertiesName, this->owner().U().group()
+        );
+    const turbulenceModel* turb =
+        mesh.template findObject<turbulenceModel>(turbName);
+    if (!turb)
+    {
+        FatalErrorInFunction
+            << "wellMixedCheck: no turbulence model " << turbName
+            << " in the registry: the bands need the wall's u*"
+            << exit(FatalError);
+    }
+    scalarField uTau;
+    snowFrictionVelocity(*turb, patches_, uTau);
+    const scalarField k(turb->k()().primitiveField());
+    nu_ = turb->nu()().primitiveField();
+    uStar_ = uTau;
+    for (const label pi : patches_)
+    {
+        const polyPatch& pp = mesh.boundaryMesh()[pi];
+        forAll(pp, i)
+        {
+            const label f = pp.start() + i;
+            const label bf = f - mesh.nInternalFaces();
+            uStar_[bf] = max
+            (
+                uTau[bf], cmu4_*sqrt(max(k[mesh.faceOwner()[f]], scalar(0)))
+            );
+        }
+    }
+}
+
+
+template<class CloudType>
+void Foam::WellMixedCheck<CloudType>::buildReference()
+{
+    const fvMesh& mesh = this->owner().mesh();
+    const label nb = nBands();
+    volume_.setSize(nSlots());
+    volume_ = 0;
+    volume2_.setSize(nSlots());
+    volume2_ = 0;
+    scalar vTotal = gSum(mesh.V());
+    boolList atWall(mesh.nCells(), false);
+    for (const label pi : patches_)
+    {
+        for (const label c : mesh.boundaryMesh()[pi].faceCells())
+        {
+            atWall[c] = true;
+        }
+    }
+    Random rnd(20261207 + Pstream::myProcNo());
+    label nSamples = 0;
+    forAll(mesh.V(), celli)
+    {
+        const List<tetIndices> tets =
+            polyMeshTetDecomposition::cellTetIndices(mesh, celli);
+        scalarList cum(tets.size());
+        scalar vc = 0;
+        forAll(tets, t)
+        {
+            vc += max(tets[t].tet(mesh).mag(), scalar(0));
+            cum[t] = vc;
+        }
+        if (!(vc > 0))
+        {
+            continue;
+        }
+        label n = max
+        (
+            samplesPerCell_,
+            label(ceil(totalSamples_*mesh.V()[celli]/vTotal))
+        );
+        if (atWall[celli])
+        {
+            n *= 8;
+        }
+        const scalar w = mesh.V()[celli]/n;
+        const label z = cellZone_[celli];
+        for (label s = 0; s < n; ++s)
+        {
+            const scalar r = rnd.sample01<scalar>()*vc;
+            label t = 0;
+            while (t + 1 < tets.size() && cum[t] < r)
+            {
+                ++t;
+            }
+            const point x = tets[t].tet(mesh).randomPoint(rnd);
+            const label b = band(celli, x);
+            volume_[b] += w;
+            volume2_[b] += w*w;
+            volume_[nb] += w;
+            volume2_[nb] += w*w;
+            if (z >= 0)
+            {
+                const label o = (z + 1)*(nb + 1);
+                volume_[o + b] += w;
+                volume2_[o + b] += w*w;
+                volume_[o + nb] += w;
+                volume2_[o + nb] += w*w;
+            }
+        }
+        nSamples += n;
+    }
+    Pstream::listCombineGather(volume_, plusEqOp<scalar>());
+    Pstream::listCombineScatter(volume_);
+    Pstream::listCombineGather(volume2_, plusEqOp<scalar>());
+    Pstream::listCombineScatter(volume2_);
+    reduce(nSamples, sumOp<label>());
+    Info<< "    wellMixedCheck " << this->modelName() << ": the uniform "
+        << "reference from " << nSamples << " points in "
+        << returnReduce(mesh.nCells(), sumOp<label>()) << " cells; window "
+        << "from t = " << startTime_ << endl;
+    haveReference_ = true;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::WellMixedCheck<CloudType>::WellMixedCheck
+(
+    const dictionary& dict,
+    CloudType& owner,
+    const word& modelName
+)
+:
+    CloudFunctionObject<CloudType>(dict, owner, modelName, typeName),
+    haveReference_(false),
+    parcelTime_(0),
+    window_(0)
+{
+    readSettings(this->coeffDict());
+    nearestFace_ = snowNearestWallFace(owner.mesh(), patches_);
+    occupancy_.setSize(nSlots(), Zero);
+    batch_.setSize(nBatch, scalarList(nSlots() + 1, Zero));
+}
+
+
+template<class CloudType>
+Foam::WellMixedCheck<CloudType>::WellMixedCheck
+(
+    const WellMixedCheck<CloudType>& wm
+)
+:
+    CloudFunctionObject<CloudType>(wm),
+    patches_(wm.patches_),
+    edges_(wm.edges_),
+    zoneNames_(wm.zoneNames_),
+    cellZone_(wm.cellZone_),
+    startTime_(wm.startTime_),
+    samplesPerCell_(wm.samplesPerCell_),
+    totalSamples_(wm.totalSamples_),
+    cmu4_(wm.cmu4_),
+    nearestFace_(wm.nearestFace_),
+    uStar_(wm.uStar_),
+    nu_(wm.nu_),
+    haveReference_(wm.haveReference_),
+    volume_(wm.volume_),
+    volume2_(wm.volume2_),
+    occupancy_(wm.occupancy_),
+    batch_(wm.batch_),
+    parcelTime_(wm.parcelTime_),
+    window_(wm.window_)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::WellMixedCheck<CloudType>::preEvolve()
+{
+    const Time& time = this->owner().time();
+    if (time.value() > startTime_ + 0.5*time.deltaTValue())
+    {
+        if (!haveReference_)
+        {
+            // the bands with the flow of the window's start
+            refreshFlow();
+            buildReference();
+        }
+        window_ += time.deltaTValue();
+    }
+}
+
+
+template<class CloudType>
+void Foam::WellMixedCheck<CloudType>::postMove
+(
+    parcelType& p,
+    const scalar dt,
+    const point&,
+    bool& keepParticle
+)
+{
+    const Time& time = this->owner().time();
+    if
+    (
+        !haveReference_ || !keepParticle || !(dt > 0)
+     || !(time.value() > startTime_ + 0.5*time.deltaTValue())
+    )
+    {
+        return;
+    }
+    const label nb = nBands();
+    const label celli = p.cell();
+    const label b = band(celli, p.position());
+    const scalar span = max(time.endTime().value() - startTime_, VSMALL);
+    const label k = min
+    (
+        nBatch - 1,
+        max(label(0), label((time.value() - startTime_)/span*nBatch))
+    );
+    scalarList& bk = batch_[k];
+    occupancy_[b] += dt;
+    occupancy_[nb] += dt;
+    bk[b] += dt;
+    bk[nb] += dt;
+    const label z = cellZone_[celli];
+    if (z >= 0)
+    {
+        const label o = (z + 1)*(nb + 1);
+        occupancy_[o + b] += dt;
+        occupancy_[o + nb] += dt;
+        bk[o + b] += dt;
+        bk[o + nb] += dt;
+    }
+    bk[nSlots()] += dt;
+    parcelTime_ += dt;
+}
+
+
+template<class CloudType>
+void Foam::WellMixedCheck<CloudType>::write()
+{
+    if (!haveReference_)
+    {
+        return;
+    }
+    scalarList occ(occupancy_);
+    Pstream::listCombineGather(occ, plusEqOp<scalar>());
+    List<scalarList> bat(batch_);
+    for (scalarList& b : bat)
+    {
+        Pstream::listCombineGather(b, plusEqOp<scalar>());
+    }
+    const scalar pt = returnReduce(parcelTime_, sumOp<scalar>());
+    if (!Pstream::master() || !(pt > 0) || !(window_ > 0))
+    {
+        return;
+    }
+    const label nb = nBands();
+    const scalar vAll = volume_[nb];
+    const scalar nMean = pt/window_;
+    const fileName dir = this->outputDir()/this->owner().time().timeName();
+    mkDir(dir);
+    OFstream os(dir/"wellMixed.dat");
+    os.precision(6);
+    os  << "# wellMixedCheck " << this->modelName() << " of cloud "
+        << this->owner().name() << ": the parcels' time-averaged share of "
+        << "each region and y+ band against its share of the volume" << nl
+        << "# window " << startTime_ << " .. "
+        << this->owner().time().value() << " s, mean parcels " << nMean
+        << ", y+ = y max(u_tau, Cmu^(1/4) k_wallcell^(1/2)) / nu" << nl
+        << "# region band yplus_lo yplus_hi volume_share volume_share_se"
+        << " parcel_share ratio se_binomial se_batch verdict" << nl;
+    scalar worst = 0;
+    word worstName("none");
+    label nFail = 0;
+    for (label r = 0; r <= zoneNames_.size(); ++r)
+    {
+        const word region(r == 0 ? word("all") : zoneNames_[r - 1]);
+        for (label b = 0; b <= nb; ++b)
+        {
+            const label slot = r*(nb + 1) + b;
+            if (r == 0 && b == nb)
+            {
+                continue;       // the whole domain: 1 by definition
+            }
+            const scalar p = volume_[slot]/vAll;
+            // the Monte Carlo error of the volume share (weighted samples)
+            const scalar pse = sqrt(max(volume2_[slot], scalar(0)))/vAll;
+            const scalar q = occ[slot]/pt;
+            const scalar ratio = p > 0 ? q/p : 0;
+            const scalar seBin = p > 0 ? sqrt(max(1 - p, scalar(0))/(nMean*p)) : 0;
+            // batch means of the ratio
+            scalar s1 = 0, s2 = 0;
+            label nbat = 0;
+            for (const scalarList& bk : bat)
+            {
+                if (bk[nSlots()] > 0 && p > 0)
+                {
+                    const scalar rk = bk[slot]/bk[nSlots()]/p;
+                    s1 += rk;
+                    s2 += rk*rk;
+                    ++nbat;
+                }
+            }
+            const scalar seBat = nbat > 1
+                ? sqrt(max(s2/nbat - sqr(s1/nbat), scalar(0))/(nbat - 1))
+                : scalar(0);
+            const bool ok =
+                p > 0 && (mag(ratio - 1) <= 0.1 || mag(ratio - 1) <= 2*seBin);
+            if (p > 0 && mag(ratio - 1) > worst)
+            {
+                worst = mag(ratio - 1);
+                worstName = region + ":" + (b == nb ? word("whole") : Foam::name(b));
+            }
+            nFail += (p > 0 && !ok);
+            os  << region << ' '
+                << (b == nb ? word("whole") : word("y+")) << ' '
+                << (b == nb ? scalar(0) : edges_[b]) << ' '
+                << (b == nb || b + 1 == nb ? scalar(-1) : edges_[b + 1]) << ' '
+                << p << ' ' << pse << ' ' << q << ' ' << ratio << ' ' << seBin
+                << ' ' << seBat << ' '
+                << (p > 0 ? (ok ? "ok" : "FAIL") : "empty") << nl;
+        }
+    }
+    Info<< "    wellMixedCheck " << this->modelName() << ": mean parcels "
+        << nMean << ", largest deviation from uniform " << worst << " ("
+        << worstName << "), " << nFail << " region(s) beyond 10 % and two "
+        << "standard errors" << endl;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,5 @@
+/* wellMixedCheck for basicKinematicCollidingCloud. */
+#include "basicKinematicCollidingCloud.H"
+#include "WellMixedCheck.H"
+
+makeCloudFunctionObjectType(WellMixedCheck, basicKinematicCollidingCloud);

@@ -1,0 +1,5 @@
+/* wellMixedCheck for basicKinematicCloud. */
+#include "basicKinematicCloud.H"
+#include "WellMixedCheck.H"
+
+makeCloudFunctionObjectType(WellMixedCheck, basicKinematicCloud);
