@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# test_wellmixed_openfoam.sh - the tracer-limit check, short: the channel's flow
+# on the wall-function mesh (validation/deposition.sh, a few parcels only for its
+# flow, about 10 s), then validation/wellmixed.sh on it with the mean flow alone,
+# snowNearWall's walk with its default scale and with u* from the k at the
+# parcel alone, and OpenFOAM's stochasticDispersionRAS, 4000 tracers each over
+# 10 outer Lagrangian times (about 1 min). Checks: the walk's two scales keep
+# every y+ band within 10 % of uniform or three binomial standard errors (the
+# walk whose drift took u* as fixed, with k a step per cell, piled tracers up
+# 6-37 times in such bands), the mean flow alone too, the stochastic model
+# fails at least one band (the check can fail), the table and plot written, and
+# the refusals of bad options (exit 2, nothing written). Skipped (77) without
+# OpenFOAM, the project's solver and wrapper, bin/snowdeposit or gnuplot.
+# shellcheck source=openfoam_test.sh
+. "$(dirname "$0")/openfoam_test.sh"
+[ -x "$top/bin/snowdeposit" ] || { echo "bin/snowdeposit missing: skipped"; exit 77; }
+
+"$top/validation/deposition.sh" --out "$tmp/dep" --mesh wf --models none --tau-plus 10 --parcels 10 --t-run 100 > "$tmp/log.dep" 2>&1
+check "the channel's flow (deposition.sh) exits 0" "[ $? -eq 0 ]"
+case_dir="$tmp/dep/wf/case"
+"$top/validation/wellmixed.sh" --case "$case_dir" --walls "(walls)" --dt 5.4e-5 --out "$tmp/wm" \
+    --models none,crw,crw-k,stochastic --parcels 4000 > "$tmp/log" 2>&1
+rc=$?
+cat "$tmp/log"
+check "wellmixed.sh exits 0" "[ $rc -eq 0 ]"
+csv="$tmp/wm/wellmixed.csv"
+check "wellmixed.csv, .md, .png written" "[ -s '$csv' ] && [ -s '$tmp/wm/wellmixed.md' ] && [ -s '$tmp/wm/wellmixed.png' ]"
+for m in none crw crw-k; do
+    check "$m: five bands" "[ \"\$(awk -F, -v m=$m '\$1 == m && \$2 == \"all\"' '$csv' | wc -l)\" -eq 5 ]"
+    # within 10 % or three binomial standard errors (two, the check's own verdict,
+    # fails one band in twenty by chance alone: too often for a suite of 15 bands)
+    check "$m: every band within 10 % or 3 standard errors" \
+        "! awk -F, -v m=$m '\$1 == m && (\$9 - 1 > 0.1 || 1 - \$9 > 0.1) && (\$9 - 1 > 3 * \$10 || 1 - \$9 > 3 * \$10)' '$csv' | grep -q ."
+    check "$m: bands from y+ 5 on within 10 %" \
+        "! awk -F, -v m=$m '\$1 == m && \$4 >= 5 && (\$9 < 0.9 || \$9 > 1.1)' '$csv' | grep -q ."
+done
+check "stochasticDispersionRAS fails a band (the check can fail)" "awk -F, '\$1 == \"stochastic\" && \$12 == \"FAIL\"' '$csv' | grep -q ."
+# refusals: exit 2, nothing written
+for bad in "--walls walls" "--dt 0" "--dt abc" "--parcels 0" "--tl-multiple 1" "--models none,bogus" "--zone x:1,2:3,4,5" "--d 1"; do
+    # shellcheck disable=SC2086
+    "$top/validation/wellmixed.sh" --case "$case_dir" --walls "(walls)" --dt 5.4e-5 --out "$tmp/bad" $bad > "$tmp/log.bad" 2>&1
+    rc=$?
+    check "refused: $bad (exit 2, nothing written; $(head -1 "$tmp/log.bad"))" "[ $rc -eq 2 ] && [ ! -e '$tmp/bad' ]"
+done
+"$top/validation/wellmixed.sh" --case "$tmp/nonesuch" --walls "(walls)" --dt 5.4e-5 --out "$tmp/bad" > "$tmp/log.bad" 2>&1
+check "refused: a case without a mesh" "[ $? -eq 2 ] && [ ! -e '$tmp/bad' ] && grep -q nonesuch '$tmp/log.bad'"
+[ "$fails" -eq 0 ] && { echo PASS; exit 0; } || { echo "$fails failure(s)"; exit 1; }
