@@ -301,7 +301,7 @@ expect_fatal_io "$tmp/nwClosure" "snowNearWall: depositionClosure is not a sub-d
 case_from_base "$tmp/nwScale"
 foamDictionary -entry cloudFunctions -set "{ nw { type snowNearWall; patches (wall); velocityScale maximum; } }" \
     "$tmp/nwScale/$cpr" > /dev/null
-expect_fatal_io "$tmp/nwScale" "snowNearWall: velocityScale 'maximum' is not max, wallShear or turbulence"
+expect_fatal_io "$tmp/nwScale" "snowNearWall: velocityScale 'maximum' is not max, wallCell, wallShear or turbulence"
 # snowNearWall on a laminar flow would walk with k = epsilon = 0: dispersion none without
 # a word; refused at set-up
 case_from_base "$tmp/nwLaminar"
