@@ -40,34 +40,30 @@ double swp_wrms_plus(double yplus)
     return rms_fit(yplus, 0.19, 1, 0.0361, 1.21);
 }
 
-/* d/dy+ of a y / (1 + b y^p) (the m = 1 fits) */
-static double rms_fit1_deriv(double yplus, double a, double b, double p)
+/* d/dy+ of every rms fit a y^m / (1 + b y^p):
+   a y^(m-1) (m (1 + b y^p) - p b y^p) / (1 + b y^p)^2 */
+static double rms_fit_deriv(double yplus, double a, int m, double b, double p)
 {
     if (bad(yplus))
         return NAN;
     const double bp = b * pow(yplus, p);
     const double den = 1.0 + bp;
-    return a * (1.0 + bp - p * bp) / (den * den);
+    return a * (m == 2 ? yplus : 1.0) * (m * den - p * bp) / (den * den);
 }
 
 double swp_durms_plus(double yplus)
 {
-    return rms_fit1_deriv(yplus, 0.4, 0.0239, 1.496);
-}
-
-double swp_dwrms_plus(double yplus)
-{
-    return rms_fit1_deriv(yplus, 0.19, 0.0361, 1.21);
+    return rms_fit_deriv(yplus, 0.4, 1, 0.0239, 1.496);
 }
 
 double swp_dvrms_plus(double yplus)
 {
-    if (bad(yplus))
-        return NAN;
-    const double y = yplus;
-    const double den = 1.0 + V_B * pow(y, V_P);
-    const double dden = V_B * V_P * pow(y, V_P - 1.0);
-    return V_A * (2.0 * y * den - y * y * dden) / (den * den);
+    return rms_fit_deriv(yplus, V_A, 2, V_B, V_P);
+}
+
+double swp_dwrms_plus(double yplus)
+{
+    return rms_fit_deriv(yplus, 0.19, 1, 0.0361, 1.21);
 }
 
 double swp_tl_plus(double yplus)

@@ -218,13 +218,13 @@ static int finite_pos(double x)
     return isfinite(x) && x > 0.0;
 }
 
-/* the isotropic bulk: sigma_i = sqrt(2k/3) in every direction, its
-   derivative along i from the gradient of k */
-static void bulk_stats(const swd_local *at, double s_iso, double tl_iso, swd_stats *out)
+/* the isotropic bulk: sigma_i = sqrt(2k/3) in every direction and its
+   derivative along i, ds_iso[i] = (dk/dx_i) / (3 sigma) */
+static void bulk_stats(double s_iso, const double ds_iso[3], double tl_iso, swd_stats *out)
 {
     for (int i = 0; i < 3; i++) {
         out->sigma[i] = s_iso;
-        out->dsigma[i] = s_iso > 1e-300 ? at->grad_k[i] / (3.0 * s_iso) : 0.0;
+        out->dsigma[i] = ds_iso[i];
     }
     out->tl = tl_iso;
     out->layer = 0.0;
@@ -242,6 +242,9 @@ int swd_stats_at(const swd_model *m, const swd_local *at, swd_stats *out)
     /* the isotropic RANS statistics (bulk) */
     const double s_iso = sqrt(2.0 * at->k / 3.0);
     const double tl_iso = (at->k > 0.0 && at->eps > 0.0) ? m->v[K_CT] * at->k / at->eps : INFINITY;
+    double ds_iso[3];
+    for (int i = 0; i < 3; i++)
+        ds_iso[i] = s_iso > 1e-300 ? at->grad_k[i] / (3.0 * s_iso) : 0.0;
 
     /* u* and its gradient (only a u* that follows the k at the particle
        changes with the particle's place) */
@@ -261,7 +264,7 @@ int swd_stats_at(const swd_model *m, const swd_local *at, swd_stats *out)
     /* below 1e-30 m/s there is no turbulence to speak of (and T_L = nu / u*^2
        would overflow) */
     if (at->y < 0.0 || !(ustar > 1e-30)) {
-        bulk_stats(at, s_iso, tl_iso, out);
+        bulk_stats(s_iso, ds_iso, tl_iso, out);
         out->yplus = at->y < 0.0 ? -1.0 : 0.0;
         return SWD_OK;
     }
@@ -281,7 +284,7 @@ int swd_stats_at(const swd_model *m, const swd_local *at, swd_stats *out)
         dwl = -1.0 / (yb - yl);
     }
     if (wl == 0.0) {
-        bulk_stats(at, s_iso, tl_iso, out);
+        bulk_stats(s_iso, ds_iso, tl_iso, out);
         return SWD_OK;
     }
     out->layer = wl;
@@ -296,9 +299,8 @@ int swd_stats_at(const swd_model *m, const swd_local *at, swd_stats *out)
     for (int i = 0; i < 3; i++) {
         out->sigma[i] = wl * ustar * f[i] + (1.0 - wl) * s_iso;
         const double dyp = ((i == 1 ? ustar : 0.0) + at->y * dus[i]) / at->nu;   /* d y+ / d x_i */
-        const double ds_iso = s_iso > 1e-300 ? at->grad_k[i] / (3.0 * s_iso) : 0.0;
         out->dsigma[i] = (dwl * (ustar * f[i] - s_iso) + wl * ustar * df[i]) * dyp
-                         + wl * f[i] * dus[i] + (1.0 - wl) * ds_iso;
+                         + wl * f[i] * dus[i] + (1.0 - wl) * ds_iso[i];
     }
     out->tl = isinf(tl_iso) ? tl_l : wl * tl_l + (1.0 - wl) * tl_iso;
     return SWD_OK;
@@ -340,9 +342,10 @@ int swd_advance(const swd_model *m, const swd_local *at, double dt, double tau_p
         /* the fluctuation the particle sees over the coming step is sigma at
            the step's midpoint, predicted with the fluid's own displacement
            sigma w dt / 2 (along the wall normal for y, along every direction
-           for k): sigma taken at the start instead leaves a bias of the order
-           of (dt / T_L) (d ln sigma / d ln y)^2 that piles tracers up in the
-           buffer layer (20 % at dt = 1 t+, 60 % at 2.4 t+; doc/deposition.md) */
+           for k): sigma taken at the start instead piles tracers up in the
+           buffer layer (20-30 % at steps of 1.2 t+, 50-65 % at 2.4 t+;
+           doc/deposition.md). Where the displacement changes neither y nor
+           k, the midpoint is the start */
         swd_local mid = *at;
         double dx[3];
         for (int i = 0; i < 3; i++)
@@ -352,7 +355,8 @@ int swd_advance(const swd_model *m, const swd_local *at, double dt, double tau_p
         mid.k = fmax(0.0, mid.k + mid.grad_k[0] * dx[0] + mid.grad_k[1] * dx[1] + mid.grad_k[2] * dx[2]);
         swd_stats sm;
         const double *sig = s.sigma;
-        if (isfinite(mid.y) && isfinite(mid.k) && swd_stats_at(m, &mid, &sm) == SWD_OK)
+        if ((mid.y != at->y || mid.k != at->k) && isfinite(mid.y) && isfinite(mid.k)
+            && swd_stats_at(m, &mid, &sm) == SWD_OK)
             sig = sm.sigma;
         /* 1 - exp(-dt/tau_p) without cancellation for dt << tau_p */
         const double f = -expm1(-dt / tau_p);

@@ -32,8 +32,8 @@
  * It is integrated exactly over a step of constant coefficients:
  *   w_i <- a w_i + sqrt(1 - a^2) xi_i + (1 - a) T_L d sigma_i / d x_i,
  *   a = exp(-dt / T_L), xi_i standard normal numbers given by the host.
- * The host moves the particle with the new fluctuation, sigma_i w_i at its
- * place at the start of the next step (the kick below); at a wall that
+ * The host moves the particle with the new fluctuation, sigma_i w_i with
+ * sigma_i at the coming step's midpoint (the kick below); at a wall that
  * reflects the particle the host mirrors w too (w_n -> |w_n|), so that the
  * fluid velocity it sees is reflected with it.
  *
