@@ -8,8 +8,9 @@
 # every y+ band within 10 % of uniform or three binomial standard errors (the
 # walk whose drift took u* as fixed, with k a step per cell, piled tracers up
 # 6-37 times in such bands), the mean flow alone too, the stochastic model
-# fails at least one band (the check can fail), the table and plot written, and
-# the refusals of bad options (exit 2, nothing written). Skipped (77) without
+# fails at least one band (the check can fail), a --zone's rows, the table and
+# plot written, the refusals of bad options (exit 2, nothing written) and of
+# bad wellMixedCheck entries (a FatalIOError naming the key). Skipped (77) without
 # OpenFOAM, the project's solver and wrapper, bin/snowdeposit or gnuplot.
 # shellcheck source=openfoam_test.sh
 . "$(dirname "$0")/openfoam_test.sh"
@@ -19,7 +20,7 @@
 check "the channel's flow (deposition.sh) exits 0" "[ $? -eq 0 ]"
 case_dir="$tmp/dep/wf/case"
 "$top/validation/wellmixed.sh" --case "$case_dir" --walls "(walls)" --dt 5.4e-5 --out "$tmp/wm" \
-    --models none,crw,crw-k,stochastic --parcels 4000 > "$tmp/log" 2>&1
+    --models none,crw,crw-k,stochastic --parcels 4000 --zone "core:0,0.005,0:0.0127,0.0077,0.0127" > "$tmp/log" 2>&1
 rc=$?
 cat "$tmp/log"
 check "wellmixed.sh exits 0" "[ $rc -eq 0 ]"
@@ -27,13 +28,16 @@ csv="$tmp/wm/wellmixed.csv"
 check "wellmixed.csv, .md, .png written" "[ -s '$csv' ] && [ -s '$tmp/wm/wellmixed.md' ] && [ -s '$tmp/wm/wellmixed.png' ]"
 for m in none crw crw-k; do
     check "$m: five bands" "[ \"\$(awk -F, -v m=$m '\$1 == m && \$2 == \"all\"' '$csv' | wc -l)\" -eq 5 ]"
+    # the rows with volume (a zone's bands beyond its walls are empty)
     # within 10 % or three binomial standard errors (two, the check's own verdict,
     # fails one band in twenty by chance alone: too often for a suite of 15 bands)
     check "$m: every band within 10 % or 3 standard errors" \
-        "! awk -F, -v m=$m '\$1 == m && (\$9 - 1 > 0.1 || 1 - \$9 > 0.1) && (\$9 - 1 > 3 * \$10 || 1 - \$9 > 3 * \$10)' '$csv' | grep -q ."
+        "! awk -F, -v m=$m '\$1 == m && \$6 > 0 && (\$9 - 1 > 0.1 || 1 - \$9 > 0.1) && (\$9 - 1 > 3 * \$10 || 1 - \$9 > 3 * \$10)' '$csv' | grep -q ."
     check "$m: bands from y+ 5 on within 10 %" \
-        "! awk -F, -v m=$m '\$1 == m && \$4 >= 5 && (\$9 < 0.9 || \$9 > 1.1)' '$csv' | grep -q ."
+        "! awk -F, -v m=$m '\$1 == m && \$6 > 0 && \$4 >= 5 && (\$9 < 0.9 || \$9 > 1.1)' '$csv' | grep -q ."
 done
+check "the zone 'core' has its rows, the walk's well mixed there" \
+    "[ \"\$(awk -F, '\$1 == \"crw\" && \$2 == \"core\"' '$csv' | wc -l)\" -eq 6 ] && awk -F, '\$1 == \"crw\" && \$2 == \"core\" && \$3 == \"whole\" { exit !(\$9 > 0.9 && \$9 < 1.1) }' '$csv'"
 check "stochasticDispersionRAS fails a band (the check can fail)" "awk -F, '\$1 == \"stochastic\" && \$12 == \"FAIL\"' '$csv' | grep -q ."
 # refusals: exit 2, nothing written
 for bad in "--walls walls" "--dt 0" "--dt abc" "--parcels 0" "--tl-multiple 1" "--models none,bogus" "--zone x:1,2:3,4,5" "--d 1"; do
@@ -42,6 +46,30 @@ for bad in "--walls walls" "--dt 0" "--dt abc" "--parcels 0" "--tl-multiple 1" "
     rc=$?
     check "refused: $bad (exit 2, nothing written; $(head -1 "$tmp/log.bad"))" "[ $rc -eq 2 ] && [ ! -e '$tmp/bad' ]"
 done
+# the cloud function's own refusals: a FatalIOError naming the key and value
+wm_case="$tmp/wm/case"
+props="$wm_case/constant/t_crwProperties"
+cp "$props" "$tmp/props.orig"
+bad_dict() {   # replacement of the wellMixed entry, expected message
+    sed "s|wellMixed { type wellMixedCheck;[^}]*}|wellMixed { type wellMixedCheck; $1 }|" "$tmp/props.orig" > "$props"
+    (cd "$wm_case" && timeout 120 pimpleUncoupledKinematicParcelFoam -frozen -clouds "(t_crw)" > "$tmp/log.dict" 2>&1)
+    local rc=$?
+    check "wellMixedCheck refuses $1 (exit $rc)" "[ $rc -ne 0 ] && [ $rc -ne 124 ] && grep -q 'FOAM FATAL' '$tmp/log.dict' && grep -qF -- \"$2\" '$tmp/log.dict'"
+}
+bad_dict "patches (walls); bands (0 5 1);" "bands"
+bad_dict "patches (walls); bands (1 5);" "must start at 0"
+bad_dict "patches (walls); zones (nonesuch);" "no cell zone 'nonesuch'"
+bad_dict "patches (walls); samplesPerCell 0;" "samplesPerCell 0 is outside"
+bad_dict "patches (walls); samplesPerCell -3;" "samplesPerCell -3 is outside"
+bad_dict "patches (walls); totalSamples 1e12;" "totalSamples 1e+12 is outside"
+bad_dict "patches (walls); Cmu nan;" "wellMixed.Cmu"
+bad_dict "patches (walls); Cmu 2;" "Cmu = 2"
+bad_dict "patches (walls); band (0 1);" "unknown key 'band'"
+bad_dict "patches (wal);" "'wal' matches no patch"
+bad_dict "patches (left);" "is a cyclic patch, not a wall"
+bad_dict "bands (0 1);" "patches"
+bad_dict "patches (walls); startTime;" "startTime"
+cp "$tmp/props.orig" "$props"
 "$top/validation/wellmixed.sh" --case "$tmp/nonesuch" --walls "(walls)" --dt 5.4e-5 --out "$tmp/bad" > "$tmp/log.bad" 2>&1
 check "refused: a case without a mesh" "[ $? -eq 2 ] && [ ! -e '$tmp/bad' ] && grep -q nonesuch '$tmp/log.bad'"
 [ "$fails" -eq 0 ] && { echo PASS; exit 0; } || { echo "$fails failure(s)"; exit 1; }

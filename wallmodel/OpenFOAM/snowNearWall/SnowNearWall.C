@@ -125,45 +125,7 @@ void Foam::SnowNearWall<CloudType>::readSettings(const dictionary& dict)
 
     // the walls
     const polyBoundaryMesh& bm = this->owner().mesh().boundaryMesh();
-    const wordRes sel(dict.get<wordRes>("patches"));
-    if (sel.empty())
-    {
-        FatalIOErrorInFunction(dict)
-            << "snowNearWall: 'patches' is empty: name the walls whose"
-            << " layer the model resolves" << exit(FatalIOError);
-    }
-    for (const wordRe& w : sel)
-    {
-        bool any = false;
-        for (const polyPatch& pp : bm)
-        {
-            any = any || w.match(pp.name());
-        }
-        if (!any)
-        {
-            FatalIOErrorInFunction(dict)
-                << "snowNearWall: patches: '" << w << "' matches no patch"
-                << " (patches: " << bm.names() << ")" << exit(FatalIOError);
-        }
-    }
-    DynamicList<label> ids;
-    for (const polyPatch& pp : bm)
-    {
-        if (sel.match(pp.name()))
-        {
-            ids.append(pp.index());
-        }
-    }
-    patches_ = ids;
-    for (const label pi : patches_)
-    {
-        if (bm[pi].coupled() || polyPatch::constraintType(bm[pi].type()))
-        {
-            FatalIOErrorInFunction(dict)
-                << "snowNearWall: patch " << bm[pi].name() << " is a "
-                << bm[pi].type() << " patch, not a wall" << exit(FatalIOError);
-        }
-    }
+    patches_ = snowWallPatches(bm, dict, "snowNearWall");
 
     // this object is the dispersion: the cloud's own must be off (the cloud
     // functions are built before the dispersion model: read its keyword)
@@ -233,16 +195,13 @@ void Foam::SnowNearWall<CloudType>::refreshFlow()
 {
     const CloudType& cloud = this->owner();
     const fvMesh& mesh = cloud.mesh();
-    const word turbName =
-        IOobject::groupName(turbulenceModel::propertiesName, cloud.U().group());
-    const turbulenceModel* turb =
-        mesh.template findObject<turbulenceModel>(turbName);
+    const turbulenceModel* turb = snowFindTurbulence(mesh, cloud.U().group());
     if (!turb)
     {
         FatalErrorInFunction
-            << "snowNearWall: no turbulence model " << turbName
-            << " in the registry: the model needs its k, epsilon and wall"
-            << " shear stress" << exit(FatalError);
+            << "snowNearWall: no turbulence model of "
+            << cloud.U().name() << " in the registry: the model needs its k,"
+            << " epsilon and wall shear stress" << exit(FatalError);
     }
     checkTurbulent(*turb);
     {
@@ -308,13 +267,8 @@ Foam::SnowNearWall<CloudType>::SnowNearWall
         // checked at set-up when the flow's turbulence model is already
         // there (most solvers make it before the cloud), else at the first
         // step
-        const word turbName =
-            IOobject::groupName
-            (
-                turbulenceModel::propertiesName, owner.U().group()
-            );
         const turbulenceModel* turb =
-            owner.mesh().template findObject<turbulenceModel>(turbName);
+            snowFindTurbulence(owner.mesh(), owner.U().group());
         if (turb)
         {
             checkTurbulent(*turb);
@@ -414,28 +368,11 @@ void Foam::SnowNearWall<CloudType>::postMove
     at.nu = nu_[celli];
     at.eps = max(epsilon_[celli], scalar(0));
     vector gradK(Zero);
-    {
-        const tetIndices tetIs = p.currentTetIndices();
-        const triFace tri = tetIs.faceTriIs(mesh);
-        const barycentric& c = p.coordinates();
-        const scalar v0 = k_[celli], v1 = kPoints_[tri[0]],
-            v2 = kPoints_[tri[1]], v3 = kPoints_[tri[2]];
-        at.k = max(v0*c[0] + v1*c[1] + v2*c[2] + v3*c[3], scalar(0));
-        const tetPointRef tet = tetIs.tet(mesh);
-        const vector ba = tet.b() - tet.a(), ca = tet.c() - tet.a(),
-            da = tet.d() - tet.a();
-        const tensor M
-        (
-            ba.x(), ba.y(), ba.z(),
-            ca.x(), ca.y(), ca.z(),
-            da.x(), da.y(), da.z()
-        );
-        const scalar dM = det(M);
-        if (mag(dM) > 1e-12*mag(ba)*mag(ca)*mag(da))
-        {
-            gradK = inv(M) & vector(v1 - v0, v2 - v0, v3 - v0);
-        }
-    }
+    snowCellPointValueGrad
+    (
+        mesh, k_, kPoints_, p.currentTetIndices(), p.coordinates(), at.k, gradK
+    );
+    at.k = max(at.k, scalar(0));
     const vector Uc = cloud.U()[celli];
     vector n(0, -1, 0);         // the wall's outward normal (any without a wall)
     const point& x = p.position();

@@ -10,6 +10,8 @@
 #include "Pstream.H"
 #include "OSspecific.H"
 
+#include "swd.h"
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class CloudType>
@@ -29,29 +31,10 @@ void Foam::WellMixedCheck<CloudType>::readSettings(const dictionary& dict)
                 << "' (known: " << known << ")" << exit(FatalIOError);
         }
     }
-    const polyBoundaryMesh& bm = this->owner().mesh().boundaryMesh();
-    const wordRes sel(dict.get<wordRes>("patches"));
-    DynamicList<label> ids;
-    for (const polyPatch& pp : bm)
-    {
-        if (sel.match(pp.name()))
-        {
-            if (pp.coupled() || polyPatch::constraintType(pp.type()))
-            {
-                FatalIOErrorInFunction(dict)
-                    << "wellMixedCheck: patch " << pp.name() << " is a "
-                    << pp.type() << " patch, not a wall" << exit(FatalIOError);
-            }
-            ids.append(pp.index());
-        }
-    }
-    if (ids.empty())
-    {
-        FatalIOErrorInFunction(dict)
-            << "wellMixedCheck: patches " << sel << " match no patch"
-            << " (patches: " << bm.names() << ")" << exit(FatalIOError);
-    }
-    patches_ = ids;
+    patches_ = snowWallPatches
+    (
+        this->owner().mesh().boundaryMesh(), dict, "wellMixedCheck"
+    );
 
     edges_ = dict.lookupOrDefault<scalarList>
     (
@@ -101,21 +84,37 @@ void Foam::WellMixedCheck<CloudType>::readSettings(const dictionary& dict)
     samplesPerCell_ = dict.lookupOrDefault<label>("samplesPerCell", 64);
     totalSamples_ = dict.lookupOrDefault<scalar>("totalSamples", 2e6);
     const scalar cmu = dict.lookupOrDefault<scalar>("Cmu", 0.09);
+    // each value named with its range (quiet comparisons: NaN refused)
+    const auto refuse = [&dict](const char* key, const scalar v, const char* range)
+    {
+        FatalIOErrorInFunction(dict)
+            << "wellMixedCheck: " << key << " " << v << " is outside " << range
+            << exit(FatalIOError);
+    };
+    if (samplesPerCell_ < 1 || samplesPerCell_ > 100000)
+    {
+        refuse("samplesPerCell", samplesPerCell_, "1 .. 100000");
+    }
+    if (!(totalSamples_ >= 0 && totalSamples_ <= 1e9))
+    {
+        refuse("totalSamples", totalSamples_, "0 .. 1e9");
+    }
+    if (!std::isfinite(startTime_))
+    {
+        refuse("startTime", startTime_, "the finite numbers");
+    }
+    // y+ of the bands: u* of the near-wall model's wallCell scale (the C
+    // core: max(u_tau, Cmu^(1/4) k_wallcell^(1/2)))
     if
     (
-        samplesPerCell_ < 1 || samplesPerCell_ > 100000
-     || !(totalSamples_ >= 0 && totalSamples_ <= 1e9)
-     || !(cmu >= 0 && cmu <= 1) || !std::isfinite(startTime_)
+        swd_set(model_, "Cmu", cmu) != SWD_OK
+     || swd_set_scale(model_, SWD_USTAR_WALLCELL) != SWD_OK
+     || swd_commit(model_) != SWD_OK
     )
     {
         FatalIOErrorInFunction(dict)
-            << "wellMixedCheck: samplesPerCell " << samplesPerCell_
-            << " (1 .. 100000), totalSamples " << totalSamples_
-            << " (0 .. 1e9), Cmu " << cmu << " (0 .. 1), startTime "
-            << startTime_ << " (finite): one is out of range"
-            << exit(FatalIOError);
+            << "wellMixedCheck: " << swd_errmsg(model_) << exit(FatalIOError);
     }
-    cmu4_ = ::pow(cmu, 0.25);
 }
 
 
@@ -148,19 +147,14 @@ template<class CloudType>
 void Foam::WellMixedCheck<CloudType>::refreshFlow()
 {
     const fvMesh& mesh = this->owner().mesh();
-    const word turbName =
-        IOobject::groupName
-        (
-            turbulenceModel::propertiesName, this->owner().U().group()
-        );
     const turbulenceModel* turb =
-        mesh.template findObject<turbulenceModel>(turbName);
+        snowFindTurbulence(mesh, this->owner().U().group());
     if (!turb)
     {
         FatalErrorInFunction
-            << "wellMixedCheck: no turbulence model " << turbName
-            << " in the registry: the bands need the wall's u*"
-            << exit(FatalError);
+            << "wellMixedCheck: no turbulence model of "
+            << this->owner().U().name() << " in the registry: the bands need"
+            << " the wall's u*" << exit(FatalError);
     }
     scalarField uTau;
     snowFrictionVelocity(*turb, patches_, uTau);
@@ -174,10 +168,20 @@ void Foam::WellMixedCheck<CloudType>::refreshFlow()
         {
             const label f = pp.start() + i;
             const label bf = f - mesh.nInternalFaces();
-            uStar_[bf] = max
-            (
-                uTau[bf], cmu4_*sqrt(max(k[mesh.faceOwner()[f]], scalar(0)))
-            );
+            swd_local at = {};
+            at.u_tau = uTau[bf];
+            at.nu = 1;
+            at.k_wall = max(k[mesh.faceOwner()[f]], scalar(0));
+            swd_stats st;
+            if (swd_stats_at(model_, &at, &st) != SWD_OK)
+            {
+                FatalErrorInFunction
+                    << "wellMixedCheck: the wall face " << f << " of "
+                    << pp.name() << ": u_tau " << at.u_tau << ", k "
+                    << at.k_wall << ": not a turbulent wall layer"
+                    << exit(FatalError);
+            }
+            uStar_[bf] = st.ustar;
         }
     }
 }
@@ -278,10 +282,15 @@ Foam::WellMixedCheck<CloudType>::WellMixedCheck
 )
 :
     CloudFunctionObject<CloudType>(dict, owner, modelName, typeName),
+    model_(swd_alloc()),
     haveReference_(false),
     parcelTime_(0),
     window_(0)
 {
+    if (!model_)
+    {
+        FatalErrorInFunction << "wellMixedCheck: out of memory" << exit(FatalError);
+    }
     readSettings(this->coeffDict());
     nearestFace_ = snowNearestWallFace(owner.mesh(), patches_);
     occupancy_.setSize(nSlots(), Zero);
@@ -296,6 +305,7 @@ Foam::WellMixedCheck<CloudType>::WellMixedCheck
 )
 :
     CloudFunctionObject<CloudType>(wm),
+    model_(swd_alloc()),
     patches_(wm.patches_),
     edges_(wm.edges_),
     zoneNames_(wm.zoneNames_),
@@ -303,7 +313,6 @@ Foam::WellMixedCheck<CloudType>::WellMixedCheck
     startTime_(wm.startTime_),
     samplesPerCell_(wm.samplesPerCell_),
     totalSamples_(wm.totalSamples_),
-    cmu4_(wm.cmu4_),
     nearestFace_(wm.nearestFace_),
     uStar_(wm.uStar_),
     nu_(wm.nu_),
@@ -314,7 +323,17 @@ Foam::WellMixedCheck<CloudType>::WellMixedCheck
     batch_(wm.batch_),
     parcelTime_(wm.parcelTime_),
     window_(wm.window_)
-{}
+{
+    // a fresh C model with the same settings (the core has no copy)
+    readSettings(this->coeffDict());
+}
+
+
+template<class CloudType>
+Foam::WellMixedCheck<CloudType>::~WellMixedCheck()
+{
+    swd_free(model_);
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
