@@ -69,7 +69,9 @@ done
 [ -n "$out" ] || die2 "--out DIR is required"
 [ -f "$case_in/constant/polyMesh/owner" ] || [ -f "$case_in/constant/polyMesh/owner.gz" ] \
     || die2 "--case: '$case_in' has no mesh (constant/polyMesh/owner)"
-[[ "$walls" =~ ^\(.*\)$ ]] || die2 "--walls: '$walls' is not a patch list in parentheses"
+[[ "$walls" =~ ^\(\ *[A-Za-z_][A-Za-z0-9_.:-]*(\ +[A-Za-z_][A-Za-z0-9_.:-]*)*\ *\)$ ]] \
+    || die2 "--walls: '$walls' is not a list of patch names in parentheses, e.g. \"(walls)\""
+walls_names=${walls#(}; walls_names=${walls_names%)}
 num='^[0-9]*\.?[0-9]+([eE][-+]?[0-9]+)?$'
 [[ "$dt" =~ $num ]] && awk -v x="$dt" 'BEGIN { exit !(x > 0 && x < 1) }' || die2 "--dt: '$dt' is not a step in (0, 1) s"
 [[ "$parcels" =~ ^[1-9][0-9]{0,6}$ ]] || die2 "--parcels: '$parcels' is not a whole number in 1..9999999"
@@ -167,6 +169,10 @@ dep_estimate wellmixed.sh "$parcels" "${#modelList[@]}" "$nsteps steps of $dt s 
 read -r -a wallPatches <<< "$(awk '/^[ \t]*[A-Za-z_][A-Za-z0-9_.:-]*[ \t]*$/ { n = $1 } /^[ \t]*type[ \t]+wall;/ { printf "%s ", n }' "$c/constant/polyMesh/boundary")"
 read -r -a openPatches <<< "$(awk '/^[ \t]*[A-Za-z_][A-Za-z0-9_.:-]*[ \t]*$/ { n = $1 } /^[ \t]*type[ \t]+patch;/ { printf "%s ", n }' "$c/constant/polyMesh/boundary")"
 [ "${#wallPatches[@]}" -ge 1 ] || { echo "wellmixed.sh: the mesh has no wall patch" >&2; exit 2; }
+for w in ${walls_names}; do
+    case " ${wallPatches[*]} " in *" $w "*) ;;
+        *) echo "wellmixed.sh: --walls: '$w' is not a wall patch of the mesh (walls: ${wallPatches[*]})" >&2; exit 2 ;; esac
+done
 : > "$c/clouds.txt"
 for m in "${modelList[@]}"; do
     name="t_${m//-/_}"
