@@ -40,7 +40,7 @@ check "the zone 'core' has its rows, the walk's well mixed there" \
     "[ \"\$(awk -F, '\$1 == \"crw\" && \$2 == \"core\"' '$csv' | wc -l)\" -eq 6 ] && awk -F, '\$1 == \"crw\" && \$2 == \"core\" && \$3 == \"whole\" { exit !(\$9 > 0.9 && \$9 < 1.1) }' '$csv'"
 check "stochasticDispersionRAS fails a band (the check can fail)" "awk -F, '\$1 == \"stochastic\" && \$12 == \"FAIL\"' '$csv' | grep -q ."
 # refusals: exit 2, nothing written
-for bad in "--walls walls" "--walls (nonesuch)" "--walls (walls left)" "--dt 0" "--dt abc" "--parcels 0" "--tl-multiple 1" "--models none,bogus" "--zone x:1,2:3,4,5" "--d 1"; do
+for bad in "--walls walls" "--walls (nonesuch)" "--walls (left)" "--dt 0" "--dt abc" "--parcels 0" "--tl-multiple 1" "--models none,bogus" "--zone x:1,2:3,4,5" "--d 1"; do
     # shellcheck disable=SC2086
     "$top/validation/wellmixed.sh" --case "$case_dir" --walls "(walls)" --dt 5.4e-5 --out "$tmp/bad" $bad > "$tmp/log.bad" 2>&1
     rc=$?
