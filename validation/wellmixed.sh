@@ -247,7 +247,7 @@ while read -r name m; do
     [ -n "$f" ] || { echo "wellmixed.sh: cloud $name wrote no wellMixed.dat" >&2; exit 1; }
     awk -v m="$m" '!/^#/ && NF == 11 { printf "%s", m; for (i = 1; i <= NF; i++) printf ",%s", $i; print "" }' "$f" >> "$csv"
 done < "$c/clouds.txt"
-"$here/wellmixed-report" --force --out "$tmp" "$csv" || { echo "wellmixed.sh: the report failed" >&2; exit 1; }
+"$here/wellmixed-report" --force --title "tracer-limit check: $case_in" --out "$tmp" "$csv" || { echo "wellmixed.sh: the report failed" >&2; exit 1; }
 echo "wellmixed.sh: done in $(( $(date +%s) - t_start )) s"
 cat "$tmp/wellmixed.md"
 outdir_commit
