@@ -2,6 +2,7 @@
 #include "swp_nearwall.h"
 
 #include <math.h>
+#include <stddef.h>
 
 /* wall-normal rms fit v'+ = A y^2 / (1 + B y^P) (Guha 1997) */
 #define V_A 0.005
@@ -17,53 +18,74 @@ static int bad(double yplus)
     return !isfinite(yplus) || yplus < 0.0;
 }
 
-/* The shape of every rms fit: a y^m / (1 + b y^p) (NaN for a bad y+). */
-static double rms_fit(double yplus, double a, int m, double b, double p)
+/* The three rms fits, each a y^m / (1 + b y^p): u' and w' (Kallio & Reeks
+   1989), v' (Guha 1997). */
+static const struct {
+    double a, b, p;
+    int m;
+} fits[3] = {
+    { 0.4, 0.0239, 1.496, 1 },
+    { V_A, V_B, V_P, 2 },
+    { 0.19, 0.0361, 1.21, 1 },
+};
+
+/* fit i at y+ (NaN for a bad y+) and, when slope is given, its derivative
+   a y^(m-1) (m (1 + b y^p) - p b y^p) / (1 + b y^p)^2: one pow for both */
+static double fit(int i, double yplus, double *slope)
 {
-    if (bad(yplus))
+    if (bad(yplus)) {
+        if (slope)
+            *slope = NAN;
         return NAN;
-    return a * (m == 2 ? yplus * yplus : yplus) / (1.0 + b * pow(yplus, p));
+    }
+    const double bp = fits[i].b * pow(yplus, fits[i].p);
+    const double den = 1.0 + bp;
+    const double ym1 = fits[i].m == 2 ? yplus : 1.0;   /* y^(m-1) */
+    if (slope)
+        *slope = fits[i].a * ym1 * (fits[i].m * den - fits[i].p * bp) / (den * den);
+    return fits[i].a * (fits[i].m == 2 ? yplus * yplus : yplus) / den;
 }
 
 double swp_urms_plus(double yplus)
 {
-    return rms_fit(yplus, 0.4, 1, 0.0239, 1.496);
+    return fit(0, yplus, NULL);
 }
 
 double swp_vrms_plus(double yplus)
 {
-    return rms_fit(yplus, V_A, 2, V_B, V_P);
+    return fit(1, yplus, NULL);
 }
 
 double swp_wrms_plus(double yplus)
 {
-    return rms_fit(yplus, 0.19, 1, 0.0361, 1.21);
-}
-
-/* d/dy+ of every rms fit a y^m / (1 + b y^p):
-   a y^(m-1) (m (1 + b y^p) - p b y^p) / (1 + b y^p)^2 */
-static double rms_fit_deriv(double yplus, double a, int m, double b, double p)
-{
-    if (bad(yplus))
-        return NAN;
-    const double bp = b * pow(yplus, p);
-    const double den = 1.0 + bp;
-    return a * (m == 2 ? yplus : 1.0) * (m * den - p * bp) / (den * den);
+    return fit(2, yplus, NULL);
 }
 
 double swp_durms_plus(double yplus)
 {
-    return rms_fit_deriv(yplus, 0.4, 1, 0.0239, 1.496);
+    double d;
+    fit(0, yplus, &d);
+    return d;
 }
 
 double swp_dvrms_plus(double yplus)
 {
-    return rms_fit_deriv(yplus, V_A, 2, V_B, V_P);
+    double d;
+    fit(1, yplus, &d);
+    return d;
 }
 
 double swp_dwrms_plus(double yplus)
 {
-    return rms_fit_deriv(yplus, 0.19, 1, 0.0361, 1.21);
+    double d;
+    fit(2, yplus, &d);
+    return d;
+}
+
+void swp_rms_plus(double yplus, double rms[3], double slope[3])
+{
+    for (int i = 0; i < 3; i++)
+        rms[i] = fit(i, yplus, slope ? &slope[i] : NULL);
 }
 
 double swp_tl_plus(double yplus)

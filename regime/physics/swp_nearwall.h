@@ -43,6 +43,10 @@ double swp_wrms_plus(double yplus);
 double swp_durms_plus(double yplus);
 double swp_dvrms_plus(double yplus);
 double swp_dwrms_plus(double yplus);
+/* All three at once, u', v', w' in rms[0..2] and, when slope is not NULL,
+ * their derivatives d/dy+ in slope[0..2] (the random walk's hot path: one
+ * power a fit for both). NaN for a bad y+. */
+void swp_rms_plus(double yplus, double rms[3], double slope[3]);
 /* Lagrangian integral time scale of the fluid, T_L+(y+). */
 double swp_tl_plus(double yplus);
 /* Reichardt's mean velocity u+(y+) and its derivative du+/dy+. */

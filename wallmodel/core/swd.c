@@ -230,10 +230,10 @@ static void bulk_stats(double s_iso, const double ds_iso[3], double tl_iso, swd_
     out->layer = 0.0;
 }
 
-int swd_stats_at(const swd_model *m, const swd_local *at, swd_stats *out)
+/* the statistics at a place; with slope 0 only sigma, T_L, u*, y+ and the
+   layer's weight (the step's midpoint needs sigma alone), dsigma left 0 */
+static int stats(const swd_model *m, const swd_local *at, swd_stats *out, int slope)
 {
-    if (!swd_ready(m))
-        return SWD_ENOTREADY;
     if (!isfinite(at->y) || !finite_nonneg(at->u_tau) || !finite_pos(at->nu)
         || !finite_nonneg(at->k) || !finite_nonneg(at->eps) || !finite_nonneg(at->k_wall)
         || !isfinite(at->grad_k[0]) || !isfinite(at->grad_k[1]) || !isfinite(at->grad_k[2]))
@@ -293,17 +293,28 @@ int swd_stats_at(const swd_model *m, const swd_local *at, swd_stats *out)
          sigma_i = wl(y+) u* f_i(y+) + (1 - wl(y+)) sqrt(2k/3),  y+ = y u* / nu,
        and its derivative along x_j by the chain rule through y (j = 1 only),
        u* and k */
-    const double f[3] = { swp_urms_plus(yp), swp_vrms_plus(yp), swp_wrms_plus(yp) };
-    const double df[3] = { swp_durms_plus(yp), swp_dvrms_plus(yp), swp_dwrms_plus(yp) };
+    double f[3], df[3] = { 0.0, 0.0, 0.0 };
+    swp_rms_plus(yp, f, slope ? df : NULL);
     const double tl_l = swp_tl_plus(yp) * at->nu / (ustar * ustar);
     for (int i = 0; i < 3; i++) {
         out->sigma[i] = wl * ustar * f[i] + (1.0 - wl) * s_iso;
+        if (!slope) {
+            out->dsigma[i] = 0.0;
+            continue;
+        }
         const double dyp = ((i == 1 ? ustar : 0.0) + at->y * dus[i]) / at->nu;   /* d y+ / d x_i */
         out->dsigma[i] = (dwl * (ustar * f[i] - s_iso) + wl * ustar * df[i]) * dyp
                          + wl * f[i] * dus[i] + (1.0 - wl) * ds_iso[i];
     }
     out->tl = isinf(tl_iso) ? tl_l : wl * tl_l + (1.0 - wl) * tl_iso;
     return SWD_OK;
+}
+
+int swd_stats_at(const swd_model *m, const swd_local *at, swd_stats *out)
+{
+    if (!swd_ready(m))
+        return SWD_ENOTREADY;
+    return stats(m, at, out, 1);
 }
 
 int swd_advance(const swd_model *m, const swd_local *at, double dt, double tau_p, double w[3],
@@ -356,7 +367,7 @@ int swd_advance(const swd_model *m, const swd_local *at, double dt, double tau_p
         swd_stats sm;
         const double *sig = s.sigma;
         if ((mid.y != at->y || mid.k != at->k) && isfinite(mid.y) && isfinite(mid.k)
-            && swd_stats_at(m, &mid, &sm) == SWD_OK)
+            && stats(m, &mid, &sm, 0) == SWD_OK)
             sig = sm.sigma;
         /* 1 - exp(-dt/tau_p) without cancellation for dt << tau_p */
         const double f = -expm1(-dt / tau_p);
