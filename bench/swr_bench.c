@@ -15,23 +15,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "sw_bench.h"
 #include "swr_collide.h"
 #include "swr_params.h"
 #include "swt_io.h"
 #include "swt_map.h"
 #include "swt_vcrit.h"
 
-static int cmp(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, cmp);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 typedef struct { const swr_model *m; const swt_vcrit_opts *o; const double *d; double *vc; } vc_ctx;
 static void vc_one(void *p, int k)
@@ -69,8 +59,8 @@ static double time_collisions(const swr_model *m, const double *d, const double 
         tc[r] = (swt_thread_cpu() - c0) / n;
     }
     *steps_mean = (double)steps / (double)ncoll;
-    *cpu_median = median(tc, reps);
-    return median(t, reps);
+    *cpu_median = sw_bench_median(tc, reps);
+    return sw_bench_median(t, reps);
 }
 
 /* max relative error of v_crit at 3 diameters against the reference values */
@@ -131,7 +121,7 @@ int main(int argc, char **argv)
         swt_parallel_for(ND, threads, vc_one, &c);
         t[r] = swt_now() - t0;
     }
-    double t_vcrit = median(t, reps);
+    double t_vcrit = sw_bench_median(t, reps);
 
     /* one collision: impacts at 0.5, 0.9, 1.1, 2 v_crit for every diameter */
     double steps_mean = 0.0, c_coll = 0.0;
@@ -199,7 +189,7 @@ int main(int argc, char **argv)
         swt_interface_free(&it);
         swt_map_free(mp);
     }
-    double t_grid = median(tg, reps), t_map = median(tt, reps);
+    double t_grid = sw_bench_median(tg, reps), t_map = sw_bench_median(tt, reps);
 
     printf("swr_bench: %d repetitions, %d threads, accuracy %g steps per contact time\n",
            reps, threads, p.accuracy);

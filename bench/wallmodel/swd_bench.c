@@ -6,24 +6,12 @@
  *
  * Usage: swd_bench [REPS]   (default 7; each repetition 2 million calls)
  * Not a test: nothing is asserted. */
+#include "sw_bench.h"
 #include "swd.h"
 
 #include <stdio.h>
 #include <stdlib.h>
-#include <time.h>
 
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return t.tv_sec + 1e-9 * t.tv_nsec;
-}
-
-static int cmp(const void *a, const void *b)
-{
-    const double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
 
 int main(int argc, char **argv)
 {
@@ -59,15 +47,14 @@ int main(int argc, char **argv)
         double w[3] = { 0.1, -0.2, 0.3 }, kick[3];
         const double xi[3] = { 0.3, -0.1, 0.2 };
         for (int r = 0; r < reps; r++) {
-            const double t0 = now();
+            const double t0 = sw_bench_now();
             for (int i = 0; i < N; i++) {
                 swd_advance(m, &at, 1e-5, 1e-4, w, xi, kick, NULL);
                 sink += kick[1];
             }
-            t[r] = (now() - t0) / N * 1e9;
+            t[r] = (sw_bench_now() - t0) / N * 1e9;
         }
-        qsort(t, reps, sizeof *t, cmp);
-        printf("%-28s %8.1f ns\n", places[p].name, t[reps / 2]);
+        printf("%-28s %8.1f ns\n", places[p].name, sw_bench_median(t, reps));
     }
     free(t);
     swd_free(m);

@@ -17,26 +17,14 @@
  * against the classic rebound (Thornton / constant e_n, reboundTangential).
  * Exit 2 on bad input.
  */
+#include "sw_bench.h"
 #include "sww.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return t.tv_sec + 1e-9 * t.tv_nsec;
-}
-
-static int cmp(const void *a, const void *b)
-{
-    const double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
 
 /* Median ns per call of sww_decide (cov NULL) or sww_decide_blend(m, cov, w). */
 static double run_blend(const sww_model *m, const sww_model *cov, double w, const sww_impact *in,
@@ -45,17 +33,16 @@ static double run_blend(const sww_model *m, const sww_model *cov, double w, cons
     double t[64];
     for (int r = 0; r < reps; r++) {
         long f[3] = { 0, 0, 0 };
-        const double t0 = now();
+        const double t0 = sw_bench_now();
         for (long i = 0; i < n; i++) {
             sww_outcome o;
             if ((cov ? sww_decide_blend(m, cov, w, &in[i], &o) : sww_decide(m, &in[i], &o)) == SWW_OK)
                 f[o.fate]++;
         }
-        t[r] = (now() - t0) / n * 1e9;
+        t[r] = (sw_bench_now() - t0) / n * 1e9;
         memcpy(fates, f, sizeof f);
     }
-    qsort(t, reps, sizeof *t, cmp);
-    return t[reps / 2];
+    return sw_bench_median(t, reps);
 }
 
 static double run(const sww_model *m, const sww_impact *in, long n, int reps, long *fates)
