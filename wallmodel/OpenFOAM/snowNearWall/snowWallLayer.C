@@ -1,5 +1,5 @@
 /*---------------------------------------------------------------------------*\
-  SnowWall: wallmodel/OpenFOAM/wellMixedCheck/snowWallLayer.C (see the .H)
+  SnowWall: wallmodel/OpenFOAM/snowNearWall/snowWallLayer.C (see the .H)
 \*---------------------------------------------------------------------------*/
 #include "snowWallLayer.H"
 #include "turbulenceModel.H"
