@@ -1,0 +1,251 @@
+/* test_swf.c - the flux-consistent velocity in a hexahedral cell
+ * (wallmodel/core/swf.h) against closed forms on parallelepipeds: the face
+ * fluxes it carries, its divergence, the flows it reproduces, a wall. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include "swf.h"
+
+static void cross(const double a[3], const double b[3], double c[3])
+{
+    c[0] = a[1] * b[2] - a[2] * b[1];
+    c[1] = a[2] * b[0] - a[0] * b[2];
+    c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+static double dot(const double a[3], const double b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/* A parallelepiped o + i a + j b + k c (i, j, k in [0, 1]): its face centres and
+ * outward area vectors, pair k the faces normal to edge k. */
+typedef struct {
+    double o[3], edge[3][3];
+    double s_hi[3][3];   /* outward area vector of face hi of pair k; lo: minus it */
+} box;
+
+static void box_make(box *b, const double o[3], const double a[3], const double bb[3],
+                     const double c[3], swf_hex *h)
+{
+    for (int i = 0; i < 3; i++) {
+        b->o[i] = o[i];
+        b->edge[0][i] = a[i];
+        b->edge[1][i] = bb[i];
+        b->edge[2][i] = c[i];
+    }
+    double bc[3];
+    cross(bb, c, bc);
+    const double sg = dot(a, bc) > 0 ? 1.0 : -1.0;
+    for (int k = 0; k < 3; k++) {
+        const double *e1 = b->edge[(k + 1) % 3], *e2 = b->edge[(k + 2) % 3];
+        double s[3];
+        cross(e1, e2, s);
+        for (int i = 0; i < 3; i++) {
+            b->s_hi[k][i] = sg * s[i];
+            h->c_lo[k][i] = o[i] + 0.5 * (e1[i] + e2[i]);
+            h->c_hi[k][i] = h->c_lo[k][i] + b->edge[k][i];
+        }
+    }
+}
+
+/* the point at fractions f of the edges */
+static void box_point(const box *b, const double f[3], double x[3])
+{
+    for (int i = 0; i < 3; i++)
+        x[i] = b->o[i] + f[0] * b->edge[0][i] + f[1] * b->edge[1][i] + f[2] * b->edge[2][i];
+}
+
+/* the exact fluxes of a velocity linear in x (exact on a plane face: the
+ * value at its centre times its area vector) */
+typedef void (*field_fn)(const double x[3], double u[3]);
+static void box_fluxes(const box *b, swf_hex *h, field_fn f)
+{
+    for (int k = 0; k < 3; k++) {
+        double u[3];
+        f(h->c_hi[k], u);
+        h->phi_hi[k] = dot(u, b->s_hi[k]);
+        f(h->c_lo[k], u);
+        h->phi_lo[k] = -dot(u, b->s_hi[k]);
+    }
+}
+
+static const double O[3] = {0.3, -1.2, 2.0};
+static const double A[3] = {0.8, 0.1, 0.0};
+static const double B[3] = {0.2, 0.5, 0.05};   /* a sheared, graded cell */
+static const double C[3] = {0.0, -0.03, 0.3};
+
+/* strain plus a uniform stream: u_k of the cell's own axes only */
+static double ga[3], gb[3], gc[3];   /* the dual basis of A, B, C */
+static void strain(const double x[3], double u[3])
+{
+    /* u = U0 + 2 (xi_a - .5) A - 1.5 (xi_b - .5) B - 0.5 (xi_c - .5) C: each
+       component along its own edge linear in its own coordinate, div 0 */
+    const double r[3] = {x[0] - O[0], x[1] - O[1], x[2] - O[2]};
+    const double xa = dot(ga, r), xb = dot(gb, r), xc = dot(gc, r);
+    for (int i = 0; i < 3; i++)
+        u[i] = 0.7 * A[i] + 0.4 * B[i] - 0.2 * C[i] + 2.0 * xa * A[i] - 1.5 * xb * B[i] - 0.5 * xc * C[i];
+}
+
+static void dual_basis(void)
+{
+    double bc[3], ca[3], ab[3];
+    cross(B, C, bc);
+    cross(C, A, ca);
+    cross(A, B, ab);
+    const double v = dot(A, bc);
+    for (int i = 0; i < 3; i++) {
+        ga[i] = bc[i] / v;
+        gb[i] = ca[i] / v;
+        gc[i] = ab[i] / v;
+    }
+}
+
+/* a flow the cell's own axes carry (strain along them, a stagnation flow) is
+ * rebuilt exactly from its six fluxes, at any point of the cell */
+static void reproduces_strain(void **s)
+{
+    (void)s;
+    dual_basis();
+    box b;
+    swf_hex h;
+    box_make(&b, O, A, B, C, &h);
+    box_fluxes(&b, &h, strain);
+    assert_true(fabs(swf_hex_divergence(&h)) < 1e-12);
+    assert_true(swf_hex_imbalance(&h) < 1e-13);
+    for (double f0 = 0; f0 <= 1.0; f0 += 0.25)
+        for (double f1 = 0; f1 <= 1.0; f1 += 0.5)
+            for (double f2 = 0.1; f2 <= 1.0; f2 += 0.4) {
+                const double f[3] = {f0, f1, f2};
+                double x[3], u[3], ref[3];
+                box_point(&b, f, x);
+                strain(x, ref);
+                assert_int_equal(swf_hex_velocity(&h, x, u), SWF_OK);
+                for (int i = 0; i < 3; i++) assert_true(fabs(u[i] - ref[i]) < 1e-12);
+            }
+}
+
+/* whatever the fluxes (continuity or not), the field carries each face's
+ * flux through it at every point of the face; its divergence, by central
+ * differences, is sum(phi) / V; and a face of zero flux (a wall) has no
+ * normal velocity on it */
+static void carries_the_fluxes(void **s)
+{
+    (void)s;
+    box b;
+    swf_hex h;
+    box_make(&b, O, A, C, B, &h);   /* a left-handed ordering of the edges */
+    const double lo[3] = {0.3, 0.0, -0.2}, hi[3] = {-0.1, 0.45, 0.1};
+    for (int k = 0; k < 3; k++) {
+        h.phi_lo[k] = lo[k];
+        h.phi_hi[k] = hi[k];
+    }
+    for (int k = 0; k < 3; k++)
+        for (double p = 0.1; p < 1.0; p += 0.4)
+            for (double q = 0.1; q < 1.0; q += 0.4) {
+                double f[3];
+                f[k] = 1.0;
+                f[(k + 1) % 3] = p;
+                f[(k + 2) % 3] = q;
+                double x[3], u[3];
+                box_point(&b, f, x);
+                assert_int_equal(swf_hex_velocity(&h, x, u), SWF_OK);
+                assert_true(fabs(dot(u, b.s_hi[k]) - h.phi_hi[k]) < 1e-12);
+                f[k] = 0.0;
+                box_point(&b, f, x);
+                assert_int_equal(swf_hex_velocity(&h, x, u), SWF_OK);
+                assert_true(fabs(-dot(u, b.s_hi[k]) - h.phi_lo[k]) < 1e-12);
+                if (k == 1) assert_true(fabs(dot(u, b.s_hi[1])) < 1e-12);   /* the wall */
+            }
+    double vol_bc[3];
+    cross(C, B, vol_bc);
+    const double vol = fabs(dot(A, vol_bc));
+    const double f[3] = {0.4, 0.6, 0.3};
+    double x[3], div = 0.0;
+    box_point(&b, f, x);
+    for (int i = 0; i < 3; i++) {
+        const double d = 1e-6;
+        double xp[3] = {x[0], x[1], x[2]}, xm[3] = {x[0], x[1], x[2]}, up[3], um[3];
+        xp[i] += d;
+        xm[i] -= d;
+        assert_int_equal(swf_hex_velocity(&h, xp, up), SWF_OK);
+        assert_int_equal(swf_hex_velocity(&h, xm, um), SWF_OK);
+        div += (up[i] - um[i]) / (2 * d);
+    }
+    assert_true(fabs(div - 0.55 / vol) < 1e-6 * 0.55 / vol);
+    assert_true(fabs(swf_hex_divergence(&h) - 0.55 / vol) < 1e-12 * 0.55 / vol);
+    assert_true(fabs(swf_hex_imbalance(&h) - 0.55 / 1.15) < 1e-14);
+}
+
+/* a shear across the cell is seen as its mean over the cell (first order) */
+static void shear(const double x[3], double u[3])
+{
+    u[0] = 3.0 * x[1];
+    u[1] = 0.0;
+    u[2] = 0.0;
+}
+static void shear_is_the_mean(void **s)
+{
+    (void)s;
+    const double o[3] = {0, 1, 0}, a[3] = {1, 0, 0}, bb[3] = {0, 0.2, 0}, c[3] = {0, 0, 1};
+    box b;
+    swf_hex h;
+    box_make(&b, o, a, bb, c, &h);
+    box_fluxes(&b, &h, shear);
+    for (double f1 = 0; f1 <= 1.0; f1 += 0.25) {
+        const double f[3] = {0.3, f1, 0.5};
+        double x[3], u[3];
+        box_point(&b, f, x);
+        assert_int_equal(swf_hex_velocity(&h, x, u), SWF_OK);
+        assert_true(fabs(u[0] - 3.3) < 1e-12 && fabs(u[1]) < 1e-12 && fabs(u[2]) < 1e-12);
+    }
+    /* outside the cell the coordinates are clipped: no extrapolated flux */
+    const double far[3] = {5.0, 1.1, 0.5};
+    double u[3];
+    assert_int_equal(swf_hex_velocity(&h, far, u), SWF_OK);
+    assert_true(fabs(u[0] - 3.3) < 1e-12);
+}
+
+/* bad input: an error code, the output untouched, never NaN */
+static void bad_input(void **s)
+{
+    (void)s;
+    box b;
+    swf_hex h;
+    box_make(&b, O, A, B, C, &h);
+    for (int k = 0; k < 3; k++) h.phi_lo[k] = h.phi_hi[k] = 0.1;
+    double u[3] = {7, 7, 7};
+    const double nanx[3] = {NAN, 0, 0};
+    assert_int_equal(swf_hex_velocity(&h, nanx, u), SWF_EINVAL);
+    assert_true(u[0] == 7 && u[1] == 7 && u[2] == 7);
+    assert_int_equal(swf_hex_velocity(NULL, O, u), SWF_EINVAL);
+    h.phi_hi[2] = INFINITY;
+    assert_int_equal(swf_hex_velocity(&h, O, u), SWF_EINVAL);
+    assert_true(isnan(swf_hex_divergence(&h)) && isnan(swf_hex_imbalance(&h)));
+    h.phi_hi[2] = 0.1;
+    /* flat: the third pair's vector in the plane of the other two */
+    for (int i = 0; i < 3; i++) {
+        h.c_lo[2][i] = 0.0;
+        h.c_hi[2][i] = A[i] + B[i];
+    }
+    assert_int_equal(swf_hex_velocity(&h, O, u), SWF_EDEGENERATE);
+    assert_true(isnan(swf_hex_divergence(&h)));
+    for (int i = 0; i < 3; i++) h.c_hi[2][i] = h.c_lo[2][i];
+    assert_int_equal(swf_hex_velocity(&h, O, u), SWF_EDEGENERATE);
+    assert_true(u[0] == 7 && u[1] == 7 && u[2] == 7);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(reproduces_strain),
+        cmocka_unit_test(carries_the_fluxes),
+        cmocka_unit_test(shear_is_the_mean),
+        cmocka_unit_test(bad_input),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,64 @@
+/* swf.h - SnowWall flux-consistent velocity in a hexahedral cell: the fluid
+ * velocity at a point of a cell rebuilt from the volume fluxes through the
+ * cell's six faces (the lowest-order Raviart-Thomas field, RT0), for particle
+ * tracking that keeps tracers well mixed next to walls (doc/deposition.md,
+ * "The tracking next to a wall").
+ *
+ * Why: a finite-volume solution knows the flux through every face exactly
+ * (its continuity holds face by face) but the velocity only at cell centres.
+ * The usual interpolation from cell and point values (OpenFOAM's cellPoint)
+ * takes the wall's points at zero velocity, so in a cell next to a wall both
+ * the tangential and the wall-normal velocity fall linearly to the wall; the
+ * tangential flux that continuity needs is not there, the interpolated field
+ * converges (its divergence is of the order of the cell's normal velocity over
+ * its height) and tracers gather in a thin band at the wall, tenfold on a
+ * wall-function mesh where the flow meets the wall. The field rebuilt here has
+ *   u(x) = sum_k F_k(xi_k) e_k / |V_E|,
+ *   F_k(xi) = (1 - xi) (-phi_lo,k) + xi phi_hi,k    (the flux along +e_k),
+ * e_k = c_hi,k - c_lo,k the vector between the centres of the k-th pair of
+ * opposite faces, V_E = e_0 . (e_1 x e_2), xi_k in [0, 1] the point's
+ * coordinate along e_k (through the dual basis of e_0, e_1, e_2, from the
+ * mean of the six face centres), phi the outward volume fluxes. On a
+ * parallelepiped it is exact in three ways: its flux through each face is
+ * that face's phi (so its normal component is continuous with the
+ * neighbour's and zero on a wall, phi = 0 there), its divergence is
+ * sum(phi) / V_E everywhere in the cell (zero where the flow's continuity
+ * holds), and a velocity linear along its own direction (u_k depending on
+ * xi_k alone: strain, stagnation flow) is reproduced; a shear across a cell
+ * is seen as its mean (first order). On a cell that is not a parallelepiped
+ * the three hold as far as the cell is one; xi is clipped to [0, 1].
+ *
+ * Pure functions, no state: thread-safe. */
+#ifndef SWF_H
+#define SWF_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+enum { SWF_OK = 0, SWF_EINVAL = -1, SWF_EDEGENERATE = -2 };
+
+/* One hexahedral cell as three pairs of opposite faces, k = 0, 1, 2. */
+typedef struct {
+    double c_lo[3][3];  /* centre of face lo of pair k [m]                        */
+    double c_hi[3][3];  /* centre of face hi of pair k [m]                        */
+    double phi_lo[3];   /* outward volume flux through face lo [m3/s] (0: a wall) */
+    double phi_hi[3];   /* outward volume flux through face hi [m3/s]             */
+} swf_hex;
+
+/* The velocity u [m/s] at the point x [m] of the cell. SWF_EINVAL for a
+ * non-finite input (u untouched), SWF_EDEGENERATE when the three pair vectors
+ * are nearly coplanar (|V_E| below 1e-9 of |e_0| |e_1| |e_2|, or a pair's
+ * centres coincide): the host falls back to its own interpolation. */
+int swf_hex_velocity(const swf_hex *h, const double x[3], double u[3]);
+
+/* The field's divergence sum(phi) / V_E [1/s] (NaN for a degenerate cell),
+ * and the relative imbalance |sum(phi)| / sum(|phi|) (0 for a cell without
+ * flux): how far the fluxes the host gives keep continuity. */
+double swf_hex_divergence(const swf_hex *h);
+double swf_hex_imbalance(const swf_hex *h);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
