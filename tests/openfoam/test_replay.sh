@@ -3,12 +3,14 @@
 # (flowReplay.H) on the box mesh with a laminar PIMPLE flow (U, p), before any step:
 #  - a library that fits: the one-line estimate "Replay: N snapshots x M cells x K
 #    values = X GB" with N x M x K x 8 bytes = X, then the library taken and played back;
+#  - phi listed in fields played back (the solved fluxes, to 1e-6), not listed rebuilt
+#    from U;
 #  - a fixed deltaT longer than interval, and adjustTimeStep with maxDeltaT unset or
 #    longer than interval: FatalIOErrors naming replay, interval and the numbers, with
 #    no time step run; maxDeltaT equal to interval accepted;
 #  - a misspelt key and a memoryFraction outside (0, 1]: named FatalIOErrors;
 #  - resuming a run whose library is stored (store yes): stopped after and inside
-#    the library, started again from its last write, the same flow to 1e-9 as a run
+#    the library (U, p and phi stored), started again from its last write, the same flow to 1e-9 as a run
 #    never stopped; a late start without store, and a stored snapshot missing, refused;
 #    a FIFO, a link or a file in the library's place refused before any step;
 #  - -checkpoint: every step written when it is due, the flow unchanged; 0, -1,
@@ -16,7 +18,7 @@
 #    refused;
 #  - memory: a mesh whose library (100 000 snapshots of U and p) is about twice the
 #    machine's MemAvailable: refused with the estimate before the first step, in seconds.
-# About 15 s.
+# About 20 s.
 set -euo pipefail
 # shellcheck source=common.sh
 . "$(dirname "$0")/common.sh"
@@ -107,6 +109,32 @@ echo "$line" | grep -q 'GB available' || fail "ok: no available memory in: $line
 grep -q 'Replay: library complete, 4 snapshots' "$c/log.run" || fail "ok: the library was not completed"
 grep -q 'the flow is played back' "$c/log.run" || fail "ok: the flow was not played back"
 
+# 1b. phi: listed in fields, it is played back with them (at 0.025 s, one interval into
+# the playback, the flux is snapshot 1's, the solved flux of 0.005 s, to 1e-6): the
+# fluxes keep continuity, as the parcels' faceFlux interpolation needs; not listed, it
+# is rebuilt from U (fvc::flux) and differs from the solved flux
+phi_ascii() {  # phi_ascii DIR TIME: the internal face fluxes of TIME, one a line
+    awk '/^internalField/ { f = 1; next } f && /^\(/ { g = 1; next } g && /^\)/ { exit } g { print }' "$1/$2/phi"
+}
+for fl in "U p phi" "U p"; do
+    c="$tmp/phi${fl// /}"
+    make_case "$c" 4
+    foamDictionary -entry replay -set "{ start 0; period 0.02; interval 0.005; fields ($fl); }" \
+        "$c/system/controlDict" > /dev/null
+    foamDictionary -entry writePrecision -set 17 "$c/system/controlDict" > /dev/null
+    foamDictionary -entry writeInterval -set 0.005 "$c/system/controlDict" > /dev/null
+    foamDictionary -entry endTime -set 0.025 "$c/system/controlDict" > /dev/null
+    (cd "$c" && run log.run "$solver" -replay)
+    rel=$(paste <(phi_ascii "$c" 0.005) <(phi_ascii "$c" 0.025) | awk '
+        { d = $1 - $2; if (d < 0) d = -d; a = $1 < 0 ? -$1 : $1; if (d > m) m = d; if (a > s) s = a; n++ }
+        END { if (n != 144 || s == 0) print "bad", n; else printf "%.3g\n", m / s }')
+    echo "replay fields ($fl): phi at 0.025 s against the solved phi of 0.005 s, largest difference $rel of the largest flux"
+    case "$fl" in
+        *phi) awk -v r="$rel" 'BEGIN { exit !(r + 0 == r && r <= 1e-6) }' || fail "phi listed: not played back ($rel)" ;;
+        *) awk -v r="$rel" 'BEGIN { exit !(r + 0 == r && r > 1e-6) }' || fail "phi not listed: not rebuilt from U ($rel)" ;;
+    esac
+done
+
 # 2. the time step against interval
 c="$tmp/fixed"
 make_case "$c" 4
@@ -151,7 +179,7 @@ done
 # with a snapshot missing.
 resume_case() {  # resume_case DIR END: a stored library 0 .. 0.02 s, writes every 0.01 s to END
     make_case "$1" 4
-    foamDictionary -entry replay -set "{ start 0; period 0.02; interval 0.005; fields (U p); store yes; }" \
+    foamDictionary -entry replay -set "{ start 0; period 0.02; interval 0.005; fields (U p phi); store yes; }" \
         "$1/system/controlDict" > /dev/null
     foamDictionary -entry writePrecision -set 17 "$1/system/controlDict" > /dev/null
     foamDictionary -entry writeInterval -set 0.01 "$1/system/controlDict" > /dev/null
@@ -164,7 +192,8 @@ c="$tmp/whole"
 resume_case "$c" 0.06
 (cd "$c" && run log.run "$solver" -replay)
 [ "$(wc -l < "$c/replayLibrary/times")" = 4 ] || fail "whole: replayLibrary/times does not list 4 snapshots"
-[ -f "$c/replayLibrary/3/U" ] && [ -f "$c/replayLibrary/3/p" ] || fail "whole: snapshot 3 not written"
+[ -f "$c/replayLibrary/3/U" ] && [ -f "$c/replayLibrary/3/p" ] && [ -f "$c/replayLibrary/3/phi" ] ||
+    fail "whole: snapshot 3 not written (U, p, phi)"
 grep -q 'format *binary' "$c/replayLibrary/0/U" || fail "whole: snapshot 0 not binary"
 u_ascii "$c" 0.06 > "$tmp/u.whole"
 [ "$(wc -l < "$tmp/u.whole")" = 192 ] || fail "whole: U at 0.06 s has $(wc -l < "$tmp/u.whole") values, want 64 x 3"

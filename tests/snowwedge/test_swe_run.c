@@ -126,9 +126,9 @@ static void estimate_default(void **st)
     char *s = out_close(&t);
     assert_string_equal(
         s, "Allrun: estimate: 102568 cells, 6 clouds, 46125 parcels injected (26125 in split classes); "
-           "about 3200 time steps (800 with the flow solved); memory 2.8 GB (flow 0.84 GB incl. a 0.63 "
-           "GB replay library, parcels at most 2 GB), unknown available; disk 3.3 GB (fields and the "
-           "stored flow library 0.7 GB, parcel records at most 2.6 GB), unknown free; time about 14 min "
+           "about 3200 time steps (800 with the flow solved); memory 3.1 GB (flow 1.1 GB incl. a 0.9 "
+           "GB replay library, parcels at most 2 GB), unknown available; disk 3.5 GB (fields and the "
+           "stored flow library 0.97 GB, parcel records at most 2.6 GB), unknown free; time about 14 min "
            "on 1 process(es) (flow 8.3, particles 3.8 min, and about 2 min of set-up and "
            "post-processing; scaled from the default run measured on this machine)\n");
     free(s);
@@ -136,12 +136,12 @@ static void estimate_default(void **st)
     in.avail = 2e9;
     in.free_disk = 1e12;
     assert_int_equal(swe_estimate_refuse(&in, &o, msg, sizeof msg), 0);
-    in.avail = 0.5e9; /* the flow and library need 0.84 GB */
+    in.avail = 0.5e9; /* the flow and library need 1.1 GB */
     assert_int_equal(swe_estimate_refuse(&in, &o, msg, sizeof msg), 2);
     assert_non_null(strstr(msg, "100 snapshots x 102568 cells"));
     assert_non_null(strstr(msg, "more than the 0.5 GB available"));
     in.avail = 2e9;
-    in.free_disk = 0.5e9; /* the fields and library 0.7 GB */
+    in.free_disk = 0.5e9; /* the fields and library 0.97 GB */
     assert_int_equal(swe_estimate_refuse(&in, &o, msg, sizeof msg), 2);
     assert_non_null(strstr(msg, "more than the 0.5 GB free"));
     /* -halfstep: twice the steps */

@@ -148,8 +148,9 @@ int swe_check_classes(const char *sizes, const char *parcels, char *err, size_t 
  *   the step      dt = 2.5e-4 s x 20 / nBody (/ 2 with -halfstep), at most maxDeltaT
  *                 (1e-3 s, 5e-4 s with -halfstep); with the replay the flow is solved
  *                 only until the library is complete (replayStart + replayPeriod);
- *   the memory    2 kB per cell, the replay library (snapshots x cells x 7 values x
- *                 8 bytes x 1.1 for the boundaries) and 560 B per parcel, every parcel
+ *   the memory    2 kB per cell, the replay library (snapshots x cells x 10 values x
+ *                 8 bytes x 1.1 for the boundaries: U p k omega nut, 7 a cell, and
+ *                 phi, one a face, about 3 a cell) and 560 B per parcel, every parcel
  *                 alive at once and a split one split to 1 + 4 F / 3 (F = 100),
  *                 at most 2e6 per cloud;
  *   the disk      4 writes of 20 values of 8 bytes per cell, the library, and 4 x 120
@@ -209,7 +210,7 @@ int swe_estimate(const swe_estimate_in *in, swe_estimate_out *o)
     const double tpart = (pspray * (in->split ? 6.9e-3 : 2.3e-3) + pcls * 6.9e-3 + pwake * 2.3e-3) *
                          2.5e-4 / dt / pow(in->np, 0.5);
     const double lib =
-        in->replay ? (in->replay_period / in->replay_interval) * cells * 7 * 8 * 1.1 : 0;
+        in->replay ? (in->replay_period / in->replay_interval) * cells * 10 * 8 * 1.1 : 0;
     const double F = 100, maxp = 2e6;
     double bspray = pspray * (in->split ? 1 + 4 * F / 3 : 1);
     if (in->split && bspray > nspray * maxp)
@@ -280,7 +281,7 @@ int swe_estimate_refuse(const swe_estimate_in *in, const swe_estimate_out *o, ch
     if (in->avail >= 0 && o->mem_flow > in->avail)
         return fail(msg, n, 2,
                     "the flow and its replay library need about %.3g GB (%ld cells x 2 kB, "
-                    "and %ld snapshots x %ld cells x 7 values x 8 bytes x 1.1), more than the %.3g "
+                    "and %ld snapshots x %ld cells x 10 values x 8 bytes x 1.1), more than the %.3g "
                     "GB available (MemAvailable): refused; use -coupled, a longer "
                     "transient/replayInterval or a shorter replayPeriod, or a coarser mesh",
                     o->mem_flow / GB, (long)o->cells,
