@@ -59,8 +59,7 @@ void Foam::WellMixedCheck<CloudType>::readSettings(const dictionary& dict)
 
     const fvMesh& mesh = this->owner().mesh();
     zoneNames_ = dict.lookupOrDefault<wordList>("zones", wordList());
-    cellZone_.setSize(mesh.nCells());
-    cellZone_ = -1;
+    cellZones_.setSize(mesh.nCells());
     forAll(zoneNames_, z)
     {
         const label zi = mesh.cellZones().findZoneID(zoneNames_[z]);
@@ -73,7 +72,7 @@ void Foam::WellMixedCheck<CloudType>::readSettings(const dictionary& dict)
         }
         for (const label c : mesh.cellZones()[zi])
         {
-            cellZone_[c] = z;
+            cellZones_[c].append(z);
         }
     }
 
@@ -232,7 +231,7 @@ void Foam::WellMixedCheck<CloudType>::buildReference()
             n *= 8;
         }
         const scalar w = mesh.V()[celli]/n;
-        const label z = cellZone_[celli];
+        const labelList& zs = cellZones_[celli];
         for (label s = 0; s < n; ++s)
         {
             const scalar r = rnd.sample01<scalar>()*vc;
@@ -247,7 +246,7 @@ void Foam::WellMixedCheck<CloudType>::buildReference()
             volume2_[b] += w*w;
             volume_[nb] += w;
             volume2_[nb] += w*w;
-            if (z >= 0)
+            for (const label z : zs)
             {
                 const label o = (z + 1)*(nb + 1);
                 volume_[o + b] += w;
@@ -309,7 +308,7 @@ Foam::WellMixedCheck<CloudType>::WellMixedCheck
     patches_(wm.patches_),
     edges_(wm.edges_),
     zoneNames_(wm.zoneNames_),
-    cellZone_(wm.cellZone_),
+    cellZones_(wm.cellZones_),
     startTime_(wm.startTime_),
     samplesPerCell_(wm.samplesPerCell_),
     totalSamples_(wm.totalSamples_),
@@ -387,8 +386,7 @@ void Foam::WellMixedCheck<CloudType>::postMove
     occupancy_[nb] += dt;
     bk[b] += dt;
     bk[nb] += dt;
-    const label z = cellZone_[celli];
-    if (z >= 0)
+    for (const label z : cellZones_[celli])
     {
         const label o = (z + 1)*(nb + 1);
         occupancy_[o + b] += dt;
@@ -470,9 +468,14 @@ void Foam::WellMixedCheck<CloudType>::write()
             const scalar seBat = nbat > 1
                 ? sqrt(max(s2/nbat - sqr(s1/nbat), scalar(0))/(nbat - 1))
                 : scalar(0);
+            // fewer than 5 parcels expected: the binomial error's normal
+            // approximation does not hold, one parcel parked there is a
+            // ratio of 1/(N p); the band is listed, not judged
+            const bool few = p > 0 && nMean*p < 5;
             const bool ok =
-                p > 0 && (mag(ratio - 1) <= 0.1 || mag(ratio - 1) <= 2*seBin);
-            if (p > 0 && mag(ratio - 1) > worst)
+                p > 0
+             && (few || mag(ratio - 1) <= 0.1 || mag(ratio - 1) <= 2*seBin);
+            if (p > 0 && !few && mag(ratio - 1) > worst)
             {
                 worst = mag(ratio - 1);
                 worstName = region + ":" + (b == nb ? word("whole") : Foam::name(b));
@@ -484,13 +487,13 @@ void Foam::WellMixedCheck<CloudType>::write()
                 << (b == nb || b + 1 == nb ? scalar(-1) : edges_[b + 1]) << ' '
                 << p << ' ' << pse << ' ' << q << ' ' << ratio << ' ' << seBin
                 << ' ' << seBat << ' '
-                << (p > 0 ? (ok ? "ok" : "FAIL") : "empty") << nl;
+                << (p > 0 ? (few ? "few" : (ok ? "ok" : "FAIL")) : "empty") << nl;
         }
     }
     Info<< "    wellMixedCheck " << this->modelName() << ": mean parcels "
         << nMean << ", largest deviation from uniform " << worst << " ("
         << worstName << "), " << nFail << " region(s) beyond 10 % and two "
-        << "standard errors" << endl;
+        << "standard errors (fewer than 5 parcels expected: not judged)" << endl;
 }
 
 
