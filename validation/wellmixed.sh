@@ -4,7 +4,8 @@
 #
 # Usage: validation/wellmixed.sh --case DIR --walls PATCHES --dt S --out DIR
 #            [--time T] [--models LIST] [--parcels N] [--tl-multiple M]
-#            [--zone NAME:X0,Y0,Z0:X1,Y1,Z1]... [--d D] [--force] [--help]
+#            [--zone NAME:X0,Y0,Z0:X1,Y1,Z1]... [--d D] [--inlet PATCH]
+#            [--interpolation faceFlux|cellPoint] [--force] [--help]
 #
 # Thomson's well-mixed condition (doc/deposition.md): in any turbulence,
 # tracers released well mixed stay well mixed. The check takes the case's mesh
@@ -15,7 +16,14 @@
 # velocities under 1 m/s; no gravity) per treatment, released uniformly over
 # the whole mesh (cellZoneInjection at a number density that gives --parcels);
 # the walls of --walls and every other wall reflect them (localInteraction
-# rebound, e = 1, no friction), other patches let them out. The cloud function
+# rebound, e = 1, no friction), and so do symmetry planes; other patches let
+# them out.
+# An open domain (a wind tunnel) loses its tracers through the outlet: with
+# --inlet PATCH, tracers also enter through that patch at the rate that keeps
+# the release's concentration, n Q (n the parcels per volume, Q the patch's
+# volume inflow from the flow's phi), randomly over its faces by area (a
+# uniform inflow), from the start to the end; plain patches without net flux
+# (slip tunnel walls) then reflect the tracers, as walls do. The cloud function
 # wellMixedCheck of each cloud measures the parcels' time-averaged share of
 # each y+ band (0-1, 1-5, 5-30, 30-100, beyond; y to the nearest face of
 # --walls, u* = max(u_tau, Cmu^(1/4) k^(1/2)) of that face's cell) and of each
@@ -31,6 +39,11 @@
 # k at the parcel alone, the k of the wall face's cell), stochastic
 # (OpenFOAM's stochasticDispersionRAS, for comparison).
 #
+# --interpolation: the parcels' velocity interpolation of every cloud,
+# faceFlux (default: the velocity rebuilt from the flow's face fluxes in every
+# hexahedron, doc/deposition.md, "The tracking next to a wall"; it needs the
+# flow's phi in the time folder) or cellPoint (OpenFOAM's).
+#
 # Writes into DIR, only when the run succeeds: wellmixed.csv (per treatment,
 # region and band: volume share, parcel share, ratio, binomial and batch
 # standard errors, verdict), wellmixed.md (the table and the verdicts),
@@ -42,7 +55,7 @@
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 here="$top/validation/deposition"
-case_in= walls= out= time= dt= models=none,crw parcels=2000 mult=10 d=2e-7 force=0
+case_in= walls= out= time= dt= models=none,crw parcels=2000 mult=10 d=2e-7 force=0 interp=faceFlux inlet=
 zones=()
 die2() { echo "wellmixed.sh: $*" >&2; exit 2; }
 while [ $# -gt 0 ]; do
@@ -58,6 +71,8 @@ while [ $# -gt 0 ]; do
         --tl-multiple) [ -n "${2:-}" ] || die2 "--tl-multiple needs a number"; mult=$2; shift ;;
         --zone) [ -n "${2:-}" ] || die2 "--zone needs NAME:X0,Y0,Z0:X1,Y1,Z1"; zones+=("$2"); shift ;;
         --d) [ -n "${2:-}" ] || die2 "--d needs a diameter in metres"; d=$2; shift ;;
+        --inlet) [ -n "${2:-}" ] || die2 "--inlet needs a patch name"; inlet=$2; shift ;;
+        --interpolation) [ -n "${2:-}" ] || die2 "--interpolation needs faceFlux or cellPoint"; interp=$2; shift ;;
         --force) force=1 ;;
         *) die2 "unknown option '$1' (see --help)" ;;
     esac
@@ -83,6 +98,7 @@ for z in "${zones[@]}"; do [[ "$z" =~ $zre ]] || die2 "--zone: '$z' is not NAME:
 . "$top/etc/outdir.sh"
 # shellcheck source=deposition/common.sh
 . "$here/common.sh"
+dep_interpolation wellmixed.sh "$interp" || exit 2
 outdir_list models wellmixed.sh --models "$models" name
 IFS=, read -r -a modelList <<< "$models"
 dep_models wellmixed.sh "none crw crw-utau crw-k crw-wallcell stochastic" "${modelList[@]}" || exit 2
@@ -97,11 +113,18 @@ if [ -z "$time" ]; then
     [ -n "$time" ] || die2 "--case: no time folder of '$case_in' holds U, k and omega or epsilon"
 fi
 [ -f "$case_in/$time/U" ] && [ -f "$case_in/$time/k" ] || die2 "--time: '$case_in/$time' has no U and k"
+[ "$interp" = cellPoint ] || [ -f "$case_in/$time/phi" ] || die2 "--interpolation $interp: '$case_in/$time' has no phi (the flow's face fluxes)"
 # the patch types of the mesh: every wall reflects, every plain patch lets out;
 # constraint and coupled patches are left to the tracking
 read -r -a wallPatches <<< "$(awk '/^[ \t]*[A-Za-z_][A-Za-z0-9_.:-]*[ \t]*$/ { n = $1 } /^[ \t]*type[ \t]+wall;/ { printf "%s ", n }' "$case_in/constant/polyMesh/boundary")"
 read -r -a openPatches <<< "$(awk '/^[ \t]*[A-Za-z_][A-Za-z0-9_.:-]*[ \t]*$/ { n = $1 } /^[ \t]*type[ \t]+patch;/ { printf "%s ", n }' "$case_in/constant/polyMesh/boundary")"
+read -r -a mirrorPatches <<< "$(awk '/^[ \t]*[A-Za-z_][A-Za-z0-9_.:-]*[ \t]*$/ { n = $1 } /^[ \t]*type[ \t]+(symmetryPlane|symmetry);/ { printf "%s ", n }' "$case_in/constant/polyMesh/boundary")"
 [ "${#wallPatches[@]}" -ge 1 ] || { echo "wellmixed.sh: the mesh has no wall patch" >&2; exit 2; }
+if [ -n "$inlet" ]; then
+    case " ${openPatches[*]} " in *" $inlet "*) ;;
+        *) echo "wellmixed.sh: --inlet: '$inlet' is not a plain patch of the mesh (plain patches: ${openPatches[*]:-none})" >&2; exit 2 ;; esac
+    [ -f "$case_in/$time/phi" ] || die2 "--inlet $inlet: '$case_in/$time' has no phi (the inflow is taken from it)"
+fi
 for w in ${walls_names}; do
     case " ${wallPatches[*]} " in *" $w "*) ;;
         *) echo "wellmixed.sh: --walls: '$w' is not a wall patch of the mesh (walls: ${wallPatches[*]})" >&2; exit 2 ;; esac
@@ -115,8 +138,13 @@ c="$tmp/case"
 mkdir -p "$c/constant" "$c/system" "$c/0"
 cp -r "$case_in/constant/polyMesh" "$c/constant/"
 for f in transportProperties turbulenceProperties; do cp "$case_in/constant/$f" "$c/constant/"; done
+# the air's density for the parcels' drag (a steady incompressible case may not give one;
+# the tracers follow the flow either way)
+grep -q '^[[:space:]]*rhoInf' "$c/constant/transportProperties" || echo "rhoInf          1.2;" >> "$c/constant/transportProperties"
 [ ! -d "$case_in/constant/polyMesh/sets" ] || rm -rf "$c/constant/polyMesh/sets"
 for f in U p k omega epsilon nut phi; do [ ! -f "$case_in/$time/$f" ] || cp "$case_in/$time/$f" "$c/0/"; done
+# p only for the solver's set-up (the flow is frozen): from 0/ or 0.orig/ when the time has none
+for d0 in 0 0.orig; do [ -f "$c/0/p" ] || [ ! -f "$case_in/$d0/p" ] || cp "$case_in/$d0/p" "$c/0/"; done
 cp "$case_in/system/fvSolution" "$c/system/"
 [ ! -f "$case_in/system/decomposeParDict" ] || cp "$case_in/system/decomposeParDict" "$c/system/"
 echo "FoamFile { version 2.0; format ascii; class uniformDimensionedVectorField; object g; }
@@ -124,6 +152,35 @@ dimensions [0 1 -2 0 0 0 0];
 value (0 0 0);" > "$c/constant/g"
 dep_particle_schemes "$c"
 dep_control "$c" topoSet 1 1 1
+# the flow's fields in ascii (the case may write binary): read below, and by the solver alike
+(cd "$c" && foamFormatConvert -time 0 > log.foamFormatConvert 2>&1) \
+    || { dep_show_fail wellmixed.sh "foamFormatConvert of the flow's fields" "$c/log.foamFormatConvert"; exit 1; }
+
+# --inlet: the volume flux through every plain patch (postProcess, the flow's phi):
+# the inlet's inflow Q; the patches without net flux reflect
+reflectPatches=()
+if [ -n "$inlet" ]; then
+    escapes=() qs=()
+    q_in=
+    for p in "${openPatches[@]}"; do
+        q=$(cd "$c" && postProcess -time 0 -func "patchIntegrate(name=$p,operation=sum,phi)" 2>&1 |
+            awk '/of phi =/ { print $NF }' | tail -1)
+        [ -n "$q" ] || { echo "wellmixed.sh: the flux through patch $p could not be summed (postProcess)" >&2; exit 1; }
+        [ "$p" != "$inlet" ] || q_in=$(awk -v q="$q" 'BEGIN { printf "%.10g", -q }')
+        qs+=("$p $q")
+    done
+    awk -v q="$q_in" 'BEGIN { exit !(q > 0) }' ||
+        { echo "wellmixed.sh: --inlet $inlet: no inflow through it (its inflow, minus the sum of phi, is ${q_in:-?} m3/s)" >&2; exit 2; }
+    for pq in "${qs[@]}"; do
+        read -r p q <<< "$pq"
+        if [ "$p" != "$inlet" ] && awk -v q="$q" -v qi="$q_in" 'BEGIN { exit !((q < 0 ? -q : q) <= 1e-6 * qi) }'; then
+            reflectPatches+=("$p")
+        else
+            escapes+=("$p")
+        fi
+    done
+    openPatches=("${escapes[@]}")
+fi
 
 # the whole mesh as one cell zone (the release), and the --zone boxes
 {
@@ -158,9 +215,14 @@ field_values() {   # file
         /^[-0-9.eE+]+$/ { if (!n++) next; print }'
 }
 ncells=$(awk '/^ *cells:/ { print $2 }' "$c/log.checkMesh" | head -1)
-if [ -f "$c/0/epsilon" ]; then field_values "$c/0/epsilon" > "$tmp/eps.txt"
-else paste <(field_values "$c/0/k") <(field_values "$c/0/omega") | awk '{ print 0.09 * $1 * $2 }' > "$tmp/eps.txt"; fi
-field_values "$c/0/k" > "$tmp/k.txt"
+unreadable() { echo "wellmixed.sh: the values of $1 cannot be read (foamDictionary; a field of the case's time $time)" >&2; exit 1; }
+if [ -f "$c/0/epsilon" ]; then field_values "$c/0/epsilon" > "$tmp/eps.txt" || unreadable epsilon
+else
+    field_values "$c/0/k" > "$tmp/k.txt" || unreadable k
+    field_values "$c/0/omega" > "$tmp/omega.txt" || unreadable omega
+    paste "$tmp/k.txt" "$tmp/omega.txt" | awk '{ print 0.09 * $1 * $2 }' > "$tmp/eps.txt"
+fi
+field_values "$c/0/k" > "$tmp/k.txt" || unreadable k
 tl=$(paste "$tmp/k.txt" "$tmp/eps.txt" | awk '$2 > 0 { print 0.3 * $1 / $2 }' | sort -g \
     | awk '{ v[NR] = $1 } END { i = int(0.9 * NR + 0.5); if (i < 1) i = 1; if (NR) printf "%.6g", v[i] }')
 [ -n "$tl" ] || { echo "wellmixed.sh: no cell with k and epsilon > 0 in the flow" >&2; exit 1; }
@@ -174,6 +236,28 @@ dep_estimate wellmixed.sh "$parcels" "${#modelList[@]}" "$nsteps steps of $dt s 
     "$(awk -v p="$parcels" -v n="${#modelList[@]}" -v s="$nsteps" 'BEGIN { print p * n * s * 5e-6 / 60 }')" "lower --parcels" || exit 2
 # (5 us a parcel step: measured on the channel, 7.4 million parcel steps in 34 s)
 
+inflow=
+if [ -n "$inlet" ]; then
+    rate=$(awk -v n="$nd" -v q="$q_in" 'BEGIN { printf "%.10g", n * q }')
+    awk -v r="$rate" -v t="$dt" 'BEGIN { exit !(r * t >= 1) }' ||
+        { echo "wellmixed.sh: --inlet $inlet: $rate tracers/s enter, under one a step of $dt s (raise --parcels)" >&2; exit 2; }
+    inflow="
+        inflow
+        {
+            type            patchInjection;
+            patch           $inlet;
+            SOI             0;
+            duration        $tend;
+            parcelsPerSecond $rate;
+            flowRateProfile constant 1;
+            parcelBasisType fixed;
+            nParticle       1;
+            massTotal       1;
+            U0              (0 0 0);
+            sizeDistribution { type fixedValue; fixedValueDistribution { value $d; } }
+        }"
+    echo "wellmixed.sh: --inlet $inlet: inflow $q_in m3/s, $rate tracers/s; reflecting: ${wallPatches[*]} ${reflectPatches[*]}; out: ${openPatches[*]}"
+fi
 : > "$c/clouds.txt"
 for m in "${modelList[@]}"; do
     name="t_${m//-/_}"
@@ -210,7 +294,7 @@ subModels
             massTotal       1;
             U0              (0 0 0);
             sizeDistribution { type fixedValue; fixedValueDistribution { value $d; } }
-        }
+        }$inflow
     }
     dispersionModel $disp;
     patchInteractionModel localInteraction;
@@ -218,7 +302,7 @@ subModels
     {
         patches
         (
-$(for p in "${wallPatches[@]}"; do echo "            $p { type rebound; e 1; mu 0; }"; done)
+$(for p in "${wallPatches[@]}" "${reflectPatches[@]}" "${mirrorPatches[@]}"; do echo "            $p { type rebound; e 1; mu 0; }"; done)
 $(for p in "${openPatches[@]}"; do echo "            $p { type escape; }"; done)
         );
     }
