@@ -4,7 +4,8 @@
 #
 # Usage: validation/bend.sh --out DIR [--force] [--mesh LIST]
 #            [--stokes LIST] [--models LIST] [--parcels N] [--step F]
-#            [--coeffs FILE] [--short] [--help]
+#            [--coeffs FILE] [--short]
+#            [--interpolation faceFlux|cellPoint] [--help]
 #
 # A turbulent pipe flow (Re = 10 000 on the diameter, air at 20 C) through a
 # 90 degree bend of curvature ratio R0 = R_bend/a = 5.6 (a the tube radius,
@@ -48,6 +49,11 @@
 # --step F: the particles' time step as a fraction of the bulk's transit time
 # of a tube radius (default 0.05; in (0, 0.5]).
 #
+# --interpolation: the parcels' velocity interpolation, faceFlux (default:
+# rebuilt from the flow's face fluxes in every hexahedron, so that the mean
+# flow keeps tracers uniform, doc/deposition.md) or cellPoint (OpenFOAM's:
+# it gathers tracer-like parcels at walls on wall-function meshes).
+#
 # Writes into DIR, only when the run succeeds: efficiency.csv and
 # efficiency.md (eta per mesh, treatment and Stk, with the counts, the error
 # and Pui's fit), efficiency.png (eta against Stk with the fit), flow.md (the
@@ -78,6 +84,7 @@ stokes=0.01,0.03,0.1,0.3,1
 models=stochastic,none,crw,nearwall
 parcels=2000
 coeffs=
+interp=faceFlux
 force=0
 step=0.05
 die2() { echo "bend.sh: $*" >&2; exit 2; }
@@ -91,6 +98,7 @@ while [ $# -gt 0 ]; do
         --models) [ -n "${2:-}" ] || die2 "--models needs a list"; models=$2; shift ;;
         --parcels) [ -n "${2:-}" ] || die2 "--parcels needs a number"; parcels=$2; shift ;;
         --coeffs) [ -n "${2:-}" ] || die2 "--coeffs needs a file"; coeffs=$2; shift ;;
+        --interpolation) [ -n "${2:-}" ] || die2 "--interpolation needs faceFlux or cellPoint"; interp=$2; shift ;;
         --force) force=1 ;;
         --short) meshes=wf; stokes=0.1,1; models=none,nearwall; parcels=600 ;;
         *) echo "bend.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
@@ -104,6 +112,7 @@ done
 . "$top/etc/outdir.sh"
 # shellcheck source=deposition/common.sh
 . "$here/common.sh"
+dep_interpolation bend.sh "$interp" || exit 2
 outdir_list stokes bend.sh --stokes "$stokes" num
 outdir_list models bend.sh --models "$models" name
 outdir_list meshes bend.sh --mesh "$meshes" name

@@ -4,7 +4,8 @@
 #
 # Usage: validation/deposition.sh --out DIR [--force] [--mesh resolved|wf|both]
 #            [--tau-plus LIST] [--models LIST] [--parcels N] [--t-run T]
-#            [--coeffs FILE | --calibrate] [--short] [--help]
+#            [--coeffs FILE | --calibrate] [--short] [--re-tau R]
+#            [--interpolation faceFlux|cellPoint] [--help]
 #
 # A fully developed channel flow between two walls, periodic along the flow
 # and across it, at the Reynolds number of Liu & Agarwal's pipe at Re = 10 000
@@ -28,6 +29,18 @@
 # Meshes (--mesh): resolved (first cell y+ about 0.5, 60 cells per half
 # height, graded), wf (a wall-function mesh: 10 uniform cells, first cell
 # centre y+ about 30, as on the wedge), both (default).
+#
+# --re-tau: the friction Reynolds number u_tau h / nu the flow is set up for
+# (default 314, Liu & Agarwal's pipe; 100 .. 2000): the bulk velocity is
+# 13.3 m/s x (R/314)^(8/7) (Blasius: u_tau ~ U^(7/8)), the wall-function mesh
+# has 2 round(R/62) cells across (at least 4; its first cell centre at y+
+# about 30), the resolved mesh is the same (its first cell at y+ 0.26 R/314);
+# flow.md gives the Re_tau and y+ reached. V+ and tau+ are in wall units, so
+# Wood's correlation is the reference at every R.
+# --interpolation: the parcels' velocity interpolation, faceFlux (default:
+# rebuilt from the flow's face fluxes in every hexahedron, so that the mean
+# flow keeps tracers uniform, doc/deposition.md) or cellPoint (OpenFOAM's:
+# it gathers tracer-like parcels at walls on wall-function meshes).
 #
 # Writes into DIR, only when the run succeeds: vplus.csv and vplus.md (V+ per
 # mesh, treatment and tau+, with the counts, the error and Wood's correlation),
@@ -60,6 +73,8 @@ parcels=2000
 trun=20000
 twarm=2000
 coeffs=
+interp=faceFlux
+retau_set=314
 calibrate=0
 force=0
 die2() { echo "deposition.sh: $*" >&2; exit 2; }
@@ -73,6 +88,8 @@ while [ $# -gt 0 ]; do
         --parcels) [ -n "${2:-}" ] || die2 "--parcels needs a number"; parcels=$2; shift ;;
         --t-run) [ -n "${2:-}" ] || die2 "--t-run needs a number"; trun=$2; shift ;;
         --coeffs) [ -n "${2:-}" ] || die2 "--coeffs needs a file"; coeffs=$2; shift ;;
+        --interpolation) [ -n "${2:-}" ] || die2 "--interpolation needs faceFlux or cellPoint"; interp=$2; shift ;;
+        --re-tau) [ -n "${2:-}" ] || die2 "--re-tau needs a friction Reynolds number"; retau_set=$2; shift ;;
         --calibrate) calibrate=1 ;;
         --force) force=1 ;;
         --short) meshes=wf; taus=1,10; models=nearwall; parcels=1000; trun=8000; twarm=1000 ;;
@@ -88,12 +105,15 @@ case "$meshes" in resolved|wf) ;; both) meshes="resolved wf" ;; *) die2 "--mesh:
 . "$top/etc/outdir.sh"
 # shellcheck source=deposition/common.sh
 . "$here/common.sh"
+dep_interpolation deposition.sh "$interp" || exit 2
 outdir_list taus deposition.sh --tau-plus "$taus" num
 outdir_list models deposition.sh --models "$models" name
 IFS=, read -r -a tauList <<< "$taus"
 dep_numbers deposition.sh --tau-plus 0.01 1000 "${tauList[@]}" || exit 2
 IFS=, read -r -a modelList <<< "$models"
 dep_models deposition.sh "stochastic gradient none nearwall crw" "${modelList[@]}" || exit 2
+[[ "$retau_set" =~ ^[0-9]+(\.[0-9]+)?$ ]] && awk -v r="$retau_set" 'BEGIN { exit !(r >= 100 && r <= 2000) }' ||
+    die2 "--re-tau: '$retau_set' is not a number in [100, 2000]"
 [ -z "$coeffs" ] || [ "$calibrate" = 0 ] || die2 "--coeffs and --calibrate exclude each other"
 [ -n "$coeffs" ] || coeffs="$top/etc/deposition.coeffs"
 dep_require deposition.sh "$top" simpleFoam blockMesh || exit 1
@@ -105,9 +125,9 @@ outdir_begin deposition.sh "$out" "$force"
 t_start=$(date +%s)
 
 # the channel: half height h (Liu & Agarwal's pipe radius), bulk velocity for
-# Re_tau about 314 with nu = 1.5e-5 m2/s
+# Re_tau about --re-tau (314: 13.3 m/s) with nu = 1.5e-5 m2/s
 h=0.00635
-ubar=13.3
+ubar=$(awk -v r="$retau_set" 'BEGIN { printf "%.4g", 13.3 * (r / 314) ^ (8 / 7) }')
 nu=1.5e-5
 rhop=920
 mu=1.8e-5   # nu * rhoInf (1.2)
@@ -179,7 +199,8 @@ run_mesh() {
     if [ "$mesh" = resolved ]; then
         ny=120; grading=38; kwall=fixedValue; nutwall=nutLowReWallFunction
     else
-        ny=10; grading=1; kwall=kqRWallFunction; nutwall=nutkWallFunction
+        ny=$(awk -v r="$retau_set" 'BEGIN { n = 2 * int(r / 62 + 0.5); print (n < 4 ? 4 : n) }')
+        grading=1; kwall=kqRWallFunction; nutwall=nutkWallFunction
     fi
     cat > "$c/constant/channelParameters" <<EOF
 Ubar    $ubar;

@@ -4,7 +4,8 @@
 #
 # Usage: validation/rib.sh --out DIR [--force] [--mesh resolved|wf|both]
 #            [--tau-plus LIST] [--models LIST] [--parcels N] [--t-run T]
-#            [--gravity none|floor] [--coeffs FILE] [--short] [--help]
+#            [--gravity none|floor] [--coeffs FILE] [--short]
+#            [--interpolation faceFlux|cellPoint] [--help]
 #
 # A channel of height 10 H (H = 5 mm) with square ribs of height H on its
 # floor every 20 H and a smooth top wall, periodic along the flow, two-
@@ -51,6 +52,11 @@
 # closure (default etc/deposition.coeffs); --short: the test (wf mesh, tau+
 # 10, none and nearwall, 1500 parcels, window 4000).
 #
+# --interpolation: the parcels' velocity interpolation, faceFlux (default:
+# rebuilt from the flow's face fluxes in every hexahedron, so that the mean
+# flow keeps tracers uniform, doc/deposition.md) or cellPoint (OpenFOAM's:
+# it gathers tracer-like parcels at walls on wall-function meshes).
+#
 # Writes into DIR, only when the run succeeds: zones.csv (per mesh,
 # treatment, tau+ and zone: the counts, V+, its error, V+ over the top wall's),
 # wakes.csv and rib.md (the tables; the near wake 0-4 H against the far wake
@@ -79,6 +85,7 @@ trun=20000
 twarm=2000
 gravity=none
 coeffs=
+interp=faceFlux
 force=0
 zones=0,2,4,6,9,12,14
 die2() { echo "rib.sh: $*" >&2; exit 2; }
@@ -93,6 +100,7 @@ while [ $# -gt 0 ]; do
         --t-run) [ -n "${2:-}" ] || die2 "--t-run needs a number"; trun=$2; shift ;;
         --gravity) [ -n "${2:-}" ] || die2 "--gravity needs none or floor"; gravity=$2; shift ;;
         --coeffs) [ -n "${2:-}" ] || die2 "--coeffs needs a file"; coeffs=$2; shift ;;
+        --interpolation) [ -n "${2:-}" ] || die2 "--interpolation needs faceFlux or cellPoint"; interp=$2; shift ;;
         --force) force=1 ;;
         --short) meshes=wf; taus=10; models=none,nearwall; parcels=1500; trun=4000; twarm=1000 ;;
         *) echo "rib.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
@@ -108,6 +116,7 @@ case "$gravity" in none|floor) ;; *) die2 "--gravity: '$gravity' is not none or 
 . "$top/etc/outdir.sh"
 # shellcheck source=deposition/common.sh
 . "$here/common.sh"
+dep_interpolation rib.sh "$interp" || exit 2
 outdir_list taus rib.sh --tau-plus "$taus" num
 outdir_list models rib.sh --models "$models" name
 IFS=, read -r -a tauList <<< "$taus"

@@ -14,8 +14,14 @@
 #       nearwall-utau / nearwall-k (the same with the wall layer's velocity
 #       scale from the wall shear / the turbulence alone), crw (snowNearWall
 #       without the closure); PATCHES the walls of snowNearWall, e.g. "(walls)"
-#   dep_cloud_solution
-#       the solution { } entry of a cloud's properties (stdout)
+#   dep_interpolation SCRIPT VALUE
+#       DEP_UINTERP, the parcels' velocity interpolation of every cloud, set to
+#       VALUE: faceFlux (the default: the velocity rebuilt from the flow's face
+#       fluxes in every hexahedron, doc/deposition.md, "The tracking next to a
+#       wall") or cellPoint (OpenFOAM's); another is refused (stderr, status 2)
+#   dep_cloud_solution [UINTERP]
+#       the solution { } entry of a cloud's properties (stdout); UINTERP the
+#       parcels' velocity interpolation (default DEP_UINTERP)
 #   dep_write_cloud CASE NAME D TREATMENT RHO U0 INJECTION ESCAPE WALLS
 #       CASE/constant/NAMEProperties: ice spheres of diameter D and density RHO
 #       released once at the points of constant/positions with velocity U0
@@ -104,8 +110,16 @@ dep_dispersion() {   # treatment patches
     esac
 }
 
+DEP_UINTERP=faceFlux
+dep_interpolation() {   # script value
+    case "$2" in
+        faceFlux|cellPoint) DEP_UINTERP=$2 ;;
+        *) echo "$1: --interpolation: '$2' is not faceFlux or cellPoint" >&2; return 2 ;;
+    esac
+}
+
 dep_cloud_solution() {
-    cat <<'EOF2'
+    cat <<EOF2
 solution
 {
     active          true;
@@ -113,7 +127,7 @@ solution
     transient       yes;
     cellValueSourceCorrection off;
     maxCo           0.3;
-    interpolationSchemes { rho cell; U cellPoint; mu cell; k cell; epsilon cell; }
+    interpolationSchemes { rho cell; U ${1:-$DEP_UINTERP}; mu cell; k cell; epsilon cell; }
     integrationSchemes { U analytical; }
 }
 EOF2
