@@ -3,12 +3,14 @@
 # the 90 degree bend on the wall-function mesh, no dispersion and snowNearWall
 # with the shipped closure, Stk 0.1 and 1, 600 parcels (about 10 s). Checks:
 # the inlet pipe's friction factor within 25 % of Blasius; the bend's deposition
-# efficiency within a factor 1.5 of Pui et al.'s fit for snowNearWall at both
-# Stk and for no dispersion at Stk 1 (statistical error at these counts 2-8 %;
-# measured 1.10, 1.03 and 1.08 of the fit; on this wall-function mesh part of
-# the Stk 0.1 deposit comes from the wall cells, where even the mean flow
-# alone deposits 0.7 of the fit: doc/deposition.md); at Stk 0.1 snowNearWall
-# deposits more than the mean flow alone; the counts add up (the reader
+# efficiency within a factor 2 of Pui et al.'s fit for snowNearWall at Stk 0.1
+# (the issue's bound; measured 0.69 of the fit with 2000 parcels, statistical
+# error at 600 about 8 %) and within a factor 1.5 at Stk 1 for snowNearWall and
+# for no dispersion (measured 0.99 and 1.06); the parcels moved with faceFlux,
+# whose mean flow no longer deposits tracer-like parcels in the wall cells
+# (cellPoint: 0.7 of the fit at Stk 0.1 from the mean flow alone,
+# doc/deposition.md); at Stk 0.1 snowNearWall deposits more than the mean flow
+# alone; the counts add up (the reader
 # refuses otherwise), the parcels still in the pipe are sorted by section and
 # fewer than 15 % of all; the table, plot and flow page are written; bad
 # options are refused before any work (exit 2, nothing written).
@@ -64,8 +66,9 @@ for m in nearwall none; do
     for s in 0.1 1; do
         [ "$m" = none ] && [ "$s" = 0.1 ] && continue
         r=$(row $m $s)
-        check "$m, Stk $s: eta within a factor 1.5 of Pui et al. ($r)" \
-            "[ -n '$r' ] && awk -F, '{ exit !(\$13 > \$15 / 1.5 && \$13 < 1.5 * \$15) }' <<< '$r'"
+        f=1.5; [ "$s" = 1 ] || f=2
+        check "$m, Stk $s: eta within a factor $f of Pui et al. ($r)" \
+            "[ -n '$r' ] && awk -F, -v f=$f '{ exit !(\$13 > \$15 / f && \$13 < f * \$15) }' <<< '$r'"
     done
 done
 en=$(row nearwall 0.1 | cut -d, -f13); e0=$(row none 0.1 | cut -d, -f13)

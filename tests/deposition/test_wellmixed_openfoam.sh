@@ -10,7 +10,13 @@
 # 6-37 times in such bands), the mean flow alone too, the stochastic model
 # fails at least one band (the check can fail), a --zone's rows, the table and
 # plot written, the refusals of bad options (exit 2, nothing written) and of
-# bad wellMixedCheck entries (a FatalIOError naming the key). Skipped (77) without
+# bad wellMixedCheck entries (a FatalIOError naming the key).
+# The tracking: the ribbed channel's wall-function mesh (validation/rib.sh, its
+# flow, about 15 s), the mean flow alone with 4000 tracers over 3 outer
+# Lagrangian times, the parcels' velocity interpolated cellPoint (OpenFOAM's:
+# tracers pile up at its walls, 11 times the uniform share within y+ 1) and
+# faceFlux (from the face fluxes: every band within 10 % or three standard
+# errors). Skipped (77) without
 # OpenFOAM, the project's solver and wrapper, bin/snowdeposit or gnuplot.
 # shellcheck source=openfoam_test.sh
 . "$(dirname "$0")/openfoam_test.sh"
@@ -40,7 +46,9 @@ check "the zone 'core' has its rows, the walk's well mixed there" \
     "[ \"\$(awk -F, '\$1 == \"crw\" && \$2 == \"core\"' '$csv' | wc -l)\" -eq 6 ] && awk -F, '\$1 == \"crw\" && \$2 == \"core\" && \$3 == \"whole\" { exit !(\$9 > 0.9 && \$9 < 1.1) }' '$csv'"
 check "stochasticDispersionRAS fails a band (the check can fail)" "awk -F, '\$1 == \"stochastic\" && \$12 == \"FAIL\"' '$csv' | grep -q ."
 # refusals: exit 2, nothing written
-for bad in "--walls walls" "--walls (nonesuch)" "--walls (left)" "--dt 0" "--dt abc" "--parcels 0" "--tl-multiple 1" "--models none,bogus" "--zone x:1,2:3,4,5" "--d 1"; do
+check "faceFlux took the velocity of every cell from the fluxes" "grep -q 'faceFlux: \([0-9]*\) of \1 cells are hexahedra' '$tmp/wm/case/log.particles'"
+for bad in "--walls walls" "--walls (nonesuch)" "--walls (left)" "--dt 0" "--dt abc" "--parcels 0" "--tl-multiple 1" "--models none,bogus" "--zone x:1,2:3,4,5" "--d 1" \
+    "--interpolation cell" "--inlet nonesuch" "--inlet left" "--inlet"; do
     # shellcheck disable=SC2086
     "$top/validation/wellmixed.sh" --case "$case_dir" --walls "(walls)" --dt 5.4e-5 --out "$tmp/bad" $bad > "$tmp/log.bad" 2>&1
     rc=$?
@@ -72,4 +80,22 @@ bad_dict "patches (walls); startTime;" "startTime"
 cp "$tmp/props.orig" "$props"
 "$top/validation/wellmixed.sh" --case "$tmp/nonesuch" --walls "(walls)" --dt 5.4e-5 --out "$tmp/bad" > "$tmp/log.bad" 2>&1
 check "refused: a case without a mesh" "[ $? -eq 2 ] && [ ! -e '$tmp/bad' ] && grep -q nonesuch '$tmp/log.bad'"
+
+# the tracking on the ribbed channel's wall-function mesh: cellPoint fails, faceFlux holds
+"$top/validation/rib.sh" --out "$tmp/rib" --mesh wf --models none --tau-plus 10 --parcels 10 --t-run 1000 > "$tmp/log.rib" 2>&1
+check "the ribbed channel's flow (rib.sh) exits 0" "[ $? -eq 0 ]"
+for interp in cellPoint faceFlux; do
+    "$top/validation/wellmixed.sh" --case "$tmp/rib/wf/case" --dt 6.5e-5 --parcels 4000 --tl-multiple 3 --models none \
+        --walls "(top floorUp ribFront ribTop ribBack floor_0 floor_1 floor_2 floor_3 floor_4 floor_5)" \
+        --interpolation $interp --out "$tmp/rib-$interp" > "$tmp/log.rib-$interp" 2>&1
+    rc=$?
+    grep '| none | all |' "$tmp/rib-$interp/wellmixed.md"
+    check "rib, $interp: wellmixed.sh exits 0" "[ $rc -eq 0 ]"
+done
+rcsv="$tmp/rib-cellPoint/wellmixed.csv"
+check "rib, cellPoint: the mean flow piles tracers up within y+ 1 (over 3 times uniform)" \
+    "awk -F, '\$1 == \"none\" && \$2 == \"all\" && \$4 == 0 { exit !(\$9 > 3) }' '$rcsv'"
+rcsv="$tmp/rib-faceFlux/wellmixed.csv"
+check "rib, faceFlux: every band within 10 % or 3 standard errors" \
+    "[ \"\$(awk -F, '\$1 == \"none\" && \$2 == \"all\"' '$rcsv' | wc -l)\" -eq 5 ] && ! awk -F, '\$1 == \"none\" && \$6 > 0 && (\$9 - 1 > 0.1 || 1 - \$9 > 0.1) && (\$9 - 1 > 3 * \$10 || 1 - \$9 > 3 * \$10)' '$rcsv' | grep -q ."
 [ "$fails" -eq 0 ] && { echo PASS; exit 0; } || { echo "$fails failure(s)"; exit 1; }

@@ -31,7 +31,12 @@
 #                        model's totals carried on; every check below then holds
 #                        for the resumed run, the period check across the
 #                        restart), gates off (about 2.5 min)
-#   steady               Allrun -steady -test: the frozen-RANS route (about 15 s)
+#   steady               Allrun -steady -test: the frozen-RANS route (about 15 s), then
+#                        the tracer-limit check on its flow (validation/wellmixed.sh,
+#                        snowNearWall's walk, 8000 tracers entering through the inlet
+#                        too): the wake behind the rear face uniform within 10 % or
+#                        three standard errors, the parcels moved with faceFlux in
+#                        every cell (about 40 s)
 # Checked for every run: the mesh, the rear face resolved by default (the cells
 # split five times, only the face's; its y+ logged, below 5; level.txt) or on its
 # wall function (-no-rear-layers, -steady).
@@ -338,6 +343,23 @@ run_case() {  # run_case N ARGS: Allrun ARGS in a fresh copy $tmp/wedgeN, then t
             check "replay: the played-back flow repeats with the library's period (Cd at t and t + 0.05 s)" \
                 "awk '!/^#/ {cd[sprintf(\"%.4f\", \$1)] = \$3} END { n = 0; for (t in cd) { u = sprintf(\"%.4f\", t + 0.05); if (t > 0.1005 && (u in cd)) { n++; d = cd[t] - cd[u]; if (d < 0) d = -d; if (d > 1e-6 * (1 + (cd[t] < 0 ? -cd[t] : cd[t]))) bad++ } } exit !(n >= 5 && bad == 0) }' '$fc'"
             check "replay: wall time of the flow and the cloud in the log" "grep -q '^Allrun .*Wall time \\[s\\].*flow .*kinematicCloud' '$tmp/allrun$n.log'" ;;
+    esac
+    case "$args" in
+        *-steady*)
+            # the tracer-limit check on the run's frozen flow (validation/wellmixed.sh, the
+            # tracers also entering through the inlet): snowNearWall's walk keeps them
+            # uniform in the wake behind the rear face, the parcels moved with faceFlux
+            local tf; tf=$(cd "$w" && ls -d [0-9]* | sort -g | tail -1)
+            "$top/validation/wellmixed.sh" --case "$w" --time "$tf" --walls "(nose rear top bottom sideYneg sideYpos)" \
+                --inlet inlet --dt 1.6e-4 --parcels 8000 --tl-multiple 2 --models crw \
+                --zone "wake:0.3,-0.1,-0.1:0.6,0.1,0.1" --out "$tmp/wm$n" > "$tmp/wm$n.log" 2>&1
+            check "tracer check: wellmixed.sh on the frozen flow exits 0" "[ $? -eq 0 ]"
+            local wcsv="$tmp/wm$n/wellmixed.csv"
+            grep '| crw | wake | whole' "$tmp/wm$n/wellmixed.md"
+            check "tracer check: the wake behind the rear face within 10 % or 3 standard errors of uniform" \
+                "awk -F, '\$1 == \"crw\" && \$2 == \"wake\" && \$3 == \"whole\" { n++; d = \$9 - 1; if (d < 0) d = -d; ok = (d <= 0.1 || d <= 3 * \$10) } END { exit !(n == 1 && ok) }' '$wcsv'"
+            check "tracer check: every cell of the wedge's mesh takes the velocity from the face fluxes" \
+                "grep -q 'faceFlux: \([0-9]*\) of \1 cells are hexahedra' '$tmp/wm$n/case/log.particles'" ;;
     esac
     awk -F, '$1=="nose"{print $5}' "$r/off/deposit_per_patch.csv" 2>/dev/null > "$tmp/nose$n" || true
     "$w/Allclean"
