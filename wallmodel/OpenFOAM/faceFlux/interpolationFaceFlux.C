@@ -183,14 +183,24 @@ void Foam::interpolationFaceFlux::report() const
     Info<< "faceFlux: " << nHex << " of " << nAll << " cells are hexahedra"
         << " and take the velocity from the face fluxes " << phi_.name()
         << ", " << nAll - nHex << " cellPoint" << endl;
-    if (returnReduce(worst, maxOp<scalar>()) > 1e-3)
+    const scalar worstAll = returnReduce(worst, maxOp<scalar>());
+    if (worstAll > 1e-3)
     {
-        WarningInFunction
-            << "the fluxes " << phi_.name() << " break continuity: |sum phi|"
-            << " / sum |phi| up to " << worst << " (cell " << worstCell
-            << " on this processor); the rebuilt velocity converges where"
-            << " the fluxes do (a flux rebuilt from U is not the solver's"
-            << " own)" << endl;
+        if (Pstream::master())
+        {
+            WarningInFunction
+                << "at the first tracking step (time "
+                << mesh.time().timeName() << ") the fluxes " << phi_.name()
+                << " break continuity: |sum phi| / sum |phi| of a hexahedron"
+                << " up to " << worstAll << "; the rebuilt velocity converges"
+                << " where the fluxes do (an initial field's flux, or one"
+                << " rebuilt from U, is not the solver's own)" << endl;
+        }
+        if (debug)
+        {
+            Pout<< "faceFlux: the largest imbalance here " << worst
+                << " in cell " << worstCell << endl;
+        }
     }
 }
 
