@@ -6,7 +6,8 @@
 # tau+ (the benchmark's band; the statistical error at these counts is about 15 %),
 # V+ at tau+ 10 from tracked deposits (the closure gives nothing there) and at
 # tau+ 1 from the closure; the table and plot are written; nothing is left
-# beside --out. Skipped (77) without OpenFOAM, the project's solver and wrapper,
+# beside --out; --re-tau and --interpolation out of their ranges refused (exit 2,
+# nothing written). Skipped (77) without OpenFOAM, the project's solver and wrapper,
 # bin/snowdeposit or gnuplot.
 # shellcheck source=openfoam_test.sh
 . "$(dirname "$0")/openfoam_test.sh"
@@ -27,5 +28,12 @@ for t in 1 10; do
 done
 check "tau+ 10: tracked deposits, no closure" "awk -F, '{ exit !(\$6 > 50 && \$8 < 1) }' <<< '$(row 10)'"
 check "tau+ 1: the closure's expected deposits carry V+" "awk -F, '{ exit !(\$8 > 3 && \$8 > 5 * \$6) }' <<< '$(row 1)'"
+for bad in "--re-tau 50" "--re-tau 3000" "--re-tau abc" "--re-tau" "--interpolation cell"; do
+    # shellcheck disable=SC2086
+    "$top/validation/deposition.sh" --out "$tmp/bad" $bad > "$tmp/log.bad" 2>&1
+    rc=$?
+    check "refused: $bad (exit 2, nothing written; $(head -1 "$tmp/log.bad"))" "[ $rc -eq 2 ] && [ ! -e '$tmp/bad' ]"
+done
+rm -f "$tmp/log.bad"
 check "nothing left beside --out" "[ -z \"\$(ls -A '$tmp' | grep -v '^out$\\|^log$')\" ]"
 [ "$fails" -eq 0 ] && { echo PASS; exit 0; } || { echo "$fails failure(s)"; exit 1; }
