@@ -221,7 +221,7 @@ if [ -x /usr/bin/simpleFoam ] && [ -x "$top/bin/snowregime" ] && [ -x "$top/bin/
     cp "$tmp/sprayProperties" "$sp"
     sed -i 's/^\( *replayPeriod *\)[^;]*;/\1100;/' "$sp"     # 100 000 snapshots of 102 568 cells
     refused "the flow and its replay library need about" -estimate
-    grep -q "100000 snapshots x 102568 cells x 7 values x 8 bytes" "$tmp/err" || fail "the memory refusal: $(cat "$tmp/err")"
+    grep -q "100000 snapshots x 102568 cells x 10 values x 8 bytes" "$tmp/err" || fail "the memory refusal: $(cat "$tmp/err")"
     cp "$tmp/sprayProperties" "$sp"
 else
     echo "skip the estimate checks: OpenFOAM or the build missing"
