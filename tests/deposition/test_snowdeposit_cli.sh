@@ -52,6 +52,11 @@ check "CT" "$SD" channel --set CT=0
 check "blendYPlus" "$SD" channel --set blendYPlus=50
 check "--re-tau" "$SD" channel --re-tau 5
 check "--sublayer" "$SD" channel --sublayer 500
+check "--gravity" "$SD" channel --gravity -1
+check "--gravity" "$SD" channel --gravity 2
+check "--gravity" "$SD" channel --gravity nan
+check "--c-below" "$SD" channel --c-below 0
+check "--c-below: 400 is not below Re_tau 314" "$SD" channel --c-below 400
 check "--law" "$SD" calibrate --out "$WORK/x" --law stokes
 check "--scheme" "$SD" channel --scheme rk4
 check "--out" "$SD" calibrate

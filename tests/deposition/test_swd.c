@@ -578,6 +578,45 @@ static void channel(void **s)
     swd_free(m);
 }
 
+/* Gravity towards the wall: a walk that keeps tracers well mixed keeps
+ * settling tracers uniform too (the normalized Langevin equation's stationary
+ * density is uniform for any drift velocity added to the fluid's, doc/
+ * deposition.md), so the deposition of tracer-like particles is settling and
+ * no more: V+ = g+ tau+ (the turbulent part is ~1e-8 at tau+ 0.01), and the
+ * concentration next to the wall is the mean. */
+static void settling_adds(void **s)
+{
+    (void)s;
+    swd_model *m = swd_alloc();
+    assert_int_equal(swd_commit(m), SWD_OK);
+    swc_params p;
+    swc_params_default(&p);
+    p.n = 4000;
+    p.t_run = 6000;
+    p.t_warm = 1000;
+    p.tau_plus = 0.01;
+    p.g_plus = 1.0;    /* settling V+ 0.01 */
+    p.y_sub = 1.0;
+    swc_result r;
+    char err[256];
+    assert_int_equal(swc_run(m, &p, &r, err, sizeof err), 0);
+    const double vs = p.g_plus * p.tau_plus;
+    printf("settling: V+ %.4g +- %.2g over g+ tau+ %.4g: %.3f; c(y+ < 1) %.3f\n", r.vplus,
+           r.vplus_se, vs, r.vplus / vs, r.c_sub);
+    if (fabs(r.vplus / vs - 1.0) > 0.15)
+        fail_msg("tracer-like particles under gravity deposit %.3f of settling", r.vplus / vs);
+    assert_true(r.vplus_se < 0.1 * vs);
+    if (fabs(r.c_sub - 1.0) > 0.2)
+        fail_msg("under gravity the band y+ < 1 holds %.3f of the mean", r.c_sub);
+    /* g+ out of range is named */
+    p.g_plus = 2.0;
+    assert_int_equal(swc_run(m, &p, &r, err, sizeof err), -1);
+    assert_non_null(strstr(err, "g+"));
+    p.g_plus = NAN;
+    assert_int_equal(swc_run(m, &p, &r, err, sizeof err), -1);
+    swd_free(m);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -586,7 +625,7 @@ int main(void)
         cmocka_unit_test(one_step),          cmocka_unit_test(closure_table),
         cmocka_unit_test(closure_file),      cmocka_unit_test(wall_frame),
         cmocka_unit_test(channel),           cmocka_unit_test(drift_is_the_gradient),
-        cmocka_unit_test(well_mixed_1d),
+        cmocka_unit_test(well_mixed_1d),     cmocka_unit_test(settling_adds),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

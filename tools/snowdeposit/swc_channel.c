@@ -26,6 +26,7 @@ void swc_params_default(swc_params *p)
     p->c_tl = 0.1;
     p->c_y = 0.2;
     p->y_sub = 10.0;
+    p->g_plus = 0.0;
     p->scheme = SWC_EXACT;
     p->seed = 1;
 }
@@ -64,6 +65,8 @@ int swc_params_check(const swc_params *p, char *err, size_t n)
         return bad(err, n, "cY", p->c_y, "must lie in (0, 1]");
     if (!(isgreater(p->y_sub, 0.0) && isless(p->y_sub, p->re_tau)))
         return bad(err, n, "sublayer y+", p->y_sub, "must lie in (0, Re_tau)");
+    if (!within(p->g_plus, 0.0, 1.0, 0))
+        return bad(err, n, "g+", p->g_plus, "must lie in [0, 1]");
     if (p->scheme != SWC_EXACT && p->scheme != SWC_HOST)
         return bad(err, n, "scheme", (double)p->scheme, "must be exact (0) or host (1)");
     return 0;
@@ -84,7 +87,8 @@ static void bulk(double yp, double h, swd_local *at)
     at->eps = f / (SWP_KARMAN * fmax(yp, 1.0));
 }
 
-static void release(particle *q, const swd_model *m, double h, double rmin, gsl_rng *rng)
+static void release(particle *q, const swd_model *m, double h, double rmin, double vs,
+                    gsl_rng *rng)
 {
     q->y = rmin + (h - rmin) * gsl_rng_uniform_pos(rng);
     for (int i = 0; i < 3; i++)
@@ -93,7 +97,7 @@ static void release(particle *q, const swd_model *m, double h, double rmin, gsl_
     bulk(q->y, h, &at);
     swd_stats s;
     swd_stats_at(m, &at, &s);
-    q->v = s.sigma[1] * q->w[1];
+    q->v = s.sigma[1] * q->w[1] - vs;   /* the fluid's velocity plus settling */
 }
 
 int swc_run(const swd_model *m, const swc_params *p, swc_result *r, char *err, size_t n)
@@ -115,9 +119,10 @@ int swc_run(const swd_model *m, const swc_params *p, swc_result *r, char *err, s
     }
     gsl_rng_set(rng, p->seed);
     const double h = p->re_tau, tau = p->tau_plus, ymin = p->r_plus;
+    const double vs = p->g_plus * tau;   /* settling velocity, towards the wall */
     const double t_end = p->t_warm + p->t_run;
     for (size_t i = 0; i < p->n; i++)
-        release(&ps[i], m, h, ymin, rng);
+        release(&ps[i], m, h, ymin, vs, rng);
 
     /* per batch: tracked deposits plus the closure's expected ones (its
        probabilities summed: the same mean as its draws, far less noise) */
@@ -149,8 +154,9 @@ int swc_run(const swd_model *m, const swc_params *p, swc_result *r, char *err, s
             double kick[3];
             swd_advance(m, &at, dt, tau, q->w, xi, kick, NULL);
             const double e = exp(-dt / tau), one_e = -expm1(-dt / tau);
-            /* the fluid's fluctuation over the step (sigma at its midpoint) */
-            const double vf = kick[1] / one_e;
+            /* the fluid's fluctuation over the step (sigma at its midpoint),
+               and the velocity the particle relaxes to: that minus settling */
+            const double vf = kick[1] / one_e - vs;
             double ynew;
             if (p->scheme == SWC_EXACT)
                 ynew = q->y + vf * dt + (q->v - vf) * tau * one_e;
@@ -195,7 +201,7 @@ int swc_run(const swd_model *m, const swc_params *p, swc_result *r, char *err, s
                         nclosure++;
                     }
                 }
-                release(q, m, h, ymin, rng);
+                release(q, m, h, ymin, vs, rng);
             }
         }
     }
@@ -328,6 +334,7 @@ int swc_calibrate(const swd_model *m, const swc_params *p, double ysub, const do
     }
     swc_params q = *p;
     q.y_sub = ysub;
+    q.g_plus = 0.0;   /* the law is turbulent deposition: calibrated without gravity */
     /* the CRW alone */
     if (rc == 0)
         rc = run_pass(w, &q, tau_plus, n, p->seed, r, err, errlen);

@@ -7,10 +7,13 @@
  * the wall at y+ = 0, the centreplane at y+ = Re_tau (a mirror: the flow is
  * symmetric). N particles of relaxation time tau+ move in the wall-normal
  * direction only:
- *   dv/dt = (v_f - v) / tau+,   dy/dt = v,   v_f = sigma_n(y) w_n (swd_advance),
+ *   dv/dt = (v_f - v) / tau+ - g+,   dy/dt = v,   v_f = sigma_n(y) w_n (swd_advance),
  * with the bulk k+, eps+ of a fully developed channel (the log layer's
  * k+ = 1/sqrt(Cmu) and eps+ = 1/(kappa y+), both falling to the centre as
- * 1 - 0.6 y/h). A particle whose centre reaches y+ = r+ (its radius, with
+ * 1 - 0.6 y/h), and g+ >= 0 gravity towards the wall (0: none; with it the
+ * centreplane's mirror makes the half channel one of height 2 h with gravity
+ * towards both walls, which leaves the wall layer's physics as under a floor).
+ * A particle whose centre reaches y+ = r+ (its radius, with
  * interception; else 0) deposits and a new one is released at a uniformly
  * random height with the fluid's velocity, so the population and its mean
  * concentration stay constant. After a warm-up the deposition velocity is
@@ -54,6 +57,8 @@ typedef struct {
     double c_tl;        /* cT: step <= cT T_L (0 < cT <= 1)                       */
     double c_y;         /* cY: step <= cY y / speed (0 < cY <= 1)                 */
     double y_sub;       /* the sublayer whose concentration is reported (> 0)     */
+    double g_plus;      /* gravity towards the wall, g+ = g nu / u_tau^3 (>= 0, <= 1):
+                           the particle's settling velocity is g+ tau+            */
     swc_scheme scheme;
     unsigned long seed;
 } swc_params;
@@ -71,7 +76,7 @@ typedef struct {
 } swc_result;
 
 /* Defaults: Re_tau 314, tau+ 1, r+ 0, 2000 particles, warm-up 2000, window
- * 20000, dtMax+ 2, cT 0.1, cY 0.2, y_sub 10, exact, seed 1. */
+ * 20000, dtMax+ 2, cT 0.1, cY 0.2, y_sub 10, g+ 0, exact, seed 1. */
 void swc_params_default(swc_params *p);
 /* Check the parameters: 0, or -1 with a message naming the field and value. */
 int swc_params_check(const swc_params *p, char *err, size_t errlen);
@@ -79,7 +84,8 @@ int swc_params_check(const swc_params *p, char *err, size_t errlen);
  * parameters, -2 out of memory. */
 int swc_run(const swd_model *m, const swc_params *p, swc_result *r, char *err, size_t errlen);
 
-/* The calibration of the sublayer closure (swd.h) for a deposition law:
+/* The calibration of the sublayer closure (swd.h) for a deposition law
+ * (always without gravity, whatever p->g_plus: the laws are turbulent deposition):
  * for each tau_plus[i] a CRW-only run (closure off) gives V+_crw and c_s
  * (y_sub = sublayer_yplus), then
  *   vs[i] = max(0, law[i] - V+_crw) / c_s,

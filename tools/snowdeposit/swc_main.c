@@ -81,6 +81,13 @@ static const char *usage =
 "    --scheme S          exact (default) or host: the particle's position moved\n"
 "                        with its velocity at the start of a step, as OpenFOAM's\n"
 "                        tracking moves a parcel\n"
+"    --gravity G         gravity towards the wall, G = g nu / u_tau^3 in [0, 1]\n"
+"                        (default 0): the particles settle at G tau+ (V+ of settling\n"
+"                        alone); the centreplane's mirror then makes the half\n"
+"                        channel one of height 2 Re_tau with gravity towards both\n"
+"                        walls, the wall layer as under a floor\n"
+"    --c-below Y         channel: the band y+ < Y (< Re_tau) whose concentration over\n"
+"                        the mean is printed as c_sub (default 10)\n"
 "    --radius            deposit when the particle's surface touches the wall\n"
 "                        (r+ = d+/2 of an ice sphere in air at -15 C, from tau+)\n"
 "                        instead of its centre\n"
@@ -318,6 +325,7 @@ static int parse(int argc, char **argv, opts *o, swd_model *m)
                 { "--t-run", &o->p.t_run, 0, 1e9, 1 },     { "--dt-max", &o->p.dt_max, 0, 100, 1 },
                 { "--c-tl", &o->p.c_tl, 0, 1, 1 },         { "--c-y", &o->p.c_y, 0, 1, 1 },
                 { "--sublayer", &o->sublayer, 0, 200, 1 },
+                { "--gravity", &o->p.g_plus, 0, 1, 0 },    { "--c-below", &o->p.y_sub, 0, 1e5, 1 },
             };
             size_t k = 0;
             while (k < sizeof num / sizeof num[0] && strcmp(a, num[k].opt))
@@ -339,6 +347,11 @@ static int parse(int argc, char **argv, opts *o, swd_model *m)
         return 2;
     }
     char err[256];
+    if (!(o->p.y_sub < o->p.re_tau)) {   /* finite: bounded above */
+        fprintf(stderr, "snowdeposit: --c-below: %g is not below Re_tau %g (see snowdeposit "
+                        "--help)\n", o->p.y_sub, o->p.re_tau);
+        return 2;
+    }
     swc_params q = o->p;
     if (swc_params_check(&q, err, sizeof err)) {
         fprintf(stderr, "snowdeposit: %s (see snowdeposit --help)\n", err);
@@ -504,9 +517,10 @@ int main(int argc, char **argv)
     }
     if (o.closure && swd_set_closure(m, o.sublayer, o.tau, vs, n) == SWD_OK)
         swd_commit(m);
-    printf("# Re_tau %g, %zu particles, warm-up t+ %g, window t+ %g, scheme %s%s%s\n",
+    printf("# Re_tau %g, %zu particles, warm-up t+ %g, window t+ %g, scheme %s%s%s, gravity "
+           "g+ %g, c_sub in y+ < %g\n",
            o.p.re_tau, o.p.n, o.p.t_warm, o.p.t_run, o.p.scheme == SWC_EXACT ? "exact" : "host",
-           o.closure ? ", closure " : "", o.closure ? o.closure : "");
+           o.closure ? ", closure " : "", o.closure ? o.closure : "", o.p.g_plus, o.p.y_sub);
     printf("%10s %12s %10s %9s %10s %12s %8s %8s %10s %7s\n", "tau+", "V+", "se", "D_track",
            "E_closure", "V+_wood", "ratio", "c_sub", "steps", "dt+");
     for (size_t i = 0; i < n; i++) {
