@@ -1,11 +1,15 @@
-/* test_swf.c - the flux-consistent velocity in a hexahedral cell
- * (wallmodel/core/swf.h) against closed forms on parallelepipeds: the face
- * fluxes it carries, its divergence, the flows it reproduces, a wall. */
+/* test_swf.c - the flux-consistent velocity in a cell (wallmodel/core/swf.h)
+ * against closed forms: on parallelepipeds the face fluxes it carries, its
+ * divergence, the flows it reproduces, a wall; on a polyhedron of the kind
+ * snappyHexMesh makes (a cube with one face split in four, side faces of five
+ * points, three in a line) the tetrahedra's balances, their inner faces'
+ * continuity, a uniform flow exactly and a strain to first order. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <cmocka.h>
 
 #include "swf.h"
@@ -239,6 +243,240 @@ static void bad_input(void **s)
     assert_true(u[0] == 7 && u[1] == 7 && u[2] == 7);
 }
 
+/* ---- cells of any shape ---------------------------------------------------- */
+
+/* The split cube: corners of [0,1]^3, the top face (z = 1) split at its edge
+ * midpoints and its centre into four quadrilaterals; the four side faces hold
+ * the midpoint of their top edge (five points, three in a line). Faces as
+ * point-id lists, ordered so that the normal points out; fanned from their
+ * first point as OpenFOAM fans a face from its base point. */
+static const double P[14][3] = {
+    {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},                  /* 0-3 bottom */
+    {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1},                  /* 4-7 top corners */
+    {0.5, 0, 1}, {1, 0.5, 1}, {0.5, 1, 1}, {0, 0.5, 1},          /* 8-11 top edge midpoints */
+    {0.5, 0.5, 1}, {0, 0, 0}                                     /* 12 top centre */
+};
+static const int FACES[][6] = {
+    /* n, points (outward, right hand) */
+    {4, 0, 3, 2, 1},          /* bottom z = 0, normal -z */
+    {4, 4, 8, 12, 11},        /* top, four quadrilaterals, normal +z */
+    {4, 8, 5, 9, 12},
+    {4, 12, 9, 6, 10},
+    {4, 11, 12, 10, 7},
+    {5, 0, 1, 5, 8, 4},       /* y = 0, normal -y */
+    {5, 1, 2, 6, 9, 5},       /* x = 1, normal +x */
+    {5, 2, 3, 7, 10, 6},      /* y = 1, normal +y */
+    {5, 3, 0, 4, 11, 7},      /* x = 0, normal -x */
+};
+#define NFACE (int)(sizeof FACES / sizeof FACES[0])
+
+typedef struct {
+    int n;
+    double p[3 * 64][3];
+    long id[3 * 64];
+    double flux[64];
+} poly_cell;
+
+/* the flux of the field through the triangle a b c: u at its centroid dotted
+   with its area vector (exact for a linear field) */
+static double tri_flux(field_fn f, const double a[3], const double b[3], const double c[3])
+{
+    double e1[3], e2[3], s[3], g[3], u[3];
+    for (int i = 0; i < 3; i++) {
+        e1[i] = b[i] - a[i];
+        e2[i] = c[i] - a[i];
+        g[i] = (a[i] + b[i] + c[i]) / 3.0;
+    }
+    cross(e1, e2, s);
+    f(g, u);
+    return 0.5 * (u[0] * s[0] + u[1] * s[1] + u[2] * s[2]);
+}
+
+static void poly_make(poly_cell *pc, field_fn f)
+{
+    pc->n = 0;
+    for (int k = 0; k < NFACE; k++) {
+        const int m = FACES[k][0];
+        for (int i = 1; i + 1 < m; i++) {
+            const int ids[3] = {FACES[k][1], FACES[k][1 + i], FACES[k][2 + i]};
+            for (int j = 0; j < 3; j++) {
+                for (int d = 0; d < 3; d++) pc->p[3 * pc->n + j][d] = P[ids[j]][d];
+                pc->id[3 * pc->n + j] = ids[j];
+            }
+            pc->flux[pc->n] = tri_flux(f, P[ids[0]], P[ids[1]], P[ids[2]]);
+            pc->n++;
+        }
+    }
+}
+
+static void uniform(const double x[3], double u[3])
+{
+    (void)x;
+    u[0] = 1.0;
+    u[1] = -2.0;
+    u[2] = 0.5;
+}
+
+static void plane_strain(const double x[3], double u[3])
+{
+    u[0] = 0.3 + (x[0] - 0.5);
+    u[1] = -0.2 - (x[1] - 0.5);
+    u[2] = 0.1;
+}
+
+static void swelling(const double x[3], double u[3])   /* div u = 3 */
+{
+    u[0] = x[0] - 0.5;
+    u[1] = x[1] - 0.5;
+    u[2] = x[2] - 0.5;
+}
+
+static swf_poly poly_view(const poly_cell *pc, const double centre[3])
+{
+    swf_poly c;
+    c.n = pc->n;
+    for (int i = 0; i < 3; i++) c.centre[i] = centre[i];
+    c.p = (const double (*)[3])pc->p;
+    c.id = pc->id;
+    c.flux = pc->flux;
+    return c;
+}
+
+static void tet_of(const poly_cell *pc, const double centre[3], int t, double v[4][3])
+{
+    for (int i = 0; i < 3; i++) v[0][i] = centre[i];
+    for (int j = 0; j < 3; j++)
+        for (int i = 0; i < 3; i++) v[1 + j][i] = pc->p[3 * t + j][i];
+}
+
+static double tet_volume(double v[4][3])
+{
+    double e1[3], e2[3], e3[3], s[3];
+    for (int i = 0; i < 3; i++) {
+        e1[i] = v[1][i] - v[0][i];
+        e2[i] = v[2][i] - v[0][i];
+        e3[i] = v[3][i] - v[0][i];
+    }
+    cross(e2, e3, s);
+    return (e1[0] * s[0] + e1[1] * s[1] + e1[2] * s[2]) / 6.0;
+}
+
+static const double CENTRE[3] = {0.5, 0.5, 0.48};
+
+static void polyhedron_balances(void **s)
+{
+    (void)s;
+    static poly_cell pc;
+    double F[4 * 64];
+    field_fn fields[] = {uniform, plane_strain, swelling};
+    for (int k = 0; k < 3; k++) {
+        poly_make(&pc, fields[k]);
+        assert_int_equal(pc.n, 22);   /* 2 + 4 x 2 + 4 x 3 triangles */
+        const swf_poly c = poly_view(&pc, CENTRE);
+        assert_int_equal(swf_poly_fluxes(&c, F), SWF_OK);
+        double total = 0.0;
+        for (int t = 0; t < pc.n; t++) total += pc.flux[t];
+        for (int t = 0; t < pc.n; t++) {
+            double v[4][3];
+            tet_of(&pc, CENTRE, t, v);
+            const double out = F[4 * t] + F[4 * t + 1] + F[4 * t + 2] + F[4 * t + 3];
+            /* every tetrahedron has the cell's divergence (the cube's volume is 1) */
+            assert_float_equal(out, total * tet_volume(v), 1e-12);
+            assert_float_equal(F[4 * t], pc.flux[t], 0.0);
+        }
+        /* every inner face: what leaves one tetrahedron enters the other */
+        for (int t = 0; t < pc.n; t++)
+            for (int j = 0; j < 3; j++) {
+                const long a = pc.id[3 * t + (j + 1) % 3], b = pc.id[3 * t + (j + 2) % 3];
+                int found = 0;
+                for (int u = 0; u < pc.n && !found; u++)
+                    for (int i = 0; i < 3 && !found; i++) {
+                        const long x = pc.id[3 * u + (i + 1) % 3], y = pc.id[3 * u + (i + 2) % 3];
+                        if (u != t && ((x == a && y == b) || (x == b && y == a))) {
+                            assert_float_equal(F[4 * t + 1 + j], -F[4 * u + 1 + i], 1e-14);
+                            found = 1;
+                        }
+                    }
+                assert_true(found);
+            }
+    }
+}
+
+static void polyhedron_velocity(void **s)
+{
+    (void)s;
+    static poly_cell pc;
+    double F[4 * 64];
+    /* a uniform flow: exact in every tetrahedron of non-zero volume */
+    poly_make(&pc, uniform);
+    swf_poly c = poly_view(&pc, CENTRE);
+    assert_int_equal(swf_poly_fluxes(&c, F), SWF_OK);
+    int evaluated = 0, flat = 0;
+    for (int t = 0; t < pc.n; t++) {
+        double v[4][3], x[3], u[3], ue[3];
+        tet_of(&pc, CENTRE, t, v);
+        for (int i = 0; i < 3; i++) x[i] = 0.1 * v[0][i] + 0.2 * v[1][i] + 0.3 * v[2][i] + 0.4 * v[3][i];
+        const int rc = swf_tet_velocity((const double (*)[3])v, &F[4 * t], x, u);
+        if (rc == SWF_EDEGENERATE) {
+            flat++;
+            continue;
+        }
+        assert_int_equal(rc, SWF_OK);
+        uniform(x, ue);
+        for (int i = 0; i < 3; i++) assert_float_equal(u[i], ue[i], 1e-12);
+        evaluated++;
+    }
+    assert_int_equal(flat, 0);   /* the fans from the first points have no flat triangle */
+    assert_int_equal(evaluated, pc.n);
+    /* a strain: first order, within the velocity change across the cell,
+       and the normal velocity on the walls of the cell's boundary is the
+       flux's own (zero where the flux is zero) */
+    poly_make(&pc, plane_strain);
+    c = poly_view(&pc, CENTRE);
+    assert_int_equal(swf_poly_fluxes(&c, F), SWF_OK);
+    double worst = 0.0;
+    for (int t = 0; t < pc.n; t++) {
+        double v[4][3], x[3], u[3], ue[3];
+        tet_of(&pc, CENTRE, t, v);
+        for (int i = 0; i < 3; i++) x[i] = 0.25 * (v[0][i] + v[1][i] + v[2][i] + v[3][i]);
+        if (swf_tet_velocity((const double (*)[3])v, &F[4 * t], x, u) != SWF_OK) continue;
+        plane_strain(x, ue);
+        for (int i = 0; i < 3; i++) worst = fmax(worst, fabs(u[i] - ue[i]));
+    }
+    printf("polyhedron, plane strain: largest error at the tetrahedra's centroids %.3f "
+           "(the velocity changes by 1 across the cell)\n", worst);
+    assert_true(worst < 0.5);
+}
+
+static void polyhedron_refusals(void **s)
+{
+    (void)s;
+    static poly_cell pc;
+    double F[4 * 64];
+    poly_make(&pc, uniform);
+    swf_poly c = poly_view(&pc, CENTRE);
+    /* an open boundary: one triangle left out */
+    c.n = pc.n - 1;
+    assert_int_equal(swf_poly_fluxes(&c, F), SWF_EDEGENERATE);
+    /* two triangles left out: an even count, still open */
+    c.n = pc.n - 2;
+    assert_int_equal(swf_poly_fluxes(&c, F), SWF_EDEGENERATE);
+    c = poly_view(&pc, CENTRE);
+    c.n = 3;
+    assert_int_equal(swf_poly_fluxes(&c, F), SWF_EINVAL);
+    c = poly_view(&pc, CENTRE);
+    pc.flux[3] = NAN;
+    assert_int_equal(swf_poly_fluxes(&c, F), SWF_EINVAL);
+    assert_int_equal(swf_poly_fluxes(NULL, F), SWF_EINVAL);
+    const double v[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};   /* flat */
+    const double q[4] = {0, 0, 0, 0}, x[3] = {0.2, 0.2, 0};
+    double u[3];
+    assert_int_equal(swf_tet_velocity(v, q, x, u), SWF_EDEGENERATE);
+    const double xn[3] = {NAN, 0, 0};
+    const double v2[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    assert_int_equal(swf_tet_velocity(v2, q, xn, u), SWF_EINVAL);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -246,6 +484,9 @@ int main(void)
         cmocka_unit_test(carries_the_fluxes),
         cmocka_unit_test(shear_is_the_mean),
         cmocka_unit_test(bad_input),
+        cmocka_unit_test(polyhedron_balances),
+        cmocka_unit_test(polyhedron_velocity),
+        cmocka_unit_test(polyhedron_refusals),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,7 +1,13 @@
-/* swf.c - the flux-consistent (RT0) velocity in a hexahedral cell (swf.h). */
+/* swf.c - the flux-consistent (RT0) velocity in a cell (swf.h): a hexahedron
+ * from its six faces, any other cell in the tetrahedra around its centre. */
 #include "swf.h"
 
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_linalg.h>
+#include <gsl/gsl_matrix.h>
+
 #include <math.h>
+#include <stdlib.h>
 
 static void cross(const double a[3], const double b[3], double c[3])
 {
@@ -88,4 +94,222 @@ double swf_hex_imbalance(const swf_hex *h)
         a += fabs(h->phi_lo[k]) + fabs(h->phi_hi[k]);
     }
     return a > 0.0 ? fabs(s) / a : 0.0;
+}
+
+/* ---- cells of any shape ---------------------------------------------------- */
+
+typedef struct {
+    long a, b;   /* the edge's point ids, a < b */
+    int t, j;    /* the tetrahedron and the point of its triangle opposite the edge */
+} edge_ref;
+
+static int edge_cmp(const void *x, const void *y)
+{
+    const edge_ref *p = x, *q = y;
+    if (p->a != q->a) return p->a < q->a ? -1 : 1;
+    if (p->b != q->b) return p->b < q->b ? -1 : 1;
+    return 0;
+}
+
+static void sub3(const double a[3], const double b[3], double c[3])
+{
+    c[0] = a[0] - b[0];
+    c[1] = a[1] - b[1];
+    c[2] = a[2] - b[2];
+}
+
+/* the area vector of the triangle x0 x1 x2 (right hand) */
+static void area3(const double x0[3], const double x1[3], const double x2[3], double s[3])
+{
+    double e1[3], e2[3];
+    sub3(x1, x0, e1);
+    sub3(x2, x0, e2);
+    cross(e1, e2, s);
+    for (int i = 0; i < 3; i++) s[i] *= 0.5;
+}
+
+int swf_poly_fluxes(const swf_poly *c, double *F)
+{
+    if (!c || !F || !c->p || !c->id || !c->flux || c->n < 4 || c->n > SWF_POLY_MAX)
+        return SWF_EINVAL;
+    const int n = c->n;
+    for (int i = 0; i < 3; i++)
+        if (!isfinite(c->centre[i])) return SWF_EINVAL;
+    for (int t = 0; t < n; t++) {
+        if (!isfinite(c->flux[t])) return SWF_EINVAL;
+        for (int j = 0; j < 3; j++)
+            for (int i = 0; i < 3; i++)
+                if (!isfinite(c->p[3 * t + j][i])) return SWF_EINVAL;
+    }
+    const int ne = 3 * n / 2;
+    if (3 * n % 2) return SWF_EDEGENERATE;   /* a closed triangulation has 3n/2 edges */
+    double *vol = malloc((size_t)n * sizeof *vol);
+    edge_ref *er = malloc((size_t)3 * n * sizeof *er);
+    double *q = malloc((size_t)ne * sizeof *q), *w = malloc((size_t)ne * sizeof *w);
+    int *t1 = malloc((size_t)ne * sizeof *t1), *t2 = malloc((size_t)ne * sizeof *t2);
+    double *r = malloc((size_t)n * sizeof *r);
+    gsl_matrix *L = n > 1 ? gsl_matrix_calloc((size_t)(n - 1), (size_t)(n - 1)) : NULL;
+    int rc = SWF_OK;
+    if (!vol || !er || !q || !w || !t1 || !t2 || !r || !L) {
+        rc = SWF_EDEGENERATE;   /* out of memory: the host falls back */
+        goto done;
+    }
+    /* volumes, the least-squares mean velocity of the boundary fluxes */
+    double vtot = 0.0, qsum = 0.0, A[9] = {0}, b[3] = {0};
+    for (int t = 0; t < n; t++) {
+        const double *x0 = c->p[3 * t], *x1 = c->p[3 * t + 1], *x2 = c->p[3 * t + 2];
+        double a0[3], a1[3], a2[3], s[3];
+        sub3(x0, c->centre, a0);
+        sub3(x1, c->centre, a1);
+        sub3(x2, c->centre, a2);
+        cross(a1, a2, s);
+        vol[t] = dot(a0, s) / 6.0;
+        vtot += vol[t];
+        qsum += c->flux[t];
+        area3(x0, x1, x2, s);
+        const double m = sqrt(dot(s, s));
+        if (m > 0.0) {
+            for (int i = 0; i < 3; i++) {
+                for (int k = 0; k < 3; k++) A[3 * i + k] += s[i] * s[k] / m;
+                b[i] += s[i] * c->flux[t] / m;
+            }
+        }
+    }
+    if (!(vtot > 0.0)) {
+        rc = SWF_EDEGENERATE;
+        goto done;
+    }
+    double uc[3];
+    {
+        /* A uc = b by Cramer's rule (A is 3 x 3, symmetric, positive for a
+           closed cell) */
+        const double det = A[0] * (A[4] * A[8] - A[5] * A[7]) - A[1] * (A[3] * A[8] - A[5] * A[6])
+                           + A[2] * (A[3] * A[7] - A[4] * A[6]);
+        if (!(fabs(det) > 0.0)) {
+            rc = SWF_EDEGENERATE;
+            goto done;
+        }
+        for (int k = 0; k < 3; k++) {
+            double M[9];
+            for (int i = 0; i < 9; i++) M[i] = A[i];
+            for (int i = 0; i < 3; i++) M[3 * i + k] = b[i];
+            uc[k] = (M[0] * (M[4] * M[8] - M[5] * M[7]) - M[1] * (M[3] * M[8] - M[5] * M[6])
+                     + M[2] * (M[3] * M[7] - M[4] * M[6])) / det;
+        }
+    }
+    /* the inner faces: the edges of the boundary, each in two triangles */
+    for (int t = 0; t < n; t++)
+        for (int j = 0; j < 3; j++) {
+            const long u = c->id[3 * t + (j + 1) % 3], v = c->id[3 * t + (j + 2) % 3];
+            er[3 * t + j] = (edge_ref){ u < v ? u : v, u < v ? v : u, t, j };
+        }
+    qsort(er, (size_t)3 * n, sizeof *er, edge_cmp);
+    for (int e = 0; e < ne; e++) {
+        const edge_ref *x = &er[2 * e], *y = &er[2 * e + 1];
+        if (edge_cmp(x, y) != 0 || x->a == x->b || x->t == y->t
+            || (2 * e + 2 < 3 * n && edge_cmp(y, &er[2 * e + 2]) == 0)) {
+            rc = SWF_EDEGENERATE;   /* not a closed, two-manifold boundary */
+            goto done;
+        }
+        t1[e] = x->t;
+        t2[e] = y->t;
+        /* the face (c, the edge's points), its area vector out of t1 */
+        const double *pa = c->p[3 * x->t + (x->j + 1) % 3], *pb = c->p[3 * x->t + (x->j + 2) % 3];
+        double s[3], g[3];
+        area3(c->centre, pa, pb, s);
+        /* out of t1: away from t1's own vertex opposite this face (its point j) */
+        sub3(c->p[3 * x->t + x->j], c->centre, g);
+        if (dot(s, g) > 0.0)
+            for (int i = 0; i < 3; i++) s[i] = -s[i];
+        const double s2 = dot(s, s);
+        const double vv = fabs(vol[t1[e]]) + fabs(vol[t2[e]]);
+        w[e] = s2 / (vv > 1e-300 ? vv : 1e-300);
+        q[e] = dot(uc, s);
+        /* remember the edge in F's slots: +1 for t1, -1 for t2 (filled below) */
+        er[2 * e].j = x->j;
+        er[2 * e + 1].j = y->j;
+    }
+    /* the residual of every tetrahedron's balance with the mean velocity's
+       inner fluxes: r_t = sum(phi) V_t / V - phi_t - sum_e s_te q_e */
+    for (int t = 0; t < n; t++) r[t] = qsum * vol[t] / vtot - c->flux[t];
+    for (int e = 0; e < ne; e++) {
+        r[t1[e]] -= q[e];
+        r[t2[e]] += q[e];
+    }
+    /* the weighted Laplacian, the last tetrahedron's potential fixed at 0 */
+    for (int e = 0; e < ne; e++) {
+        const int a = t1[e], bb = t2[e];
+        if (a < n - 1) *gsl_matrix_ptr(L, (size_t)a, (size_t)a) += w[e];
+        if (bb < n - 1) *gsl_matrix_ptr(L, (size_t)bb, (size_t)bb) += w[e];
+        if (a < n - 1 && bb < n - 1) {
+            *gsl_matrix_ptr(L, (size_t)a, (size_t)bb) -= w[e];
+            *gsl_matrix_ptr(L, (size_t)bb, (size_t)a) -= w[e];
+        }
+    }
+    {
+        gsl_error_handler_t *old = gsl_set_error_handler_off();
+        gsl_vector_view rv = gsl_vector_view_array(r, (size_t)(n - 1));
+        const int st = gsl_linalg_cholesky_decomp1(L);
+        const int sv = st == 0 ? gsl_linalg_cholesky_svx(L, &rv.vector) : st;
+        gsl_set_error_handler(old);
+        if (sv != 0) {
+            rc = SWF_EDEGENERATE;   /* the tetrahedra are not connected */
+            goto done;
+        }
+        r[n - 1] = 0.0;   /* r now holds the potentials */
+    }
+    for (int t = 0; t < n; t++) F[4 * t] = c->flux[t];
+    for (int e = 0; e < ne; e++) {
+        const double qe = q[e] + w[e] * (r[t1[e]] - r[t2[e]]);
+        if (!isfinite(qe)) {
+            rc = SWF_EDEGENERATE;
+            goto done;
+        }
+        F[4 * t1[e] + 1 + er[2 * e].j] = qe;
+        F[4 * t2[e] + 1 + er[2 * e + 1].j] = -qe;
+    }
+done:
+    free(vol);
+    free(er);
+    free(q);
+    free(w);
+    free(t1);
+    free(t2);
+    free(r);
+    if (L) gsl_matrix_free(L);
+    return rc;
+}
+
+int swf_tet_velocity(const double v[4][3], const double F[4], const double x[3], double u[3])
+{
+    if (!v || !F || !x || !u) return SWF_EINVAL;
+    for (int i = 0; i < 4; i++) {
+        if (!isfinite(F[i])) return SWF_EINVAL;
+        for (int k = 0; k < 3; k++)
+            if (!isfinite(v[i][k])) return SWF_EINVAL;
+    }
+    for (int k = 0; k < 3; k++)
+        if (!isfinite(x[k])) return SWF_EINVAL;
+    double e1[3], e2[3], e3[3], s[3];
+    sub3(v[1], v[0], e1);
+    sub3(v[2], v[0], e2);
+    sub3(v[3], v[0], e3);
+    cross(e2, e3, s);
+    const double vol = fabs(dot(e1, s)) / 6.0;
+    double lmax = 0.0;
+    for (int i = 0; i < 4; i++)
+        for (int j = i + 1; j < 4; j++) {
+            double d[3];
+            sub3(v[i], v[j], d);
+            const double l = sqrt(dot(d, d));
+            if (l > lmax) lmax = l;
+        }
+    if (!(vol > 1e-12 * lmax * lmax * lmax)) return SWF_EDEGENERATE;
+    double out[3] = {0, 0, 0};
+    for (int i = 0; i < 4; i++)
+        for (int k = 0; k < 3; k++) out[k] += F[i] * (x[k] - v[i][k]) / (3.0 * vol);
+    u[0] = out[0];
+    u[1] = out[1];
+    u[2] = out[2];
+    return SWF_OK;
 }

@@ -1,6 +1,7 @@
-/* swf.h - SnowWall flux-consistent velocity in a hexahedral cell: the fluid
- * velocity at a point of a cell rebuilt from the volume fluxes through the
- * cell's six faces (the lowest-order Raviart-Thomas field, RT0), for particle
+/* swf.h - SnowWall flux-consistent velocity in a cell: the fluid velocity at a
+ * point of a cell rebuilt from the volume fluxes through the cell's faces (the
+ * lowest-order Raviart-Thomas field, RT0: on a hexahedron from its six faces,
+ * on any other cell in the tetrahedra of the host's tracking), for particle
  * tracking that keeps tracers well mixed next to walls (doc/deposition.md,
  * "The tracking next to a wall").
  *
@@ -28,7 +29,8 @@
  * is seen as its mean (first order). On a cell that is not a parallelepiped
  * the three hold as far as the cell is one; xi is clipped to [0, 1].
  *
- * Pure functions, no state: thread-safe. */
+ * Pure functions, no state: thread-safe (swf_poly_fluxes allocates its
+ * work space and frees it). */
 #ifndef SWF_H
 #define SWF_H
 
@@ -57,6 +59,56 @@ int swf_hex_velocity(const swf_hex *h, const double x[3], double u[3]);
  * flux): how far the fluxes the host gives keep continuity. */
 double swf_hex_divergence(const swf_hex *h);
 double swf_hex_imbalance(const swf_hex *h);
+
+/* ---- cells of any shape: the tetrahedra of the host's tracking ------------
+ * A cell that is not a hexahedron is split, as OpenFOAM's tracking splits it,
+ * into tetrahedra around a centre point c: one per triangle of its boundary
+ * (each face fanned into triangles). The flux of each boundary triangle is
+ * given (the host's face flux shared out over the face's triangles by their
+ * area vectors, the same on both sides of the face); the fluxes through the
+ * tetrahedra's inner faces (the triangles from c to every edge) are found so
+ * that every tetrahedron has the cell's divergence, sum(phi) / V, and they
+ * deviate least from those of the cell's mean velocity U_c (the least-squares
+ * velocity of the face fluxes, exact for a uniform flow):
+ *   minimise  sum_e (q_e - U_c . S_e)^2 (V_1 + V_2) / |S_e|^2
+ *   subject to  the fluxes out of tetrahedron t sum to sum(phi) V_t / V,
+ * a weighted graph Laplacian of the tetrahedra, solved by Cholesky (GSL).
+ * In each tetrahedron the velocity is then the lowest-order Raviart-Thomas
+ * field of its four fluxes F_i (F_i through the face opposite vertex v_i):
+ *   u(x) = sum_i F_i (x - v_i) / (3 V_t),
+ * whose normal component is constant on each face: continuous from one
+ * tetrahedron to the next, from one cell to the next (the neighbour shares the
+ * face's flux and triangles) and zero on a wall. A uniform flow is
+ * reproduced exactly; otherwise the field is first order, as in the
+ * hexahedron. */
+#define SWF_POLY_MAX 1024   /* triangles of one cell at most */
+
+typedef struct {
+    int n;                    /* boundary triangles = tetrahedra, 4 .. SWF_POLY_MAX  */
+    double centre[3];         /* the centre c the tetrahedra share [m]               */
+    const double (*p)[3];     /* the triangles' points: p[3 t + j], j = 0, 1, 2, in
+                                 the order that makes the triangle's normal point
+                                 out of the cell [m]                                */
+    const long *id;           /* an identity per point, id[3 t + j] (the host's
+                                 point label): equal ids are the same point; every
+                                 edge of the closed boundary is in two triangles    */
+    const double *flux;       /* outward volume flux through each triangle [m3/s]  */
+} swf_poly;
+
+/* The four fluxes of every tetrahedron: F[4 t + 0] through its boundary
+ * triangle (opposite c), F[4 t + 1 + j] through the inner face opposite the
+ * triangle's point j; outward. F has 4 n values. Returns SWF_OK,
+ * SWF_EINVAL (NULL, n out of range, a non-finite value) or SWF_EDEGENERATE
+ * (the boundary is not closed with each edge in two triangles, a
+ * tetrahedron of (nearly) zero volume, or the tetrahedra are not connected):
+ * the host falls back to its own interpolation. */
+int swf_poly_fluxes(const swf_poly *c, double *F);
+
+/* The velocity u [m/s] at x [m] in the tetrahedron v[0..3] [m] with the
+ * outward fluxes F[i] through the face opposite v[i] [m3/s]. SWF_EINVAL for
+ * a non-finite input, SWF_EDEGENERATE for a tetrahedron of (nearly) zero
+ * volume (below 1e-12 of its largest edge cubed). */
+int swf_tet_velocity(const double v[4][3], const double F[4], const double x[3], double u[3]);
 
 #ifdef __cplusplus
 }
