@@ -20,7 +20,13 @@
 # D the parcels that left through the walls by tracking, E the expected
 # number that the sublayer closure of snowNearWall brought there (its
 # probabilities summed; 0 for the other treatments), N the parcels in the
-# channel, h its half height; standard error V+/sqrt(D + E) (Poisson).
+# channel, h its half height; standard error V+/sqrt(D + E) (Poisson). Beside
+# it V+_core = V+ / c_core, on the concentration outside the wall layer
+# (y+ > 30), c_core that concentration over the mean over the window (the
+# cloud function wellMixedCheck): particles of tau+ 10-30 gather in the
+# viscous sublayer and hover there, where they count in the mean but carry
+# almost none of the flow, and a sampling probe or a pipe's mixed outflow, the
+# measurements' reference, does not see them (doc/deposition.md).
 #
 # Treatments (--models, comma-separated): stochastic (stochasticDispersionRAS),
 # gradient (gradientDispersionRAS), none (no dispersion), nearwall
@@ -42,8 +48,9 @@
 # flow keeps tracers uniform, doc/deposition.md) or cellPoint (OpenFOAM's:
 # it gathers tracer-like parcels at walls on wall-function meshes).
 #
-# Writes into DIR, only when the run succeeds: vplus.csv and vplus.md (V+ per
-# mesh, treatment and tau+, with the counts, the error and Wood's correlation),
+# Writes into DIR, only when the run succeeds: vplus.csv and vplus.md (V+ and
+# V+_core per mesh, treatment and tau+, with the counts, the errors, c_core and
+# Wood's correlation),
 # vplus.png (V+ against tau+ with the correlations of the measurements),
 # flow.md (u_tau, Re_tau, y+ of the first cell, the run times),
 # deposition.coeffs (the closure used) and the cases (<mesh>/case, logs
@@ -160,9 +167,11 @@ boundary
 EOF
 }
 
-# cloud properties: one tau+ and treatment
-write_cloud() {   # case name d model
-    dep_write_cloud "$1" "$2" "$3" "$4" "$rhop" "($ubar 0 0)" uniform walls "(walls)"
+# cloud properties: one tau+ and treatment, with the concentration outside the
+# wall layer (y+ > 30) over the window (wellMixedCheck "core": channel-vplus)
+write_cloud() {   # case name d model window_start_s
+    DEP_EXTRA_FUNCS="core { type wellMixedCheck; patches (walls); bands (0 30); startTime $5; totalSamples 200000; }" \
+        dep_write_cloud "$1" "$2" "$3" "$4" "$rhop" "($ubar 0 0)" uniform walls "(walls)"
 }
 
 # parcels released uniformly over the channel (away from the walls by 1e-6 h)
@@ -180,7 +189,7 @@ write_positions() {   # case n seed
 }
 
 rows="$tmp/rows.csv"
-echo "mesh,model,tau_plus,d_m,parcels,deposits_tracked,closure_drawn,closure_expected,int_N_dt_s,vplus,vplus_se,wood" > "$rows"
+echo "mesh,model,tau_plus,d_m,parcels,deposits_tracked,closure_drawn,closure_expected,int_N_dt_s,vplus,vplus_se,wood,c_core,vplus_core,vplus_core_se" > "$rows"
 flowmd="$tmp/flow.md"
 {
     echo "# The channel flow (validation/deposition.sh)"
@@ -240,7 +249,7 @@ EOF
             t=${tauList[$i]}
             d=$(awk -v t="$t" -v u="$utau" -v nu="$nu" -v mu="$mu" -v r="$rhop" 'BEGIN { printf "%.6g", sqrt(18 * mu * t * nu / (r * u * u)) }')
             name="c_${m}_$i"
-            write_cloud "$c" "$name" "$d" "$m"
+            write_cloud "$c" "$name" "$d" "$m" "$(awk -v n="$nwarm" -v s="$dt" 'BEGIN { printf "%.10g", n * s }')"
             clouds+=("$name")
             echo "$name $m $t $d" >> "$c/clouds.txt"
         done

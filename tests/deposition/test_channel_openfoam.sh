@@ -28,6 +28,13 @@ for t in 1 10; do
 done
 check "tau+ 10: tracked deposits, no closure" "awk -F, '{ exit !(\$6 > 50 && \$8 < 1) }' <<< '$(row 10)'"
 check "tau+ 1: the closure's expected deposits carry V+" "awk -F, '{ exit !(\$8 > 3 && \$8 > 5 * \$6) }' <<< '$(row 1)'"
+# the concentration outside the wall layer: the mean there at tau+ 1, below it at
+# tau+ 10 (particles hover in the sublayer), and V+ on it within a factor 2 of Wood
+check "tau+ 1: c_core within 10 % of 1 ($(row 1 | cut -d, -f13))" "awk -F, '{ exit !(\$13 > 0.9 && \$13 < 1.1) }' <<< '$(row 1)'"
+check "tau+ 10: c_core in 0.3-0.95 ($(row 10 | cut -d, -f13))" "awk -F, '{ exit !(\$13 > 0.3 && \$13 < 0.95) }' <<< '$(row 10)'"
+check "tau+ 10: V+_core = V+ / c_core within a factor 2 of Wood" \
+    "awk -F, '{ exit !(\$14 > \$12 / 2 && \$14 < 2 * \$12 && (\$14 - \$10 / \$13) ^ 2 < 1e-12) }' <<< '$(row 10)'"
+check "vplus.md: the table on the core concentration" "grep -q 'y+ > 30' '$tmp/out/vplus.md'"
 for bad in "--re-tau 50" "--re-tau 3000" "--re-tau abc" "--re-tau" "--interpolation cell"; do
     # shellcheck disable=SC2086
     "$top/validation/deposition.sh" --out "$tmp/bad" $bad > "$tmp/log.bad" 2>&1

@@ -27,7 +27,9 @@
 #       released once at the points of constant/positions with velocity U0
 #       ("(u v w)"), injector named INJECTION; drag and gravity; TREATMENT as
 #       dep_dispersion with WALLS (e.g. "(walls)") for snowNearWall; every
-#       patch of ESCAPE (space-separated) a localInteraction escape
+#       patch of ESCAPE (space-separated) a localInteraction escape; the
+#       cloudFunctions entries of DEP_EXTRA_FUNCS (default none) after the
+#       treatment's
 #   dep_numbers SCRIPT OPTION MIN MAX VALUES...
 #       1 to 12 VALUES, each a number in [MIN, MAX]; otherwise one message
 #       naming OPTION and the value (stderr, status 2)
@@ -191,7 +193,7 @@ EOF2
     stochasticCollisionModel none;
     collisionModel  none;
 }
-cloudFunctions { $DEP_FUNCS }
+cloudFunctions { $DEP_FUNCS ${DEP_EXTRA_FUNCS:-} }
 EOF2
     } > "$c/constant/${name}Properties"
 }
