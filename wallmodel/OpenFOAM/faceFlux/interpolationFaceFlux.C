@@ -19,8 +19,19 @@ namespace
     // cloud builds its interpolations anew at every step)
     bool reported = false;
 
-    // the faces of cell c in three opposite pairs; false: not a hexahedron
-    // (six quadrilaterals, each with exactly one face that shares no point)
+    // a cell without a flux-consistent field is named once per run
+    bool fallbackNoted = false;
+
+    // the base point of face f's fan, as the tracking takes it
+    Foam::label fanBase(const Foam::polyMesh& mesh, const Foam::label f)
+    {
+        const Foam::label b = mesh.tetBasePtIs()[f];
+        return b < 0 ? 0 : b;
+    }
+
+    // the faces of cell c in three opposite pairs; false: not a parallelepiped
+    // (six quadrilaterals, each with exactly one face that shares no point,
+    // each a parallelogram)
     bool hexPairs
     (
         const Foam::polyMesh& mesh,
@@ -71,7 +82,28 @@ namespace
             pairs[2*k + 1] = cf[j];
             ++k;
         }
-        return k == 3;
+        if (k != 3) return false;
+        // a parallelepiped only: every face a parallelogram (p0 + p2 = p1 + p3
+        // within 1e-3 of the face's size: points written in ascii carry six
+        // digits, 1e-4 of a centimetre cell a metre from the origin). There
+        // the field's normal component
+        // is uniform on each face, phi/|S|, as in the tetrahedra of the cells
+        // next to it, so the velocity normal to every face is the same from
+        // both sides. A distorted hexahedron (snapped to a surface) would
+        // carry each face's flux with a normal component that varies over the
+        // face, and where it met a neighbour's uniform one the two could point
+        // at the face from both sides: a tracer there crosses back and forth
+        // without moving, and the tracking never ends its step.
+        const pointField& pts = mesh.points();
+        for (const label f : cf)
+        {
+            const face& q = faces[f];
+            const vector d = pts[q[0]] + pts[q[2]] - pts[q[1]] - pts[q[3]];
+            const scalar size =
+                mag(pts[q[2]] - pts[q[0]]) + mag(pts[q[3]] - pts[q[1]]);
+            if (mag(d) > 1e-3*size) return false;
+        }
+        return true;
     }
 }
 
@@ -153,6 +185,146 @@ bool Foam::interpolationFaceFlux::fluxVelocity
 }
 
 
+const Foam::scalarList& Foam::interpolationFaceFlux::tetFluxesOf
+(
+    const label c
+) const
+{
+    auto iter = tetFluxes_.cfind(c);
+    if (iter.found())
+    {
+        return *iter;
+    }
+    const polyMesh& mesh = this->pMesh_;
+    const cell& cf = mesh.cells()[c];
+    const faceList& faces = mesh.faces();
+    const pointField& pts = mesh.points();
+    const vectorField& Sf = mesh.faceAreas();
+    label n = 0;
+    for (const label f : cf)
+    {
+        n += faces[f].size() - 2;
+    }
+    scalarList F;
+    if (n >= 4 && n <= SWF_POLY_MAX)
+    {
+        List<FixedList<double, 3>> p(3*n);
+        List<long> id(3*n);
+        List<double> flux(n);
+        label t = 0;
+        for (const label f : cf)
+        {
+            const face& fc = faces[f];
+            const label m = fc.size(), base = fanBase(mesh, f);
+            const bool own = mesh.faceOwner()[f] == c;
+            const vector Sout = own ? Sf[f] : -Sf[f];
+            const scalar S2 = magSqr(Sout);
+            const scalar phiOut = outwardFlux(c, f);
+            for (label i = 1; i + 1 < m; ++i)
+            {
+                label a = (base + i) % m, b = fc.fcIndex(a);
+                if (!own) Swap(a, b);
+                const label tri[3] = {fc[base], fc[a], fc[b]};
+                for (label j = 0; j < 3; ++j)
+                {
+                    for (direction k = 0; k < 3; ++k)
+                    {
+                        p[3*t + j][k] = pts[tri[j]][k];
+                    }
+                    id[3*t + j] = tri[j];
+                }
+                const vector St =
+                    0.5*((pts[tri[1]] - pts[tri[0]]) ^ (pts[tri[2]] - pts[tri[0]]));
+                flux[t] = S2 > VSMALL ? phiOut*(St & Sout)/S2 : 0;
+                ++t;
+            }
+        }
+        swf_poly poly;
+        poly.n = n;
+        const point& cc = mesh.cellCentres()[c];
+        for (direction k = 0; k < 3; ++k)
+        {
+            poly.centre[k] = cc[k];
+        }
+        poly.p = reinterpret_cast<const double (*)[3]>(p.cdata());
+        poly.id = id.cdata();
+        poly.flux = flux.cdata();
+        List<double> out(4*n);
+        if (swf_poly_fluxes(&poly, out.data()) == SWF_OK)
+        {
+            F.setSize(4*n);
+            forAll(F, i)
+            {
+                F[i] = out[i];
+            }
+        }
+    }
+    if (F.empty() && !fallbackNoted)
+    {
+        fallbackNoted = true;
+        Info<< "faceFlux: cell " << c << " (" << cf.size() << " faces) has no"
+            << " flux-consistent field in its tetrahedra (open or degenerate);"
+            << " it keeps cellPoint (noted once per run)" << endl;
+    }
+    tetFluxes_.insert(c, F);
+    return *tetFluxes_.cfind(c);
+}
+
+
+bool Foam::interpolationFaceFlux::tetVelocity
+(
+    const tetIndices& tetIs,
+    const point& x,
+    vector& u
+) const
+{
+    const label c = tetIs.cell();
+    const scalarList& F = tetFluxesOf(c);
+    if (F.empty())
+    {
+        return false;
+    }
+    const polyMesh& mesh = this->pMesh_;
+    const cell& cf = mesh.cells()[c];
+    label t = 0;
+    for (const label f : cf)
+    {
+        if (f == tetIs.face())
+        {
+            break;
+        }
+        t += mesh.faces()[f].size() - 2;
+    }
+    t += tetIs.tetPt() - 1;
+    if (4*t + 3 >= F.size())
+    {
+        return false;
+    }
+    const triFace tri = tetIs.faceTriIs(mesh, false);
+    const pointField& pts = mesh.points();
+    const point& cc = mesh.cellCentres()[c];
+    double v[4][3], q[4], xp[3] = {x.x(), x.y(), x.z()}, up[3];
+    for (direction k = 0; k < 3; ++k)
+    {
+        v[0][k] = cc[k];
+        for (label j = 0; j < 3; ++j)
+        {
+            v[1 + j][k] = pts[tri[j]][k];
+        }
+    }
+    for (label i = 0; i < 4; ++i)
+    {
+        q[i] = F[4*t + i];
+    }
+    if (swf_tet_velocity(v, q, xp, up) != SWF_OK)
+    {
+        return false;
+    }
+    u = vector(up[0], up[1], up[2]);
+    return true;
+}
+
+
 void Foam::interpolationFaceFlux::report() const
 {
     if (reported) return;
@@ -162,10 +334,8 @@ void Foam::interpolationFaceFlux::report() const
     label worstCell = -1;
     for (label c = 0; c < mesh.nCells(); ++c)
     {
-        const label s = addr_.slot(c);
-        if (s < 0) continue;
         scalar sum = 0, total = 0;
-        for (const label f : addr_.pairs(s))
+        for (const label f : mesh.cells()[c])
         {
             const scalar q = outwardFlux(c, f);
             sum += q;
@@ -180,9 +350,10 @@ void Foam::interpolationFaceFlux::report() const
     }
     const label nHex = returnReduce(addr_.nHex(), sumOp<label>());
     const label nAll = returnReduce(mesh.nCells(), sumOp<label>());
-    Info<< "faceFlux: " << nHex << " of " << nAll << " cells are hexahedra"
+    Info<< "faceFlux: " << nHex << " of " << nAll << " cells are parallelepipeds"
         << " and take the velocity from the face fluxes " << phi_.name()
-        << ", " << nAll - nHex << " cellPoint" << endl;
+        << ", " << nAll - nHex << " other cells from the fluxes in their"
+        << " tetrahedra" << endl;
     const scalar worstAll = returnReduce(worst, maxOp<scalar>());
     if (worstAll > 1e-3)
     {
@@ -191,7 +362,7 @@ void Foam::interpolationFaceFlux::report() const
             WarningInFunction
                 << "at the first tracking step (time "
                 << mesh.time().timeName() << ") the fluxes " << phi_.name()
-                << " break continuity: |sum phi| / sum |phi| of a hexahedron"
+                << " break continuity: |sum phi| / sum |phi| of a cell"
                 << " up to " << worstAll << "; the rebuilt velocity converges"
                 << " where the fluxes do (an initial field's flux, or one"
                 << " rebuilt from U, is not the solver's own)" << endl;
@@ -272,15 +443,12 @@ Foam::vector Foam::interpolationFaceFlux::interpolate
 ) const
 {
     vector u;
+    const point x = tetIs.tet(this->pMesh_).barycentricToPoint(coordinates);
     if
     (
         addr_.slot(tetIs.cell()) >= 0
-     && fluxVelocity
-        (
-            tetIs.cell(),
-            tetIs.tet(this->pMesh_).barycentricToPoint(coordinates),
-            u
-        )
+      ? fluxVelocity(tetIs.cell(), x, u)
+      : tetVelocity(tetIs, x, u)
     )
     {
         return u;
