@@ -190,13 +190,22 @@ const Foam::scalarList& Foam::interpolationFaceFlux::tetFluxesOf
     const label c
 ) const
 {
-    auto iter = tetFluxes_.cfind(c);
-    if (iter.found())
-    {
-        return *iter;
-    }
     const polyMesh& mesh = this->pMesh_;
     const cell& cf = mesh.cells()[c];
+    scalarList phiC(cf.size());
+    forAll(cf, i)
+    {
+        phiC[i] = outwardFlux(c, cf[i]);
+    }
+    HashTable<faceFluxAddressing::tetFluxes, label, Hash<label>>& cache =
+        addr_.tets();
+    {
+        auto iter = cache.cfind(c);
+        if (iter.found() && (*iter).phi == phiC)
+        {
+            return (*iter).F;
+        }
+    }
     const faceList& faces = mesh.faces();
     const pointField& pts = mesh.points();
     const vectorField& Sf = mesh.faceAreas();
@@ -219,7 +228,7 @@ const Foam::scalarList& Foam::interpolationFaceFlux::tetFluxesOf
             const bool own = mesh.faceOwner()[f] == c;
             const vector Sout = own ? Sf[f] : -Sf[f];
             const scalar S2 = magSqr(Sout);
-            const scalar phiOut = outwardFlux(c, f);
+            const scalar phiOut = phiC[cf.find(f)];
             for (label i = 1; i + 1 < m; ++i)
             {
                 label a = (base + i) % m, b = fc.fcIndex(a);
@@ -266,8 +275,11 @@ const Foam::scalarList& Foam::interpolationFaceFlux::tetFluxesOf
             << " flux-consistent field in its tetrahedra (open or degenerate);"
             << " it keeps cellPoint (noted once per run)" << endl;
     }
-    tetFluxes_.insert(c, F);
-    return *tetFluxes_.cfind(c);
+    faceFluxAddressing::tetFluxes entry;
+    entry.phi.transfer(phiC);
+    entry.F.transfer(F);
+    cache.set(c, entry);
+    return (*cache.cfind(c)).F;
 }
 
 
