@@ -46,7 +46,7 @@ check "the zone 'core' has its rows, the walk's well mixed there" \
     "[ \"\$(awk -F, '\$1 == \"crw\" && \$2 == \"core\"' '$csv' | wc -l)\" -eq 6 ] && awk -F, '\$1 == \"crw\" && \$2 == \"core\" && \$3 == \"whole\" { exit !(\$9 > 0.9 && \$9 < 1.1) }' '$csv'"
 check "stochasticDispersionRAS fails a band (the check can fail)" "awk -F, '\$1 == \"stochastic\" && \$12 == \"FAIL\"' '$csv' | grep -q ."
 # refusals: exit 2, nothing written
-check "faceFlux took the velocity of every cell from the fluxes" "grep -q 'faceFlux: \([0-9]*\) of \1 cells are hexahedra' '$tmp/wm/case/log.particles'"
+check "faceFlux took the velocity of every cell from the six fluxes (a channel of cuboids)" "grep -q 'faceFlux: \([0-9]*\) of \1 cells are parallelepipeds' '$tmp/wm/case/log.particles'"
 for bad in "--walls walls" "--walls (nonesuch)" "--walls (left)" "--dt 0" "--dt abc" "--parcels 0" "--tl-multiple 1" "--models none,bogus" "--zone x:1,2:3,4,5" "--d 1" \
     "--interpolation cell" "--inlet nonesuch" "--inlet left" "--inlet"; do
     # shellcheck disable=SC2086
