@@ -86,10 +86,9 @@ namespace
         // a parallelepiped only: every face a parallelogram (p0 + p2 = p1 + p3
         // within 1e-3 of the face's size: points written in ascii carry six
         // digits, 1e-4 of a centimetre cell a metre from the origin). There
-        // the field's normal component
-        // is uniform on each face, phi/|S|, as in the tetrahedra of the cells
-        // next to it, so the velocity normal to every face is the same from
-        // both sides. A distorted hexahedron (snapped to a surface) would
+        // the field's normal component is uniform on each face, phi/|S|, as
+        // in the tetrahedra of the cells next to it, so the velocity normal to
+        // every face is the same from both sides. A distorted hexahedron (snapped to a surface) would
         // carry each face's flux with a normal component that varies over the
         // face, and where it met a neighbour's uniform one the two could point
         // at the face from both sides: a tracer there crosses back and forth
@@ -201,7 +200,8 @@ const Foam::scalarList& Foam::interpolationFaceFlux::tetFluxesOf
         addr_.tets();
     {
         auto iter = cache.cfind(c);
-        if (iter.found() && (*iter).phi == phiC)
+        // (a mesh that moved in this step has new tetrahedra: found anew)
+        if (iter.found() && !mesh.moving() && (*iter).phi == phiC)
         {
             return (*iter).F;
         }
