@@ -88,11 +88,12 @@ namespace
         // digits, 1e-4 of a centimetre cell a metre from the origin). There
         // the field's normal component is uniform on each face, phi/|S|, as
         // in the tetrahedra of the cells next to it, so the velocity normal to
-        // every face is the same from both sides. A distorted hexahedron (snapped to a surface) would
-        // carry each face's flux with a normal component that varies over the
-        // face, and where it met a neighbour's uniform one the two could point
-        // at the face from both sides: a tracer there crosses back and forth
-        // without moving, and the tracking never ends its step.
+        // every face is the same from both sides and zero on a wall. A
+        // distorted hexahedron (snapped to a surface) would carry each face's
+        // flux with a normal component that varies over the face: on a wall
+        // face it points into the wall in part of it, where a reflected tracer
+        // is sent back into the wall at once and the tracking never ends its
+        // step (met on the Ahmed body's mesh).
         const pointField& pts = mesh.points();
         for (const label f : cf)
         {
