@@ -428,9 +428,7 @@ static void polyhedron_velocity(void **s)
     }
     assert_int_equal(flat, 0);   /* the fans from the first points have no flat triangle */
     assert_int_equal(evaluated, pc.n);
-    /* a strain: first order, within the velocity change across the cell,
-       and the normal velocity on the walls of the cell's boundary is the
-       flux's own (zero where the flux is zero) */
+    /* a strain: first order, within the velocity change across the cell */
     poly_make(&pc, plane_strain);
     c = poly_view(&pc, CENTRE);
     assert_int_equal(swf_poly_fluxes(&c, F), SWF_OK);

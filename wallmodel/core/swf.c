@@ -118,6 +118,15 @@ static void sub3(const double a[3], const double b[3], double c[3])
     c[2] = a[2] - b[2];
 }
 
+/* the determinant of a 3 x 3 matrix, rows in m[0..2], m[3..5], m[6..8] */
+static double det3(const double m[9])
+{
+    const double r0[3] = {m[0], m[1], m[2]}, r1[3] = {m[3], m[4], m[5]}, r2[3] = {m[6], m[7], m[8]};
+    double c[3];
+    cross(r1, r2, c);
+    return dot(r0, c);
+}
+
 /* the area vector of the triangle x0 x1 x2 (right hand) */
 static void area3(const double x0[3], const double x1[3], const double x2[3], double s[3])
 {
@@ -182,9 +191,8 @@ int swf_poly_fluxes(const swf_poly *c, double *F)
     double uc[3];
     {
         /* A uc = b by Cramer's rule (A is 3 x 3, symmetric, positive for a
-           closed cell) */
-        const double det = A[0] * (A[4] * A[8] - A[5] * A[7]) - A[1] * (A[3] * A[8] - A[5] * A[6])
-                           + A[2] * (A[3] * A[7] - A[4] * A[6]);
+           closed cell): the determinant of A with column k replaced by b */
+        const double det = det3(A);
         if (!(fabs(det) > 0.0)) {
             rc = SWF_EDEGENERATE;
             goto done;
@@ -193,8 +201,7 @@ int swf_poly_fluxes(const swf_poly *c, double *F)
             double M[9];
             for (int i = 0; i < 9; i++) M[i] = A[i];
             for (int i = 0; i < 3; i++) M[3 * i + k] = b[i];
-            uc[k] = (M[0] * (M[4] * M[8] - M[5] * M[7]) - M[1] * (M[3] * M[8] - M[5] * M[6])
-                     + M[2] * (M[3] * M[7] - M[4] * M[6])) / det;
+            uc[k] = det3(M) / det;
         }
     }
     /* the inner faces: the edges of the boundary, each in two triangles */
@@ -225,9 +232,6 @@ int swf_poly_fluxes(const swf_poly *c, double *F)
         const double vv = fabs(vol[t1[e]]) + fabs(vol[t2[e]]);
         w[e] = s2 / (vv > 1e-300 ? vv : 1e-300);
         q[e] = dot(uc, s);
-        /* remember the edge in F's slots: +1 for t1, -1 for t2 (filled below) */
-        er[2 * e].j = x->j;
-        er[2 * e + 1].j = y->j;
     }
     /* the residual of every tetrahedron's balance with the mean velocity's
        inner fluxes: r_t = sum(phi) V_t / V - phi_t - sum_e s_te q_e */

@@ -222,14 +222,15 @@ const Foam::scalarList& Foam::interpolationFaceFlux::tetFluxesOf
         List<long> id(3*n);
         List<double> flux(n);
         label t = 0;
-        for (const label f : cf)
+        forAll(cf, fi)
         {
+            const label f = cf[fi];
             const face& fc = faces[f];
             const label m = fc.size(), base = fanBase(mesh, f);
             const bool own = mesh.faceOwner()[f] == c;
             const vector Sout = own ? Sf[f] : -Sf[f];
             const scalar S2 = magSqr(Sout);
-            const scalar phiOut = phiC[cf.find(f)];
+            const scalar phiOut = phiC[fi];
             for (label i = 1; i + 1 < m; ++i)
             {
                 label a = (base + i) % m, b = fc.fcIndex(a);
