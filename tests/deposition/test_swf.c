@@ -475,6 +475,60 @@ static void polyhedron_refusals(void **s)
     assert_int_equal(swf_tet_velocity(v2, q, xn, u), SWF_EINVAL);
 }
 
+/* The stall guard: a parcel that does not advance has its step ended at the
+ * window's last call; one that moves, even through a thousand faces in a
+ * step, never; another parcel or a new step starts a new window. */
+static void stall_guard(void **s)
+{
+    (void)s;
+    swf_stall g;
+    swf_stall_init(&g);
+    int a, b;   /* two parcels: only their addresses are used */
+
+    /* stuck at one fraction: ended at exactly the SWF_STALL_CALLS-th call */
+    long n = 0;
+    while (!swf_stall_check(&g, &a, 0.25)) {
+        n++;
+        assert_true(n < 10 * SWF_STALL_CALLS);
+    }
+    assert_int_equal(n + 1, SWF_STALL_CALLS);
+    assert_int_equal(g.ended, 1);
+
+    /* creeping by 1e-7 a call (Zeno): ended as well */
+    double f = 0.3;
+    n = 0;
+    while (!swf_stall_check(&g, &a, f)) {
+        f += 1e-7;
+        n++;
+        assert_true(n < 10 * SWF_STALL_CALLS);
+    }
+    assert_int_equal(n + 1, SWF_STALL_CALLS);
+    assert_int_equal(g.ended, 2);
+
+    /* a parcel crossing 5 000 faces in one step (2e-4 of the step each):
+       two windows of 0.2, never stopped; then its next step (the fraction
+       back at 0) starts afresh */
+    swf_stall_init(&g);
+    for (int step = 0; step < 2; step++)
+        for (int i = 0; i < 5000; i++)
+            assert_int_equal(swf_stall_check(&g, &b, i * 2e-4), 0);
+    assert_int_equal(g.ended, 0);
+
+    /* a stuck parcel whose window is broken by another parcel starts anew */
+    swf_stall_init(&g);
+    for (int i = 0; i < SWF_STALL_CALLS - 1; i++) assert_int_equal(swf_stall_check(&g, &a, 0.5), 0);
+    assert_int_equal(swf_stall_check(&g, &b, 0.5), 0);
+    for (int i = 0; i < SWF_STALL_CALLS - 1; i++) assert_int_equal(swf_stall_check(&g, &a, 0.5), 0);
+    assert_int_equal(swf_stall_check(&g, &a, 0.5), 1);
+
+    /* a non-finite fraction is no advance; NULL guard is a no-op */
+    swf_stall_init(&g);
+    int hit = 0;
+    for (int i = 0; i < SWF_STALL_CALLS; i++) hit |= swf_stall_check(&g, &a, NAN);
+    assert_int_equal(hit, 1);
+    assert_int_equal(swf_stall_check(NULL, &a, 0.1), 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -485,6 +539,7 @@ int main(void)
         cmocka_unit_test(polyhedron_balances),
         cmocka_unit_test(polyhedron_velocity),
         cmocka_unit_test(polyhedron_refusals),
+        cmocka_unit_test(stall_guard),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

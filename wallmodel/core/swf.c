@@ -1,5 +1,6 @@
 /* swf.c - the flux-consistent (RT0) velocity in a cell (swf.h): a hexahedron
- * from its six faces, any other cell in the tetrahedra around its centre. */
+ * from its six faces, any other cell in the tetrahedra around its centre; the
+ * guard against a tracking loop that does not advance. */
 #include "swf.h"
 
 #include <gsl/gsl_errno.h>
@@ -316,4 +317,36 @@ int swf_tet_velocity(const double v[4][3], const double F[4], const double x[3],
     u[1] = out[1];
     u[2] = out[2];
     return SWF_OK;
+}
+
+/* ---- a tracking loop that does not advance --------------------------------- */
+
+void swf_stall_init(swf_stall *g)
+{
+    if (!g) return;
+    g->who = NULL;
+    g->start = g->last = 0.0;
+    g->calls = 0;
+    g->ended = 0;
+}
+
+int swf_stall_check(swf_stall *g, const void *who, double step_fraction)
+{
+    if (!g) return 0;
+    const double f = isfinite(step_fraction) ? step_fraction : g->last;
+    if (who != g->who || g->calls == 0 || f < g->last) {
+        g->who = who;   /* another parcel, or a new step: a new window */
+        g->start = f;
+        g->calls = 0;
+    }
+    g->last = f;
+    if (++g->calls < SWF_STALL_CALLS) return 0;
+    const int stalled = !(f - g->start >= SWF_STALL_ADVANCE);
+    g->start = f;
+    g->calls = 0;
+    if (stalled) {
+        g->ended++;
+        g->who = NULL;
+    }
+    return stalled;
 }

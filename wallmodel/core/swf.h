@@ -30,7 +30,7 @@
  * the three hold as far as the cell is one; xi is clipped to [0, 1].
  *
  * Pure functions, no state: thread-safe (swf_poly_fluxes allocates its
- * work space and frees it). */
+ * work space and frees it); the stall guard at the end holds its own state. */
 #ifndef SWF_H
 #define SWF_H
 
@@ -109,6 +109,41 @@ int swf_poly_fluxes(const swf_poly *c, double *F);
  * a non-finite input, SWF_EDEGENERATE for a tetrahedron of (nearly) zero
  * volume (below 1e-12 of its largest edge cubed). */
 int swf_tet_velocity(const double v[4][3], const double F[4], const double x[3], double u[3]);
+
+/* ---- a tracking loop that does not advance --------------------------------
+ * A host's tracking moves a parcel through its time step in a loop of
+ * sub-steps (each to the next face, a wall hit handled between two) that ends
+ * when the parcel's step fraction reaches 1. A parcel that a wall sends back
+ * without letting it move (a field pointing into the wall over part of a wall
+ * face, a normal velocity of rounding size at a corner) would loop for ever.
+ * swf_stall_check, called by the host once per sub-step or per wall hit with
+ * the parcel's identity and its step fraction, watches windows of
+ * SWF_STALL_CALLS consecutive calls of one parcel: a window over which the
+ * fraction advanced by less than SWF_STALL_ADVANCE returns 1, and the host
+ * ends the parcel's step where it is (its next step starts there). So no step
+ * takes more than SWF_STALL_CALLS / SWF_STALL_ADVANCE calls (1e6), and a
+ * parcel that moves normally is never stopped (a thousand sub-steps of one
+ * parcel in one step would mean a thousand cells crossed). A call of another
+ * parcel, or a smaller fraction (a new step), starts a new window. One guard
+ * per loop (it holds the last parcel's identity, never dereferenced): not
+ * shared between threads. */
+#define SWF_STALL_CALLS   1000
+#define SWF_STALL_ADVANCE 1e-3
+
+typedef struct {
+    const void *who;   /* the parcel of the current window (an identity only) */
+    double start;      /* its step fraction at the window's start             */
+    double last;       /* its step fraction at the last call                  */
+    long calls;        /* calls in the window                                 */
+    long ended;        /* steps ended, in all                                 */
+} swf_stall;
+
+/* A guard with no window and no step ended. */
+void swf_stall_init(swf_stall *g);
+
+/* 1: end the parcel's step now (counted in g->ended); 0: go on. A
+ * non-finite fraction is no advance. */
+int swf_stall_check(swf_stall *g, const void *who, double step_fraction);
 
 #ifdef __cplusplus
 }

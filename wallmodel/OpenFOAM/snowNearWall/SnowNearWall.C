@@ -4,6 +4,7 @@
 
 #include "SnowNearWall.H"
 #include "SnowWallInteraction.H"
+#include "snowTrackingStall.H"
 #include "turbulenceModel.H"
 #include "snowWallLayer.H"
 #include "Pstream.H"
@@ -352,6 +353,9 @@ void Foam::SnowNearWall<CloudType>::postMove
     bool& keepParticle
 )
 {
+    // every sub-step, before anything else: a loop that does not advance
+    // ends the parcel's step
+    snowTrackingStall(stall_, p, "snowNearWall", this->modelName());
     if (!keepParticle || !p.active() || !(dt > ROOTVSMALL))
     {
         return;
@@ -581,6 +585,11 @@ void Foam::SnowNearWall<CloudType>::write()
     {
         Info<< " " << bm[patches_[s]].name() << " " << n[s] << " (" << m[s]
             << " kg; expected " << e[s] << ")";
+    }
+    const label nStall = snowStallCount(stall_);
+    if (nStall > 0)
+    {
+        Info<< "; " << nStall << " tracking step(s) ended by the stall guard";
     }
     Info<< endl;
 

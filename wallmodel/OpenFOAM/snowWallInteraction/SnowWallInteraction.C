@@ -22,6 +22,7 @@ Description
 #include "symmetryPolyPatch.H"
 #include "regionModel.H"
 #include "snowMachineLimits.H"
+#include "snowTrackingStall.H"
 #include "OStringStream.H"
 #include <cmath>
 

@@ -254,6 +254,12 @@ void Foam::SnowWallInteraction<CloudType>::info(Ostream& os)
             << (c < SWW_NCLASS ? sww_class_name(sww_class(c)) : "escaped") << ' ' << sum[c];
     }
     os  << nl;
+    const label nStall = snowStallCount(stall_);
+    if (nStall > 0)
+    {
+        os  << "    snowWall: " << nStall << " tracking step(s) ended by the"
+            << " stall guard (wall hits that did not advance the step)" << nl;
+    }
 
     if (covered_)
     {

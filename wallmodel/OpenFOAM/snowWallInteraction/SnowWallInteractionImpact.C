@@ -92,6 +92,9 @@ bool Foam::SnowWallInteraction<CloudType>::correct
     {
         return false;
     }
+    // a parcel that the walls send back without letting it move: its step
+    // ends where it is (after this hit is handled as any other)
+    snowTrackingStall(stall_, p, "snowWallInteraction", word::null);
 
     vector& U = p.U();
 

@@ -4,6 +4,7 @@
 
 #include "WellMixedCheck.H"
 #include "snowWallLayer.H"
+#include "snowTrackingStall.H"
 #include "turbulenceModel.H"
 #include "polyMeshTetDecomposition.H"
 #include "OFstream.H"
@@ -363,6 +364,9 @@ void Foam::WellMixedCheck<CloudType>::postMove
     bool& keepParticle
 )
 {
+    // every sub-step, before anything else: a loop that does not advance
+    // ends the parcel's step (the check itself may be far from its window)
+    snowTrackingStall(stall_, p, "wellMixedCheck", this->modelName());
     const Time& time = this->owner().time();
     if
     (
@@ -493,7 +497,13 @@ void Foam::WellMixedCheck<CloudType>::write()
     Info<< "    wellMixedCheck " << this->modelName() << ": mean parcels "
         << nMean << ", largest deviation from uniform " << worst << " ("
         << worstName << "), " << nFail << " region(s) beyond 10 % and two "
-        << "standard errors (fewer than 5 parcels expected: not judged)" << endl;
+        << "standard errors (fewer than 5 parcels expected: not judged)";
+    const label nStall = snowStallCount(stall_);
+    if (nStall > 0)
+    {
+        Info<< "; " << nStall << " tracking step(s) ended by the stall guard";
+    }
+    Info<< endl;
 }
 
 
