@@ -5,7 +5,8 @@
 # Usage: validation/wellmixed.sh --case DIR --walls PATCHES --dt S --out DIR
 #            [--time T] [--models LIST] [--parcels N] [--tl-multiple M]
 #            [--zone NAME:X0,Y0,Z0:X1,Y1,Z1]... [--d D] [--inlet PATCH]
-#            [--interpolation faceFlux|cellPoint] [--force] [--help]
+#            [--interpolation faceFlux|cellPoint] [--wall-release K[:L]]
+#            [--force] [--help]
 #
 # Thomson's well-mixed condition (doc/deposition.md): in any turbulence,
 # tracers released well mixed stay well mixed. The check takes the case's mesh
@@ -32,6 +33,17 @@
 # --tl-multiple of them (default 10; the outer Lagrangian time 0.3 k/eps, its
 # 90th percentile over the cells: the core flow's, not the wall cells').
 #
+# --wall-release K[:L]: the cells within L layers of the --walls (default 2;
+# the wall cells and L - 1 layers of their point neighbours) get K times the
+# parcels, each of weight 1 (nParticle), the rest of the mesh (and the inflow)
+# the plain release at weight K: the weighted concentration starts uniform, and the
+# thin wall bands (y+ 0-1, 1-5), which a plain release leaves with fewer than
+# 5 expected parcels on a fine mesh, are judged. wellMixedCheck counts every
+# parcel with its weight (its error the weighted one). K in (1, 1000], L in
+# 1..20; the parcels then number up to K times more in those cells (the
+# estimate before the run takes their cell share as an upper bound of their
+# volume share).
+#
 # Treatments (--models, comma-separated; default none,crw): none (the mean
 # flow alone: the tracking itself must keep tracers uniform), crw
 # (snowNearWall's walk, closure off: tracers must not deposit), crw-utau,
@@ -56,6 +68,7 @@ set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 here="$top/validation/deposition"
 case_in= walls= out= time= dt= models=none,crw parcels=2000 mult=10 d=2e-7 force=0 interp=faceFlux inlet=
+wr= wr_k= wr_l=2
 zones=()
 die2() { echo "wellmixed.sh: $*" >&2; exit 2; }
 while [ $# -gt 0 ]; do
@@ -73,6 +86,7 @@ while [ $# -gt 0 ]; do
         --d) [ -n "${2:-}" ] || die2 "--d needs a diameter in metres"; d=$2; shift ;;
         --inlet) [ -n "${2:-}" ] || die2 "--inlet needs a patch name"; inlet=$2; shift ;;
         --interpolation) [ -n "${2:-}" ] || die2 "--interpolation needs faceFlux or cellPoint"; interp=$2; shift ;;
+        --wall-release) [ -n "${2:-}" ] || die2 "--wall-release needs K or K:L"; wr=$2; shift ;;
         --force) force=1 ;;
         *) die2 "unknown option '$1' (see --help)" ;;
     esac
@@ -94,6 +108,14 @@ num='^[0-9]*\.?[0-9]+([eE][-+]?[0-9]+)?$'
 [[ "$d" =~ $num ]] && awk -v x="$d" 'BEGIN { exit !(x > 0 && x < 1e-3) }' || die2 "--d: '$d' is not a diameter in (0, 1e-3) m"
 zre='^[A-Za-z][A-Za-z0-9_]*:(-?[0-9.eE+-]+,){2}-?[0-9.eE+-]+:(-?[0-9.eE+-]+,){2}-?[0-9.eE+-]+$'
 for z in "${zones[@]}"; do [[ "$z" =~ $zre ]] || die2 "--zone: '$z' is not NAME:X0,Y0,Z0:X1,Y1,Z1"; done
+if [ -n "$wr" ]; then
+    wr_k=${wr%%:*}
+    [ "$wr_k" = "$wr" ] || wr_l=${wr#*:}
+    [[ "$wr_k" =~ $num ]] && awk -v x="$wr_k" 'BEGIN { exit !(x > 1 && x <= 1000) }' \
+        || die2 "--wall-release: K '$wr_k' (of '$wr') is not a factor in (1, 1000]"
+    [[ "$wr_l" =~ ^[1-9][0-9]?$ ]] && [ "$wr_l" -le 20 ] \
+        || die2 "--wall-release: L '$wr_l' (of '$wr') is not a number of cell layers in 1..20"
+fi
 # shellcheck source=../etc/outdir.sh
 . "$top/etc/outdir.sh"
 # shellcheck source=deposition/common.sh
@@ -188,6 +210,19 @@ fi
     echo "actions ("
     echo "  { name allSet; type cellSet; action new; source boxToCell; sourceInfo { box (-1e30 -1e30 -1e30) (1e30 1e30 1e30); } }"
     echo "  { name all; type cellZoneSet; action new; source setToCellZone; sourceInfo { set allSet; } }"
+    if [ -n "$wr" ]; then
+        # the wall cells of --walls, grown by point neighbours to L layers; the rest
+        echo "  { name wallReleaseF; type faceSet; action new; source patchToFace; sourceInfo { patches $walls; } }"
+        echo "  { name wallRelease; type cellSet; action new; source faceToCell; sourceInfo { set wallReleaseF; option owner; } }"
+        for ((i = 1; i < wr_l; i++)); do
+            echo "  { name wallReleaseP; type pointSet; action new; source cellToPoint; sourceInfo { set wallRelease; option all; } }"
+            echo "  { name wallRelease; type cellSet; action add; source pointToCell; sourceInfo { set wallReleaseP; option any; } }"
+        done
+        echo "  { name wallReleaseZ; type cellZoneSet; action new; source setToCellZone; sourceInfo { set wallRelease; } }"
+        echo "  { name coreRelease; type cellSet; action new; source cellToCell; sourceInfo { set allSet; } }"
+        echo "  { name coreRelease; type cellSet; action subtract; source cellToCell; sourceInfo { set wallRelease; } }"
+        echo "  { name coreReleaseZ; type cellZoneSet; action new; source setToCellZone; sourceInfo { set coreRelease; } }"
+    fi
     zl=
     for z in "${zones[@]}"; do
         IFS=: read -r zn a b <<< "$z"
@@ -231,11 +266,44 @@ nsteps=$(awk -v a="$tend" -v b="$dt" 'BEGIN { printf "%d", a / b + 0.999 }')
 [ "$nsteps" -le 200000 ] || { echo "wellmixed.sh: $nsteps steps of $dt s for $mult outer Lagrangian times of $tl s: more than 200 000 (raise --dt or lower --tl-multiple)" >&2; exit 2; }
 tend=$(awk -v n="$nsteps" -v b="$dt" 'BEGIN { printf "%.10g", n * b }')
 nd=$(awk -v n="$parcels" -v v="$vol" 'BEGIN { printf "%.10g", n / v }')
-dep_estimate wellmixed.sh "$parcels" "${#modelList[@]}" "$nsteps steps of $dt s ($mult x the outer Lagrangian time $tl s)" \
-    "$(awk -v p="$parcels" -v n="${#modelList[@]}" -v c="${ncells:-0}" 'BEGIN { print p * n * 2000 + c * 3000 + 2e8 }')" \
-    "$(awk -v p="$parcels" -v n="${#modelList[@]}" -v s="$nsteps" 'BEGIN { print p * n * s * 5e-6 / 60 }')" "lower --parcels" || exit 2
+nparc=$parcels
+if [ -n "$wr" ]; then
+    nwr=$(awk '$0 ~ "cellSet wallRelease" { for (i = 1; i <= NF; i++) if ($i == "size") print $(i + 1) }' "$c/log.topoSet" | tail -1)
+    [ "${nwr:-0}" -gt 0 ] 2>/dev/null || { echo "wellmixed.sh: --wall-release: no cell next to the walls $walls (topoSet: $c/log.topoSet)" >&2; exit 1; }
+    # an upper bound: the wall cells' share of the cells for their share of the volume
+    nparc=$(awk -v n="$parcels" -v k="$wr_k" -v w="$nwr" -v c="${ncells:-1}" 'BEGIN { printf "%d", n * (1 + (k - 1) * w / c) + 0.5 }')
+    echo "wellmixed.sh: --wall-release $wr_k:$wr_l: $nwr of ${ncells:-?} cells within $wr_l layers of the walls get $wr_k times the parcels, the others weigh $wr_k (at most $nparc parcels a cloud)"
+fi
+dep_estimate wellmixed.sh "$nparc" "${#modelList[@]}" "$nsteps steps of $dt s ($mult x the outer Lagrangian time $tl s)" \
+    "$(awk -v p="$nparc" -v n="${#modelList[@]}" -v c="${ncells:-0}" 'BEGIN { print p * n * 2000 + c * 3000 + 2e8 }')" \
+    "$(awk -v p="$nparc" -v n="${#modelList[@]}" -v s="$nsteps" 'BEGIN { print p * n * s * 5e-6 / 60 }')" "lower --parcels" || exit 2
 # (5 us a parcel step: measured on the channel, 7.4 million parcel steps in 34 s)
 
+# the release: uniform, or (--wall-release) K times as dense next to the walls, the other
+# parcels (and those entering) K times as heavy (OpenFOAM's injection drops a parcel of
+# nParticle below 1, so the light ones weigh 1)
+w_core=1
+release_in() {   # name zone number-density nParticle
+    echo "        $1
+        {
+            type            cellZoneInjection;
+            cellZone        $2;
+            numberDensity   $3;
+            SOI             0;
+            parcelBasisType fixed;
+            nParticle       $4;
+            massTotal       1;
+            U0              (0 0 0);
+            sizeDistribution { type fixedValue; fixedValueDistribution { value $d; } }
+        }"
+}
+if [ -z "$wr" ]; then
+    release=$(release_in uniform all "$nd" 1)
+else
+    w_core=$wr_k
+    release="$(release_in core coreReleaseZ "$nd" "$w_core")
+$(release_in wallLayers wallReleaseZ "$(awk -v n="$nd" -v k="$wr_k" 'BEGIN { printf "%.10g", n * k }')" 1)"
+fi
 inflow=
 if [ -n "$inlet" ]; then
     rate=$(awk -v n="$nd" -v q="$q_in" 'BEGIN { printf "%.10g", n * q }')
@@ -251,7 +319,7 @@ if [ -n "$inlet" ]; then
             parcelsPerSecond $rate;
             flowRateProfile constant 1;
             parcelBasisType fixed;
-            nParticle       1;
+            nParticle       $w_core;
             massTotal       1;
             U0              (0 0 0);
             sizeDistribution { type fixedValue; fixedValueDistribution { value $d; } }
@@ -283,18 +351,7 @@ subModels
     particleForces { sphereDrag; }
     injectionModels
     {
-        uniform
-        {
-            type            cellZoneInjection;
-            cellZone        all;
-            numberDensity   $nd;
-            SOI             0;
-            parcelBasisType fixed;
-            nParticle       1;
-            massTotal       1;
-            U0              (0 0 0);
-            sizeDistribution { type fixedValue; fixedValueDistribution { value $d; } }
-        }$inflow
+$release$inflow
     }
     dispersionModel $disp;
     patchInteractionModel localInteraction;

@@ -9,7 +9,8 @@
 # walk whose drift took u* as fixed, with k a step per cell, piled tracers up
 # 6-37 times in such bands), the mean flow alone too, the stochastic model
 # fails at least one band (the check can fail), a --zone's rows, the table and
-# plot written, the refusals of bad options (exit 2, nothing written) and of
+# plot written, a release denser next to the walls (--wall-release: the band y+ 0-1
+# judged), the refusals of bad options (exit 2, nothing written) and of
 # bad wellMixedCheck entries (a FatalIOError naming the key).
 # The tracking: the ribbed channel's wall-function mesh (validation/rib.sh, its
 # flow, about 15 s), the mean flow alone with 4000 tracers over 3 outer
@@ -45,10 +46,21 @@ done
 check "the zone 'core' has its rows, the walk's well mixed there" \
     "[ \"\$(awk -F, '\$1 == \"crw\" && \$2 == \"core\"' '$csv' | wc -l)\" -eq 6 ] && awk -F, '\$1 == \"crw\" && \$2 == \"core\" && \$3 == \"whole\" { exit !(\$9 > 0.9 && \$9 < 1.1) }' '$csv'"
 check "stochasticDispersionRAS fails a band (the check can fail)" "awk -F, '\$1 == \"stochastic\" && \$12 == \"FAIL\"' '$csv' | grep -q ."
+# a release denser next to the walls (--wall-release 20:1: the wall cells 20 times the
+# parcels, the others 20 times as heavy): the mean flow keeps the weighted concentration
+# uniform, and the thin band y+ 0-1 (0.3 % of the volume, "few" with 1000 plain
+# parcels: +-0.56) is judged with an error under 0.2
+"$top/validation/wellmixed.sh" --case "$case_dir" --walls "(walls)" --dt 5.4e-5 --out "$tmp/wr" \
+    --models none --parcels 1000 --tl-multiple 2 --wall-release 20:1 > "$tmp/log.wr" 2>&1
+check "--wall-release 20:1 exits 0, the check weighs the parcels" \
+    "[ $? -eq 0 ] && grep -q 'weighted by nParticle' \$(ls -d '$tmp'/wr/case/postProcessing/lagrangian/t_none/wellMixed/*/wellMixed.dat | sort -V | tail -1)"
+check "--wall-release: every band within 10 % or 3 standard errors, y+ 0-1 judged with se < 0.2" \
+    "awk -F, '\$1 == \"none\" && \$2 == \"all\" { n++; d = \$9 - 1; if (d < 0) d = -d; if (!(d <= 0.1 || d <= 3 * \$10)) bad++; if (\$4 == 0 && !(\$10 < 0.2 && \$12 == \"ok\")) bad++ } END { exit !(n == 5 && !bad) }' '$tmp/wr/wellmixed.csv'"
 # refusals: exit 2, nothing written
 check "faceFlux took the velocity of every cell from the six fluxes (a channel of cuboids)" "grep -q 'faceFlux: \([0-9]*\) of \1 cells are parallelepipeds' '$tmp/wm/case/log.particles'"
 for bad in "--walls walls" "--walls (nonesuch)" "--walls (left)" "--dt 0" "--dt abc" "--parcels 0" "--tl-multiple 1" "--models none,bogus" "--zone x:1,2:3,4,5" "--d 1" \
-    "--interpolation cell" "--inlet nonesuch" "--inlet left" "--inlet"; do
+    "--interpolation cell" "--inlet nonesuch" "--inlet left" "--inlet" "--wall-release 1" "--wall-release 5:0" \
+    "--wall-release 5:x" "--wall-release"; do
     # shellcheck disable=SC2086
     "$top/validation/wellmixed.sh" --case "$case_dir" --walls "(walls)" --dt 5.4e-5 --out "$tmp/bad" $bad > "$tmp/log.bad" 2>&1
     rc=$?

@@ -285,6 +285,10 @@ Foam::WellMixedCheck<CloudType>::WellMixedCheck
     model_(swd_alloc()),
     haveReference_(false),
     parcelTime_(0),
+    parcelTime2_(0),
+    countTime_(0),
+    wMin_(GREAT),
+    wMax_(-GREAT),
     window_(0)
 {
     if (!model_)
@@ -294,6 +298,8 @@ Foam::WellMixedCheck<CloudType>::WellMixedCheck
     readSettings(this->coeffDict());
     nearestFace_ = snowNearestWallFace(owner.mesh(), patches_);
     occupancy_.setSize(nSlots(), Zero);
+    occupancy2_.setSize(nSlots(), Zero);
+    count_.setSize(nSlots(), Zero);
     batch_.setSize(nBatch, scalarList(nSlots() + 1, Zero));
 }
 
@@ -320,8 +326,14 @@ Foam::WellMixedCheck<CloudType>::WellMixedCheck
     volume_(wm.volume_),
     volume2_(wm.volume2_),
     occupancy_(wm.occupancy_),
+    occupancy2_(wm.occupancy2_),
+    count_(wm.count_),
     batch_(wm.batch_),
     parcelTime_(wm.parcelTime_),
+    parcelTime2_(wm.parcelTime2_),
+    countTime_(wm.countTime_),
+    wMin_(wm.wMin_),
+    wMax_(wm.wMax_),
     window_(wm.window_)
 {
     // a fresh C model with the same settings (the core has no copy)
@@ -386,20 +398,28 @@ void Foam::WellMixedCheck<CloudType>::postMove
         max(label(0), label((time.value() - startTime_)/span*nBatch))
     );
     scalarList& bk = batch_[k];
-    occupancy_[b] += dt;
-    occupancy_[nb] += dt;
-    bk[b] += dt;
-    bk[nb] += dt;
+    const scalar w = p.nParticle();
+    wMin_ = min(wMin_, w);
+    wMax_ = max(wMax_, w);
+    auto add = [&](const label slot)
+    {
+        occupancy_[slot] += w*dt;
+        occupancy2_[slot] += w*w*dt;
+        count_[slot] += dt;
+        bk[slot] += w*dt;
+    };
+    add(b);
+    add(nb);
     for (const label z : cellZones_[celli])
     {
         const label o = (z + 1)*(nb + 1);
-        occupancy_[o + b] += dt;
-        occupancy_[o + nb] += dt;
-        bk[o + b] += dt;
-        bk[o + nb] += dt;
+        add(o + b);
+        add(o + nb);
     }
-    bk[nSlots()] += dt;
-    parcelTime_ += dt;
+    bk[nSlots()] += w*dt;
+    parcelTime_ += w*dt;
+    parcelTime2_ += w*w*dt;
+    countTime_ += dt;
 }
 
 
@@ -412,6 +432,16 @@ void Foam::WellMixedCheck<CloudType>::write()
     }
     scalarList occ(occupancy_);
     Pstream::listCombineGather(occ, plusEqOp<scalar>());
+    scalarList occ2(occupancy2_);
+    Pstream::listCombineGather(occ2, plusEqOp<scalar>());
+    scalarList cnt(count_);
+    Pstream::listCombineGather(cnt, plusEqOp<scalar>());
+    const scalar pt2 = returnReduce(parcelTime2_, sumOp<scalar>());
+    const scalar ct = returnReduce(countTime_, sumOp<scalar>());
+    const scalar wLo = returnReduce(wMin_, minOp<scalar>());
+    const scalar wHi = returnReduce(wMax_, maxOp<scalar>());
+    // weighted when the weights differ (beyond rounding)
+    const bool weighted = wHi > wLo*(1 + 1e-9);
     List<scalarList> bat(batch_);
     for (scalarList& b : bat)
     {
@@ -424,7 +454,7 @@ void Foam::WellMixedCheck<CloudType>::write()
     }
     const label nb = nBands();
     const scalar vAll = volume_[nb];
-    const scalar nMean = pt/window_;
+    const scalar nMean = ct/window_;      // parcels, counted
     const fileName dir = this->outputDir()/this->owner().time().timeName();
     mkDir(dir);
     OFstream os(dir/"wellMixed.dat");
@@ -434,6 +464,7 @@ void Foam::WellMixedCheck<CloudType>::write()
         << "each region and y+ band against its share of the volume" << nl
         << "# window " << startTime_ << " .. "
         << this->owner().time().value() << " s, mean parcels " << nMean
+        << (weighted ? " (weighted by nParticle)" : "")
         << ", y+ = y max(u_tau, Cmu^(1/4) k_wallcell^(1/2)) / nu" << nl
         << "# region band yplus_lo yplus_hi volume_share volume_share_se"
         << " parcel_share ratio se_binomial se_batch verdict" << nl;
@@ -455,7 +486,22 @@ void Foam::WellMixedCheck<CloudType>::write()
             const scalar pse = sqrt(max(volume2_[slot], scalar(0)))/vAll;
             const scalar q = occ[slot]/pt;
             const scalar ratio = p > 0 ? q/p : 0;
-            const scalar seBin = p > 0 ? sqrt(max(1 - p, scalar(0))/(nMean*p)) : 0;
+            // the binomial error of one snapshot under uniformity: with
+            // weights the delta method's (sums of w and w^2 per snapshot)
+            scalar seBin = 0;
+            if (p > 0 && !weighted)
+            {
+                seBin = sqrt(max(1 - p, scalar(0))/(nMean*p));
+            }
+            else if (p > 0)
+            {
+                const scalar s1 = pt/window_, s2 = pt2/window_;
+                const scalar s2b = occ2[slot]/window_;
+                seBin = sqrt
+                (
+                    max(s2b*sqr(1 - p) + max(s2 - s2b, scalar(0))*sqr(p), scalar(0))
+                )/(s1*p);
+            }
             // batch means of the ratio
             scalar s1 = 0, s2 = 0;
             label nbat = 0;
@@ -475,7 +521,12 @@ void Foam::WellMixedCheck<CloudType>::write()
             // fewer than 5 parcels expected: the binomial error's normal
             // approximation does not hold, one parcel parked there is a
             // ratio of 1/(N p); the band is listed, not judged
-            const bool few = p > 0 && nMean*p < 5;
+            // (weighted: the parcels expected under uniformity with the
+            // region's own mean weight, the heaviest where it holds none)
+            const scalar wb =
+                cnt[slot] > 0 ? occ[slot]/cnt[slot] : max(wHi, VSMALL);
+            const bool few =
+                p > 0 && (weighted ? p*(pt/window_)/wb < 5 : nMean*p < 5);
             const bool ok =
                 p > 0
              && (few || mag(ratio - 1) <= 0.1 || mag(ratio - 1) <= 2*seBin);
