@@ -223,6 +223,29 @@ if [ -x /usr/bin/simpleFoam ] && [ -x "$top/bin/snowregime" ] && [ -x "$top/bin/
     refused "the flow and its replay library need about" -estimate
     grep -q "100000 snapshots x 102568 cells x 10 values x 8 bytes" "$tmp/err" || fail "the memory refusal: $(cat "$tmp/err")"
     cp "$tmp/sprayProperties" "$sp"
+    # one run at a time (etc/caselock.sh): while another process holds the folder's lock
+    # (flock on Allrun, as a running Allrun does, with its Allrun.owner), Allrun, -resume and
+    # Allclean are refused naming it, nothing written or removed, and -estimate still answers;
+    # once the holder has ended, the lock is free: Allclean passes and removes the owner file
+    printf 'pid 4242\nhost h\nstarted 2026-12-07 10:00:00 +0000\noptions -test\n' > "$w/Allrun.owner"
+    listing > "$tmp/before"
+    (cd "$w" && exec flock -o Allrun sleep 30) & holder=$!
+    for ((k = 0; k < 50; k++)); do (cd "$w" && ! flock -n Allrun true) && break; sleep 0.1; done
+    export SNOWWALL_LOCK_WAIT=0
+    refused "another run is writing this folder ($w): pid 4242 on h, started 2026-12-07 10:00:00 +0000, options: -test" -test
+    echo "-test" > "$w/log.Allrun.args"; listing > "$tmp/before"
+    refused "another run is writing this folder ($w): pid 4242" -resume
+    rm -f "$w/log.Allrun.args"; listing > "$tmp/before"
+    estimate
+    (cd "$w" && ./Allclean) > "$tmp/out" 2> "$tmp/err" && fail "Allclean while the folder is locked: exit 0"
+    grep -qF "a run is writing this folder ($w): pid 4242" "$tmp/err" || fail "Allclean while locked: $(cat "$tmp/err")"
+    listing | diff -q "$tmp/before" - > /dev/null || fail "Allclean while locked removed files"
+    echo "ok   Allclean while the folder is locked: $(head -1 "$tmp/err")"
+    kill "$holder" 2>/dev/null; wait "$holder" 2>/dev/null
+    (cd "$w" && ./Allclean) || fail "Allclean after the holder ended: exit $?"
+    [ ! -e "$w/Allrun.owner" ] || fail "Allclean left Allrun.owner"
+    echo "ok   the holder ended: the lock free again, Allclean removes Allrun.owner"
+    unset SNOWWALL_LOCK_WAIT
 else
     echo "skip the estimate checks: OpenFOAM or the build missing"
 fi
