@@ -20,10 +20,11 @@
 #   case_lock_claim [ARGS...]  write Allrun.owner for this run (after the run's
 #       last refusal: a refused run leaves nothing behind).
 #   case_lock_ended           the run ended (an EXIT trap): said in Allrun.owner.
-#   case_lock_free WHO        for Allclean: refuse (exit 2, naming the run) while
-#       another run holds the lock; nothing is held afterwards, and Allrun.owner
-#       is removed with the rest. Inside the run that holds it
-#       (SNOWWALL_CASE_LOCK is this folder) it passes and keeps Allrun.owner.
+#
+# The tutorials' Allclean checks the same lock by itself (a copy of a case cleans
+# without the repository): refused while another run holds it, Allrun.owner
+# removed with the rest otherwise; inside the run that holds it
+# (SNOWWALL_CASE_LOCK is this folder) it passes and keeps Allrun.owner.
 #
 # Both work in the current folder (the case's), which must hold Allrun.
 
@@ -73,16 +74,4 @@ case_lock_claim() {
 case_lock_ended() {   # only a run that claimed the folder marks its end
     [ "${case_lock_claimed:-0}" = 1 ] && [ -f Allrun.owner ] || return 0
     printf 'ended %s\n' "$(date '+%Y-%m-%d %H:%M:%S %z')" >> Allrun.owner
-}
-
-case_lock_free() {
-    local who=$1
-    [ "${SNOWWALL_CASE_LOCK:-}" != "$PWD" ] || return 0
-    local wait
-    wait=$(case_lock_wait) || exit 2
-    if command -v flock > /dev/null && [ -f Allrun ] && ! flock -w "$wait" Allrun true; then
-        echo "$who: a run is writing this folder ($(pwd)): $(case_lock_owner); nothing removed" >&2
-        exit 2
-    fi
-    rm -f Allrun.owner
 }
