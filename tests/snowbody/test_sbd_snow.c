@@ -224,13 +224,27 @@ static void ladder(void **state)
     assert_int_equal(l.n, 3);
     assert_int_equal(sbd_ladder_find(&l, "medium"), 1);
     assert_int_equal(sbd_ladder_find(&l, "test"), -1);
-    double noise;
-    assert_close(sbd_ladder_mesh_error(&l, 0, 0, &noise), 0.25, 1e-12);   /* 2 / 1.6 - 1 */
-    assert_close(noise, sqrt(0.02), 1e-12);
-    assert_close(sbd_ladder_mesh_error(&l, 1, 1, &noise), 1 - 5 / 5.5, 1e-12);
-    assert_close(noise, sqrt(0.05), 1e-12);
-    /* the finest takes the step below it */
-    assert_close(sbd_ladder_mesh_error(&l, 2, 1, NULL), 1 - 5 / 5.5, 1e-12);
+    /* the errors by the ladders' one rule (swg_discretization). The rear face 2, 1.6,
+       1.5 (coarse to fine, se 0.2, 0.16, 0.075): its steps within the noise, so a bound
+       over the finest value 1.5 (+- 0.1) and the extrapolation with order 2 over the
+       ratio r = 2^(1/3), 1.5 - 0.1 / (r^2 - 1) (+- that step); the reference the
+       smaller, every level's error the larger of the two readings' */
+    sbd_ladder_error e;
+    assert_int_equal(sbd_ladder_disc(&l, 0, &e, err, sizeof err), 0);
+    assert_string_equal(e.kind, "bound");
+    const double c = pow(2.0, 2.0 / 3.0) - 1.0, rb = 1.5 - 0.1 / c, ub = 0.1 / c;
+    assert_close(e.ref, rb, 1e-12);
+    assert_close(e.disc[2], fmax(0.1, hypot(1.5 - rb, ub)) / rb, 1e-12);
+    assert_close(e.disc[1], fmax(hypot(0.1, 0.1), hypot(1.6 - rb, ub)) / rb, 1e-12);
+    assert_close(e.disc[0], fmax(hypot(0.5, 0.1), hypot(2.0 - rb, ub)) / rb, 1e-12);
+    for (int k = 0; k < 3; k++) {
+        assert_close(e.sampling[k], l.row[k].rel[0] * l.row[k].value[0] / rb, 1e-12);
+        /* the total is never below a component */
+        assert_close(e.total[k], hypot(e.sampling[k], e.disc[k]), 1e-12);
+        assert_true(e.total[k] >= e.disc[k] && e.total[k] >= e.sampling[k]);
+    }
+    /* a quantity of the wrong index is refused */
+    assert_int_equal(sbd_ladder_disc(&l, 2, &e, err, sizeof err), -1);
 
     const char *bad[][2] = {
         {"level,cells\ncoarse,1\n", "the header must be"},

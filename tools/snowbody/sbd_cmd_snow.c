@@ -364,6 +364,7 @@ int sbd_cmd_snow_post(int argc, char **argv)
 
     /* the ladder and the run's level */
     sbd_ladder lad;
+    sbd_ladder_error lerr[2];
     int have_ladder = 0, krow = -1;
     char level[64] = "", cells[64] = "", ms[64] = "", fs[64] = "";
     if (o.flow) {
@@ -378,6 +379,9 @@ int sbd_cmd_snow_post(int argc, char **argv)
             return die(1, "--ladder: %s", err);
         have_ladder = 1;
         krow = level[0] ? sbd_ladder_find(&lad, level) : -1;
+        for (int q = 0; q < 2; q++)
+            if (sbd_ladder_disc(&lad, q, &lerr[q], err, sizeof err))
+                return die(1, "--ladder %s: %s", o.ladder, err);
     }
 
     patch p[NPATCH];
@@ -488,12 +492,14 @@ int sbd_cmd_snow_post(int argc, char **argv)
             strip_ratio = (m_in / 0.005) / (m_out / (ymax - 0.005));
     }
 
-    /* the errors */
-    double mesh[2] = {NAN, NAN}, noise[2] = {NAN, NAN}, total[2] = {NAN, NAN}, zlad[2] = {NAN, NAN};
+    /* the errors: this run's sampling error and its level's discretization error, both
+       relative to the ladder's reference (so that the total is their root sum of squares) */
+    double mesh[2] = {NAN, NAN}, samp[2] = {NAN, NAN}, total[2] = {NAN, NAN}, zlad[2] = {NAN, NAN};
     if (have_ladder && krow >= 0)
         for (int q = 0; q < 2; q++) {
-            mesh[q] = sbd_ladder_mesh_error(&lad, krow, q, &noise[q]);
-            total[q] = sqrt(q_rel[q] * q_rel[q] + mesh[q] * mesh[q]);
+            mesh[q] = lerr[q].disc[krow];
+            samp[q] = q_rel[q] * q_val[q] / fabs(lerr[q].ref);
+            total[q] = hypot(samp[q], mesh[q]);
             const sbd_ladder_row *r = &lad.row[krow];
             const double sa = q_rel[q] * q_val[q], sb = r->rel[q] * r->value[q];
             zlad[q] = (q_val[q] - r->value[q]) / sqrt(sa * sa + sb * sb);
@@ -509,8 +515,7 @@ int sbd_cmd_snow_post(int argc, char **argv)
         for (int k = 0; k < lad.n; k++)
             for (int q = 0; q < 2; q++) {
                 fprintf(f, "%s,%ld,%.0f,%s,%.4f,%.4f,%.4f\n", lad.row[k].level, lad.row[k].cells, lad.row[k].seconds,
-                        q ? "sensor" : "rear", lad.row[k].rel[q], sbd_ladder_mesh_error(&lad, k, q, NULL),
-                        sbd_ladder_total(&lad, k, q));
+                        q ? "sensor" : "rear", lerr[q].sampling[k], lerr[q].disc[k], lerr[q].total[k]);
             }
     }
 
@@ -575,12 +580,17 @@ int sbd_cmd_snow_post(int argc, char **argv)
             fprintf(f, "| %s | %.3g | %.0f %% | – | ≥ %.0f %% | – |\n", q_name[q], q_val[q], 100 * q_rel[q],
                     100 * q_rel[q]);
         else
-            fprintf(f, "| %s | %.3g | %.0f %% | %.0f %% (noise %.0f %%) | %.0f %% | z = %.2f |\n", q_name[q], q_val[q],
-                    100 * q_rel[q], 100 * mesh[q], 100 * noise[q], 100 * total[q], zlad[q]);
+            fprintf(f, "| %s | %.3g | %.0f %% | %.0f %% (%s) | %.0f %% | z = %.2f |\n", q_name[q], q_val[q],
+                    100 * samp[q], 100 * mesh[q], lerr[q].kind, 100 * total[q], zlad[q]);
     }
-    fprintf(f, "\nMesh: the relative change to the next finer level of the ladder (the finest level: from the "
-               "one below); noise: the sampling error of that change (a mesh error below it is not resolved). "
-               "Total: the root sum of squares.\n\n");
+    if (have_ladder && krow >= 0)
+        fprintf(f, "\nAll relative to the ladder's reference (rear face %.3g, sensor %.3g kg/m²). Mesh: the "
+                   "discretization error of the run's level by the rule of every resolution ladder here "
+                   "(snowladder total): where the levels resolve a monotone trend, its distance to the "
+                   "Richardson extrapolation with that value's own uncertainty (extrapolated); where they do "
+                   "not, a bound, the larger of its distances to the finest value and to the extrapolation of "
+                   "the finest pair with the schemes' order 2, each with its last step as its uncertainty "
+                   "(bound). Total: the root sum of squares.\n\n", lerr[0].ref, lerr[1].ref);
     if (have_ladder) {
         fprintf(f, "### The error against run time (%s)\n\n| level | cells | run time [CPU min] | rear: sampling | mesh | "
                    "total | sensor: sampling | mesh | total |\n|---|---|---|---|---|---|---|---|---|\n", o.ladder);
@@ -588,13 +598,14 @@ int sbd_cmd_snow_post(int argc, char **argv)
             const sbd_ladder_row *r = &lad.row[k];
             fprintf(f, "| %s | %ld | %.1f", r->level, r->cells, r->seconds / 60);
             for (int q = 0; q < 2; q++) {
-                fprintf(f, " | %.0f %% | %.0f %% | %.0f %%", 100 * r->rel[q],
-                        100 * sbd_ladder_mesh_error(&lad, k, q, NULL), 100 * sbd_ladder_total(&lad, k, q));
+                fprintf(f, " | %.0f %% | %.0f %% | %.0f %%", 100 * lerr[q].sampling[k], 100 * lerr[q].disc[k],
+                        100 * lerr[q].total[k]);
             }
             fprintf(f, " |\n");
         }
         fprintf(f, "| this run (%s; wall clock) | %s | %.1f | %.0f %% | | | %.0f %% | | |\n\n", level[0] ? level : "-",
-                cells[0] ? cells : "-", run_seconds / 60, 100 * q_rel[0], 100 * q_rel[1]);
+                cells[0] ? cells : "-", run_seconds / 60, 100 * q_rel[0] * q_val[0] / fabs(lerr[0].ref),
+                100 * q_rel[1] * q_val[1] / fabs(lerr[1].ref));
     }
 
     /* the pictures: one gnuplot script, its PNGs written to the set's temporaries */
@@ -653,7 +664,7 @@ int sbd_cmd_snow_post(int argc, char **argv)
                 const sbd_ladder_row *r = &lad.row[k];
                 fprintf(g, "%.6g", r->seconds / 60);
                 for (int q = 0; q < 2; q++)
-                    fprintf(g, " %.6g %.6g", 100 * sbd_ladder_total(&lad, k, q), 100 * r->rel[q]);
+                    fprintf(g, " %.6g %.6g", 100 * lerr[q].total[k], 100 * lerr[q].sampling[k]);
                 fprintf(g, " %s\n", r->level);
             }
             fprintf(g, "EOD\nset title \"Error of the 30-min deposit against run time (the resolution ladder)\"\n"

@@ -2,6 +2,7 @@
  * window's mass and its sampling error by origin, the halves, the map, and the
  * resolution ladder (sbd_snow.h). */
 #include "sbd_snow.h"
+#include "swg_ladder.h"
 
 #include <errno.h>
 #include <fenv.h>
@@ -319,17 +320,34 @@ int sbd_ladder_find(const sbd_ladder *l, const char *level)
     return -1;
 }
 
-double sbd_ladder_mesh_error(const sbd_ladder *l, int k, int q, double *noise)
+int sbd_ladder_disc(const sbd_ladder *l, int q, sbd_ladder_error *e, char *err, size_t errlen)
 {
-    const int a = k + 1 < l->n ? k : k - 1, b = a + 1;   /* the pair: k and the next finer, or the last two */
-    const double *va = &l->row[a].value[q], *vb = &l->row[b].value[q];
-    if (noise)
-        *noise = sqrt(l->row[a].rel[q] * l->row[a].rel[q] + l->row[b].rel[q] * l->row[b].rel[q]);
-    return fabs(*va / *vb - 1);
-}
-
-double sbd_ladder_total(const sbd_ladder *l, int k, int q)
-{
-    const double s = l->row[k].rel[q], m = sbd_ladder_mesh_error(l, k, q, NULL);
-    return sqrt(s * s + m * m);
+    if (!l || !e || q < 0 || q >= SBD_LADDER_Q || l->n < 2 || l->n > SBD_LADDER_MAX)
+        return fail(err, errlen, "sbd_ladder_disc: a bad argument");
+    /* the levels finest first: h = cells^(-1/3) */
+    swg_level lv[SBD_LADDER_MAX];
+    char m[256];
+    for (int i = 0; i < l->n; i++) {
+        const sbd_ladder_row *r = &l->row[l->n - 1 - i];
+        if (swg_cell_size(1.0, (double)r->cells, 3, &lv[i].h, m, sizeof m))
+            return fail(err, errlen, "level %s: %s", r->level, m);
+        lv[i].value = r->value[q];
+        lv[i].se = r->rel[q] * r->value[q];
+    }
+    swg_settings s;
+    swg_settings_default(&s);
+    swg_disc d;
+    double disc[SBD_LADDER_MAX];
+    if (swg_discretization(lv, (size_t)l->n, 2.0, &s, &d, disc, m, sizeof m))
+        return fail(err, errlen, "the ladder's %s: %s", q ? "sensor" : "rear face", m);
+    if (!(fabs(d.ref) > 0))
+        return fail(err, errlen, "the ladder's %s: its reference is 0 (no relative error)", q ? "sensor" : "rear face");
+    e->ref = d.ref;
+    e->kind = swg_ref_kind_name(d.kind);
+    for (int k = 0; k < l->n; k++) {
+        e->disc[k] = disc[l->n - 1 - k] / fabs(d.ref);
+        e->sampling[k] = l->row[k].rel[q] * l->row[k].value[q] / fabs(d.ref);
+        e->total[k] = hypot(e->sampling[k], e->disc[k]);
+    }
+    return 0;
 }

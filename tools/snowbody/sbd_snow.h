@@ -105,11 +105,19 @@ typedef struct {
 int sbd_ladder_read(const char *path, sbd_ladder *l, char *err, size_t errlen);
 /* the row of a level, or -1 */
 int sbd_ladder_find(const sbd_ladder *l, const char *level);
-/* the mesh error of row k for quantity q: |v_k / v_k+1 - 1| (the finest row:
- * |v_k-1 / v_k - 1|); *noise gets the sampling error of that ratio,
- * sqrt(rel_k^2 + rel_k+1^2) (a mesh error below it is not resolved) */
-double sbd_ladder_mesh_error(const sbd_ladder *l, int k, int q, double *noise);
-/* the total error of row k for quantity q: sqrt(rel^2 + mesh error^2) */
-double sbd_ladder_total(const sbd_ladder *l, int k, int q);
+/* The errors of every row for quantity q by the one rule of the project's
+ * resolution ladders (swg_discretization, validation/convergence/swg_ladder.h,
+ * cell size cells^(-1/3), the schemes' order 2): Richardson where the levels
+ * resolve a monotone trend, else a bound over the finest value and the
+ * extrapolation of the finest pair. All relative to the reference. */
+typedef struct {
+    double ref;                      /* the reference [kg/m2]                      */
+    const char *kind;                /* "extrapolated" or "bound"                  */
+    double disc[SBD_LADDER_MAX];     /* per row: discretization error / |ref|      */
+    double sampling[SBD_LADDER_MAX]; /* per row: rel value / |ref|                 */
+    double total[SBD_LADDER_MAX];    /* per row: sqrt(sampling^2 + disc^2)         */
+} sbd_ladder_error;
+/* 0, or -1 with a message (a ladder the rule refuses, a reference of 0) */
+int sbd_ladder_disc(const sbd_ladder *l, int q, sbd_ladder_error *e, char *err, size_t errlen);
 
 #endif

@@ -130,7 +130,7 @@ int swe_total_error_table(FILE *csv, const char *run, const char *mvd, const cha
             return 1;
         rows[i][0] = 0;
     }
-    char suffix[128], facekey[128], face[256] = "";
+    char suffix[128], facekey[128], face[256] = "", facekind[64] = "";
     snprintf(suffix, sizeof suffix, "-mvd%s", mvd);
     snprintf(facekey, sizeof facekey, "face-mvd%s", mvd);
     for (int nr = 1; fgets(line, sizeof line, csv); nr++) {
@@ -189,6 +189,7 @@ int swe_total_error_table(FILE *csv, const char *run, const char *mvd, const cha
             char tt[32];
             pc(tt, sizeof tt, 100 * num(f[10]));
             snprintf(face, sizeof face, "%s (sampling %s, discretization %s)", tt, s, d);
+            snprintf(facekind, sizeof facekind, "%s", f[12]);
         }
     }
     fprintf(out, "# Total error of the rear deposit\n\n");
@@ -197,7 +198,9 @@ int swe_total_error_table(FILE *csv, const char *run, const char *mvd, const cha
             "its discretization error is the one of its level on the ladder: the distance of the value "
             "of the level from the reference, combined with the uncertainty of the reference itself "
             "(snowladder total: the Richardson extrapolation where the finest three levels converge "
-            "monotonically, else the finest value with its last change as its uncertainty). The total "
+            "monotonically beyond their sampling noise; else a bound, the larger of the distances to "
+            "the finest value and to the extrapolation with the schemes' order 2, each with its last "
+            "step as its uncertainty). The total "
             "error combines it with the sampling error of this run, sqrt(sampling^2 + "
             "discretization^2); all three relative to the reference. The whole judgement: "
             "results/ladder/ (ladder.md, total_error.csv, total_error.png).\n\n",
@@ -206,7 +209,12 @@ int swe_total_error_table(FILE *csv, const char *run, const char *mvd, const cha
         fprintf(out, "Rear face, decided spray (MVD %s um): no relative total error (the reference is 0).\n\n",
                 mvd);
     else
-        fprintf(out, "Rear face, decided spray (MVD %s um): total error %s.\n\n", mvd, face);
+        fprintf(out, "Rear face, decided spray (MVD %s um): total error %s%s.\n\n", mvd, face,
+                strcmp(facekind, "bound")
+                    ? ""
+                    : ", a bound: the ladder does not resolve its steps (they lie within the sampling "
+                      "noise, or do not fall monotonically), so the error covers both readings, the "
+                      "finest value and the extrapolation with the schemes' order");
     fprintf(out, "| quantity | this run | sampling | discretization | total | reference | reference from "
                  "|\n|---|---:|---:|---:|---:|---:|---|\n");
     for (int i = 0; i < 3; i++) {

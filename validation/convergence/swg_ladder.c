@@ -87,6 +87,11 @@ int swg_discretization(const swg_level *l, size_t n, double p_two, const swg_set
         snprintf(m, sizeof m, "levels: %zu given, at least 2 needed", n);
         return fail(err, errlen, m);
     }
+    if (!isfinite(p_two) || !(p_two > 0.0) || p_two > SWG_P_LIMIT) {
+        char m[128];
+        snprintf(m, sizeof m, "order: %g is outside (0, %g]", p_two, SWG_P_LIMIT);
+        return fail(err, errlen, m);
+    }
     memset(d, 0, sizeof *d);
     const int rc = n >= 3 ? swg_three_level(l, s, &d->gci, err, errlen)
                           : swg_two_level(l, p_two, s, &d->gci, err, errlen);
@@ -108,15 +113,35 @@ int swg_discretization(const swg_level *l, size_t n, double p_two, const swg_set
         d->ref_se = d->gci.se_phi_ext21;
         const double fs = n >= 3 ? s->fs3 : s->fs2;
         d->ref_u = (fs - 1.0) * fabs(l[0].value - d->ref);
-    } else {
-        d->kind = SWG_REF_FINEST;
-        d->ref = l[0].value;
-        d->ref_se = l[0].se;
-        d->ref_u = fabs(l[1].value - l[0].value);
+        d->ref_a = d->ref_b = d->ref;
+        d->u_a = d->u_b = d->ref_u;
+        for (size_t i = 0; i < n; i++)
+            disc[i] = hypot(l[i].value - d->ref, d->ref_u);
+        return 0;
     }
+    /* the bound over the two readings; r21 in [SWG_R_MIN, SWG_R_MAX] and p_two in
+       (0, SWG_P_LIMIT] make c > 0 and at most 1e40: every number finite */
+    d->kind = SWG_REF_BOUND;
+    const double c = pow(l[1].h / l[0].h, p_two) - 1.0, e21 = l[1].value - l[0].value;
+    d->ref_a = l[0].value;
+    d->u_a = fabs(e21);
+    d->ref_b = l[0].value - e21 / c;
+    d->u_b = fabs(e21 / c);
+    /* B when it keeps A's sign and is smaller (an extrapolation through zero makes
+       no reference: the error stays relative to the finest value then) */
+    const int take_b = d->ref_b * d->ref_a > 0.0 && fabs(d->ref_b) < fabs(d->ref_a);
+    d->ref = take_b ? d->ref_b : d->ref_a;
+    d->ref_u = take_b ? d->u_b : d->u_a;
+    /* B = (1 + 1/c) phi1 - phi2 / c: its sampling error */
+    d->ref_se = take_b ? hypot((1.0 + 1.0 / c) * l[0].se, l[1].se / c) : l[0].se;
     for (size_t i = 0; i < n; i++)
-        disc[i] = hypot(l[i].value - d->ref, d->ref_u);
+        disc[i] = fmax(hypot(l[i].value - d->ref_a, d->u_a), hypot(l[i].value - d->ref_b, d->u_b));
     return 0;
+}
+
+const char *swg_ref_kind_name(swg_ref_kind k)
+{
+    return k == SWG_REF_EXTRAPOLATED ? "extrapolated" : k == SWG_REF_BOUND ? "bound" : "finest";
 }
 
 int swg_total_error(double se, double disc, double ref, double *total, double *rel, int *has_rel,

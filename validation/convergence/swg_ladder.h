@@ -39,8 +39,13 @@ int swg_series_mean(const double *t, const double *x, size_t n, double t0, doubl
 /* what the levels' error is measured against */
 typedef enum {
     SWG_REF_EXTRAPOLATED = 0, /* phi_ext21: a monotone ladder (or two resolved levels) */
-    SWG_REF_FINEST            /* phi1: no extrapolation; the finest level's error is
-                                 taken as its last change |phi2 - phi1| */
+    SWG_REF_FINEST,           /* phi1 (no longer chosen: the reading A of SWG_REF_BOUND) */
+    SWG_REF_BOUND             /* a ladder that does not resolve a monotone trend: a bound
+                                 over two readings, A the finest value phi1 uncertain by
+                                 its last change |phi2 - phi1|, B the extrapolation of the
+                                 finest pair with the schemes' formal order p (p_two),
+                                 phi1 - (phi2 - phi1) / (r21^p - 1), uncertain by that
+                                 step; every level's error the larger of the two */
 } swg_ref_kind;
 
 typedef struct {
@@ -51,19 +56,35 @@ typedef struct {
     double ref_se;     /* its sampling standard error (se_phi_ext21 or se1) */
     double ref_u;      /* its own discretization uncertainty: (Fs - 1) |phi1 - phi_ext21|
                           for the extrapolated value (the GCI band beyond the
-                          extrapolation; Fs 1.25 with three levels, 3 with two), the
-                          finest level's last change |phi2 - phi1| for the finest value */
+                          extrapolation; Fs 1.25 with three levels, 3 with two); for a
+                          bound the one of the reading taken as ref */
+    /* SWG_REF_BOUND: the two readings (else ref_a = ref_b = ref, u_a = u_b = ref_u) */
+    double ref_a, u_a; /* phi1, |phi2 - phi1| */
+    double ref_b, u_b; /* phi1 - (phi2 - phi1) / (r21^p - 1), |(phi2 - phi1) / (r21^p - 1)| */
 } swg_disc;
 
 /* Levels l[0..n-1], finest first (h strictly increasing), n >= 2: the verdict of
  * the finest three (or two, with the assumed order p_two) and the reference; the
- * discretization error of every level into disc[0..n-1], its distance to the
- * reference combined with the reference's own uncertainty ref_u:
+ * discretization error of every level into disc[0..n-1].
+ * Where the ladder resolves a monotone trend (the verdict gives an order:
+ * Richardson and the GCI), its distance to the extrapolated value combined with
+ * that value's own uncertainty ref_u:
  *   disc[i] = sqrt((phi_i - ref)^2 + ref_u^2).
+ * Where it does not (steps inside the sampling noise, oscillation, divergence),
+ * a bound that covers both readings of such a ladder (SWG_REF_BOUND): the finest
+ * value A, uncertain by its last change, and the extrapolation B of the finest
+ * pair with the schemes' formal order p_two, uncertain by its own step:
+ *   disc[i] = max(sqrt((phi_i - ref_a)^2 + u_a^2), sqrt((phi_i - ref_b)^2 + u_b^2)),
+ * and ref is the reading of the smaller magnitude (relative errors the larger;
+ * B only when it has A's sign: an extrapolation through zero is no reference).
  * So a coarse level that lands near the finest value of a ladder that does not
- * converge is not taken as accurate: its error is at least the finest level's. */
+ * converge is not taken as accurate, and a fall that the statistics do not
+ * resolve is not read as convergence. p_two in (0, SWG_P_LIMIT]. */
 int swg_discretization(const swg_level *l, size_t n, double p_two, const swg_settings *s,
                        swg_disc *d, double *disc, char *err, size_t errlen);
+
+/* "extrapolated", "finest" or "bound" (the reference_kind of snowladder's tables) */
+const char *swg_ref_kind_name(swg_ref_kind k);
 
 /* ---- total error and the cheapest run -------------------------------------- */
 

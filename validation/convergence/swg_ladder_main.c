@@ -58,15 +58,21 @@ static const char *usage =
 "             the finest three levels give the verdict (snowgci's: libswgci), two\n"
 "             levels the two-level estimate with the assumed order (--order). The\n"
 "             reference is phi_ext21 when the verdict gives an order (monotone,\n"
-"             two-level), with its own uncertainty u = (Fs - 1) |phi1 - phi_ext21|;\n"
-"             otherwise the finest value phi1, with u = |phi2 - phi1| (its last\n"
-"             change). Every level's discretization error is sqrt((phi_i - ref)^2 +\n"
-"             u^2): a coarse level that lands near the reference of a ladder that\n"
-"             does not converge is not taken as accurate. Every run's total error\n"
-"             is sqrt(se^2 + disc^2) of its level,\n"
-"             relative to |reference|, against its run time t_flow + t_clouds; per\n"
-"             target (--targets, percent, default 10,30) the cheapest run whose\n"
-"             relative total error reaches it.\n"
+"             two-level: a trend the statistics resolve), with its own uncertainty\n"
+"             u = (Fs - 1) |phi1 - phi_ext21|, and every level's discretization error\n"
+"             is sqrt((phi_i - ref)^2 + u^2). Otherwise (steps within the sampling\n"
+"             noise, oscillation, divergence) a bound over two readings (reference\n"
+"             kind \"bound\"): A the finest value phi1, u_A = |phi2 - phi1| (its last\n"
+"             change), B the extrapolation of the finest pair with the assumed order\n"
+"             (--order), phi1 - (phi2 - phi1) / (r21^p - 1), u_B that step; every\n"
+"             level's error the larger of sqrt((phi_i - ref_X)^2 + u_X^2), the\n"
+"             reference the reading of the smaller magnitude (B only with A's sign).\n"
+"             So a coarse level that lands near the finest value is not taken as\n"
+"             accurate, and a fall the statistics do not resolve is not read as\n"
+"             convergence. Every run's total error is sqrt(se^2 + disc^2) of its\n"
+"             level, relative to |reference|, against its run time t_flow +\n"
+"             t_clouds; per target (--targets, percent, default 10,30) the\n"
+"             cheapest run whose relative total error reaches it.\n"
 "\n"
 "OUTPUT (total, into DIR, all or none)\n"
 "    ladder.md         the runs (level, design, cells, step, wall times), every\n"
@@ -631,7 +637,8 @@ static size_t run_list(const row *r, size_t n, size_t *first)
 }
 
 static void write_md(FILE *f, const char *in, const row *r, size_t n, const quantity *q,
-                     size_t nq, const double *tg, int ntg, const size_t *runs, size_t nr)
+                     size_t nq, const double *tg, int ntg, const size_t *runs, size_t nr,
+                     double p_two)
 {
     const char *base = strrchr(in, '/');
     fprintf(f, "<!-- written by snowladder total from %s (doc/convergence.md) -->\n\n",
@@ -688,7 +695,7 @@ static void write_md(FILE *f, const char *in, const row *r, size_t n, const quan
         else
             fprintf(f, " - |");
         fprintf(f, " %.5g +- %.2g | %.5g +- %.2g (%s) |", Q->lv[0].value, Q->lv[0].se, Q->d.ref,
-                Q->d.ref_se, Q->d.kind == SWG_REF_EXTRAPOLATED ? "extrapolated" : "finest");
+                Q->d.ref_se, swg_ref_kind_name(Q->d.kind));
         pct(f, g->has_order && g->has_rel, g->gci_fine21);
         pct(f, Q->lv[0].value != 0.0, g->half_spread_rel);
         double *rel = malloc(Q->n * sizeof *rel), *cost = malloc(Q->n * sizeof *cost);
@@ -717,11 +724,15 @@ static void write_md(FILE *f, const char *in, const row *r, size_t n, const quan
         free(ok);
         fputc('\n', f);
     }
-    fprintf(f, "\nReference: phi_ext21 when the verdict gives an order, with its own "
-               "uncertainty u = (Fs - 1) |phi_1 - phi_ext21|; else the finest value, with u = "
-               "|phi_2 - phi_1| (its last change). Every level's discretization error is "
-               "sqrt((phi_i - reference)^2 + u^2). Total error sqrt(se^2 + disc^2) over "
-               "|reference|; run time = flow + clouds.\n");
+    fprintf(f, "\nReference: phi_ext21 when the verdict gives an order (a monotone trend the "
+               "statistics resolve), with its own uncertainty u = (Fs - 1) |phi_1 - phi_ext21|, "
+               "and every level's discretization error sqrt((phi_i - reference)^2 + u^2). "
+               "Otherwise a bound (reference kind \"bound\") over two readings: A the finest "
+               "value phi_1, u_A = |phi_2 - phi_1|, and B the extrapolation of the finest pair "
+               "with the schemes' order p = %g, phi_1 - (phi_2 - phi_1) / (r21^p - 1), u_B its "
+               "step; every level's error the larger of sqrt((phi_i - ref_X)^2 + u_X^2), and "
+               "the reference the reading of the smaller magnitude. Total error "
+               "sqrt(se^2 + disc^2) over |reference|; run time = flow + clouds.\n", p_two);
     fprintf(f, "\n## Total error of every run\n\n| quantity | run | design | level | run time "
                "[s] | sampling | discretization | total | relative |\n"
                "|---|---|---|---|---:|---:|---:|---:|---:|\n");
@@ -749,7 +760,7 @@ static void write_total_csv(FILE *f, const row *r, const quantity *q, size_t nq)
             if (w->has_rel)
                 fprintf(f, "%.6g", w->rel);
             fprintf(f, ",%.10g,%s\n", q[j].d.ref,
-                    q[j].d.kind == SWG_REF_EXTRAPOLATED ? "extrapolated" : "finest");
+                    swg_ref_kind_name(q[j].d.kind));
         }
 }
 
@@ -856,7 +867,7 @@ static int cmd_total(int argc, char **argv)
             rc = swo_code(o);
             fprintf(stderr, "snowladder: %s\n", err);
         } else {
-            write_md(fm, in, r, n, q, nq, tg, ntg, runs, nr);
+            write_md(fm, in, r, n, q, nq, tg, ntg, runs, nr, p_two);
             write_total_csv(ft, r, q, nq);
             write_gci_csv(fg, r, q, nq);
             rc = swo_commit(o, err, sizeof err);
@@ -868,7 +879,7 @@ static int cmd_total(int argc, char **argv)
         for (size_t j = 0; j < nq; j++)
             printf("%s: %zu levels, %s, reference %.6g (%s)\n", q[j].name, q[j].nl,
                    swg_verdict_name(q[j].d.gci.verdict), q[j].d.ref,
-                   q[j].d.kind == SWG_REF_EXTRAPOLATED ? "extrapolated" : "finest");
+                   swg_ref_kind_name(q[j].d.kind));
         printf("written: %s/ladder.md, total_error.csv, gci.csv\n", out);
         if (fflush(stdout))
             rc = 1;
