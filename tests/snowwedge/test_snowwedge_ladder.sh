@@ -68,6 +68,7 @@ bad 2 "its runs have 'variant coarse', the --run runs 'variant fine'" ladder-joi
 "$S" ladder-plot --quantity Cd --targets 10,30 --points "$tmp/pts" --png x.png "$tmp/te.csv" > "$tmp/gp"
 check "ladder-plot: the points (error in %)" "[ \"\$(cat '$tmp/pts')\" = \"\$(printf '10 5 A(default)\n1000 50 B(default)')\" ]"
 check "ladder-plot: ranges 5:2000 and 5/1.5:75, the targets as lines" "grep -qx 'set xrange \[5:2000\]' '$tmp/gp' && grep -qx 'set yrange \[3.33333:75\]' '$tmp/gp' && [ \$(grep -c '^set arrow from graph 0, first [13]0 to graph 1' '$tmp/gp') = 2 ]"
+check "ladder-plot: every run its own key entry, the key outside the data, no label over a point" "grep -qx 'set key outside right top vertical Left reverse' '$tmp/gp' && grep -q 'title \"A(default)\"' '$tmp/gp' && grep -q 'title \"B(default)\"' '$tmp/gp' && ! grep -q 'with labels' '$tmp/gp'"
 bad 2 "--plot St: no such quantity with a relative error" ladder-plot --quantity St --targets 10 --points "$tmp/pts" --png x.png "$tmp/te.csv"
 { echo '## Runs'; echo '| Cd | a | b |'; echo '## Discretization'; echo '| q | x | <= 10 % | <= 30 % |'
   echo '| Cd | 3 | converged | none | B (level 0, 1000 s, 5 %) |'; } > "$tmp/ladder.md"

@@ -668,13 +668,17 @@ int sbd_cmd_snow_post(int argc, char **argv)
                 fprintf(g, " %s\n", r->level);
             }
             fprintf(g, "EOD\nset title \"Error of the 30-min deposit against run time (the resolution ladder)\"\n"
-                       "set xlabel 'run time: mesh, flow and snow [CPU min]'\nset ylabel 'error [%%]'\n"
-                       "set logscale xy\nset key top right\nset grid\nset xrange [*:*]\nset yrange [*:*]\n");
-            fprintf(g, "plot $err using 1:2 with linespoints lw 2 pt 7 lc rgb '#3182bd' title 'rear face, total', "
+                       "set xlabel 'run time: mesh, flow and snow [CPU min]' offset 0,-1\nset ylabel 'error [%%]'\n"
+                       "set logscale xy\nset key outside right top vertical\nset grid\nset autoscale xfix\n"
+                       "set offsets graph 0.1, graph 0.1, 0, 0\nset yrange [*:*]\nset bmargin 6\n");
+            /* the levels named on the run-time axis at their run times (each tic "level\n
+               minutes"), the key right of the data: no label over a point */
+            fprintf(g, "plot $err using 1:2:xtic(sprintf(\"%%s\\n%%.3g\", strcol(6), $1)) with linespoints lw 2 pt 7 "
+                       "lc rgb '#3182bd' title 'rear face, total', "
                        "$err using 1:3 with linespoints dt 2 pt 6 lc rgb '#3182bd' title 'rear face, sampling', "
                        "$err using 1:4 with linespoints lw 2 pt 7 lc rgb '#e6550d' title 'sensor, total', "
-                       "$err using 1:5 with linespoints dt 2 pt 6 lc rgb '#e6550d' title 'sensor, sampling', "
-                       "$err using 1:4:6 with labels offset 0,1 notitle\nset output\n");
+                       "$err using 1:5 with linespoints dt 2 pt 6 lc rgb '#e6550d' title 'sensor, sampling'\n"
+                       "set output\n");
         }
         int bad = fclose(g);
         int grc = bad ? -1 : run_gnuplot(script);

@@ -501,7 +501,10 @@ static void plain(const char *what, const char *text)
 /* ladder-plot --quantity Q --targets LIST --points FILE --png PNG TOTAL_ERROR.csv:
    per run of Q with a relative error "time error% run(design)" into FILE, and on
    standard output the gnuplot script of the plot into PNG (log-log, the ranges
-   from the points and the targets, the targets as dashed lines) */
+   from the points and the targets, the targets as dashed lines). Every run is
+   its own point style with its name in the key, and the key sits outside the
+   data, right of the plot: no label is written over a point or another label
+   (runs of one level lie close together), and the key hides no point */
 static int cmd_plot(const opts *o)
 {
     const char *q = need(o, "--quantity", "ladder-plot"), *tg = need(o, "--targets", "ladder-plot"),
@@ -546,21 +549,36 @@ static int cmd_plot(const opts *o)
     swe_ladder_plot_range(x, y, n, tv, nt, range, NULL, 0);
     for (int i = 0; i < 4; i++)
         swe_ladder_awknum(range[i], r[i], sizeof r[i]);
-    printf("set terminal pngcairo size 900,650 noenhanced\nset output \"%s\"\nset logscale xy\n"
+    printf("set terminal pngcairo size 1100,650 noenhanced\nset output \"%s\"\nset logscale xy\n"
            "set xlabel \"run time: flow + clouds [s]\"\n"
            "set ylabel \"total error of %s (sampling and discretization) [%%]\"\n"
-           "set title \"Resolution ladder: total error against run time (%s)\"\n"
-           "set grid\nset key top right\nset xrange [%s:%s]\nset yrange [%s:%s]\n",
-           png, q, q, r[0], r[1], r[2], r[3]);
+           "set title \"Resolution ladder: total error against run time (%s); dashed: the targets "
+           "%s %%\"\n"
+           "set grid\nset key outside right top vertical Left reverse\nset xrange [%s:%s]\n"
+           "set yrange [%s:%s]\nset ytics (1, 2, 5, 10, 20, 50, 100, 200, 500, 1000, 2000, 5000)\n",
+           png, q, q, tg, r[0], r[1], r[2], r[3]);
     for (const char *a = tg; *a;) {
         const int len = (int)strcspn(a, ",");
         printf("set arrow from graph 0, first %.*s to graph 1, first %.*s nohead dt 2 lc rgb "
                "\"gray40\"\n", len, a, len, a);
         a += len + (a[len] == ',');
     }
-    printf("plot \"%s\" using 1:2 with points pt 7 ps 1.5 title \"runs (design); dashed: the "
-           "targets %s %%\", \\\n     \"%s\" using 1:2:3 with labels offset 1,1 left notitle\n",
-           pf, tg, pf);
+    /* one series per run (its line of FILE), its name the key's entry; point types and
+       colours cycle */
+    const char *col[] = {"#3182bd", "#e6550d", "#31a354", "#756bb1", "#636363", "#d6616b"};
+    const int pt[] = {7, 5, 9, 11, 13, 15, 4, 6, 8};
+    printf("plot ");
+    for (size_t i = 0; i < n; i++) {
+        /* the run's name from the points text: the third field of line i */
+        const char *l = pts;
+        for (size_t k = 0; k < i; k++)
+            l = strchr(l, '\n') + 1;
+        const char *nm = strchr(strchr(l, ' ') + 1, ' ') + 1;
+        const int nl = (int)strcspn(nm, "\n");
+        printf("%s\"%s\" every ::%zu::%zu using 1:2 with points pt %d ps 1.6 lc rgb \"%s\" "
+               "title \"%.*s\"", i ? ", \\\n     " : "", pf, i, i, pt[i % 9], col[i % 6], nl, nm);
+    }
+    printf("\n");
     free(pts);
     free(t);
     free(x);
