@@ -4,8 +4,8 @@
 # A run of hours must not be cleaned, resumed or run again beside itself: a second
 # Allrun in the same folder would clean it and write into it while the first is
 # still writing. The lock is flock(1) on the case's Allrun script (a file the
-# repository holds, so no clean removes it and every copy of a case has its own),
-# taken without waiting; the kernel drops it when every process that holds the
+# repository holds, so no clean removes it and every copy of a case has its own);
+# the kernel drops it when every process that holds the
 # descriptor has ended (the run's shell and the programs it started), so a lock
 # left by a run that was killed is free again by itself. Both calls wait up to
 # 10 s for it (the processes of a run just stopped take a moment to end;
