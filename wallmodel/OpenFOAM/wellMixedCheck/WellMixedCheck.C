@@ -448,6 +448,8 @@ void Foam::WellMixedCheck<CloudType>::write()
         Pstream::listCombineGather(b, plusEqOp<scalar>());
     }
     const scalar pt = returnReduce(parcelTime_, sumOp<scalar>());
+    // (collective: counted on every processor before the master writes alone)
+    const label nStall = snowStallCount(stall_);
     if (!Pstream::master() || !(pt > 0) || !(window_ > 0))
     {
         return;
@@ -549,7 +551,6 @@ void Foam::WellMixedCheck<CloudType>::write()
         << nMean << ", largest deviation from uniform " << worst << " ("
         << worstName << "), " << nFail << " region(s) beyond 10 % and two "
         << "standard errors (fewer than 5 parcels expected: not judged)";
-    const label nStall = snowStallCount(stall_);
     if (nStall > 0)
     {
         Info<< "; " << nStall << " tracking step(s) ended by the stall guard";
