@@ -42,7 +42,10 @@
 # parcel with its weight (its error the weighted one). K in (1, 1000], L in
 # 1..20; the parcels then number up to K times more in those cells (the
 # estimate before the run takes their cell share as an upper bound of their
-# volume share).
+# volume share). It pays while the light parcels stay near the walls (the mean
+# flow alone, short windows); once the walk has mixed them, and in a through-flow
+# (they leave before the window opens), the same parcels released uniformly do
+# better (doc/reference/wellMixedCheck.md).
 #
 # Treatments (--models, comma-separated; default none,crw): none (the mean
 # flow alone: the tracking itself must keep tracers uniform), crw
