@@ -9,8 +9,8 @@
 # walk whose drift took u* as fixed, with k a step per cell, piled tracers up
 # 6-37 times in such bands), the mean flow alone too, the stochastic model
 # fails at least one band (the check can fail), a --zone's rows, the table and
-# plot written, a release denser next to the walls (--wall-release: the band y+ 0-1
-# judged), the refusals of bad options (exit 2, nothing written) and of
+# plot written, a release denser next to the walls (--wall-release: the band y+ 0-1,
+# judged; the same on 2 processes), the refusals of bad options (exit 2, nothing written) and of
 # bad wellMixedCheck entries (a FatalIOError naming the key).
 # The tracking: the ribbed channel's wall-function mesh (validation/rib.sh, its
 # flow, about 15 s), the mean flow alone with 4000 tracers over 3 outer
@@ -56,6 +56,17 @@ check "--wall-release 20:1 exits 0, the check weighs the parcels" \
     "[ $? -eq 0 ] && grep -q 'weighted by nParticle' \$(ls -d '$tmp'/wr/case/postProcessing/lagrangian/t_none/wellMixed/*/wellMixed.dat | sort -V | tail -1)"
 check "--wall-release: every band within 10 % or 3 standard errors, y+ 0-1 judged with se < 0.2" \
     "awk -F, '\$1 == \"none\" && \$2 == \"all\" { n++; d = \$9 - 1; if (d < 0) d = -d; if (!(d <= 0.1 || d <= 3 * \$10)) bad++; if (\$4 == 0 && !(\$10 < 0.2 && \$12 == \"ok\")) bad++ } END { exit !(n == 5 && !bad) }' '$tmp/wr/wellmixed.csv'"
+# the same cloud function on 2 processes (decomposePar + mpirun): its summary reduced on
+# every processor (a reduce after the master's own return once waited for ever), the
+# same parcels counted
+wr_case="$tmp/wr/case"
+printf 'FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\nnumberOfSubdomains 2;\nmethod simple;\ncoeffs { n (1 2 1); }\n' \
+    > "$wr_case/system/decomposeParDict"
+(cd "$wr_case" && rm -rf postProcessing && decomposePar -force > log.decomposePar 2>&1 &&
+    timeout 300 mpirun -np 2 --oversubscribe pimpleUncoupledKinematicParcelFoam -parallel -frozen -clouds "(t_none)" \
+    > log.parallel 2>&1)
+check "--wall-release on 2 processes: the run ends, the summary as in serial" \
+    "[ $? -eq 0 ] && grep -q '^End' '$wr_case/log.parallel' && [ \"\$(grep -o 'mean parcels [0-9]*' '$wr_case/log.parallel' | tail -1)\" = \"\$(grep -o 'mean parcels [0-9]*' '$wr_case/log.particles' | tail -1)\" ]"
 # refusals: exit 2, nothing written
 check "faceFlux took the velocity of every cell from the six fluxes (a channel of cuboids)" "grep -q 'faceFlux: \([0-9]*\) of \1 cells are parallelepipeds' '$tmp/wm/case/log.particles'"
 for bad in "--walls walls" "--walls (nonesuch)" "--walls (left)" "--dt 0" "--dt abc" "--parcels 0" "--tl-multiple 1" "--models none,bogus" "--zone x:1,2:3,4,5" "--d 1" \
