@@ -516,6 +516,7 @@ static int cmd_plot(const opts *o)
         swe_cli_die(1, "cannot read %s", o->arg[0]);
     size_t n = 0, cap = 0;
     double *x = NULL, *y = NULL;
+    const char **run = NULL, **design = NULL;   /* into t */
     char *pts = NULL;
     size_t plen = 0;
     FILE *mem = open_memstream(&pts, &plen);
@@ -528,12 +529,16 @@ static int cmd_plot(const opts *o)
             cap = cap ? 2 * cap : 64;
             x = realloc(x, cap * sizeof *x);
             y = realloc(y, cap * sizeof *y);
-            if (!x || !y)
+            run = realloc(run, cap * sizeof *run);
+            design = realloc(design, cap * sizeof *design);
+            if (!x || !y || !run || !design)
                 swe_cli_die(1, "out of memory");
         }
         char ys[64];
         swe_ladder_awknum(100 * strtod(f[10], NULL), ys, sizeof ys);
         x[n] = strtod(f[5], NULL);
+        run[n] = f[1];
+        design[n] = f[2];
         y[n++] = strtod(ys, NULL);
         fprintf(mem, "%s %s %s(%s)\n", f[5], ys, f[1], f[2]);
     }
@@ -563,26 +568,22 @@ static int cmd_plot(const opts *o)
                "\"gray40\"\n", len, a, len, a);
         a += len + (a[len] == ',');
     }
-    /* one series per run (its line of FILE), its name the key's entry; point types and
-       colours cycle */
+    /* one series per run (its line of FILE), "run(design)" the key's entry; point
+       types and colours cycle */
     const char *col[] = {"#3182bd", "#e6550d", "#31a354", "#756bb1", "#636363", "#d6616b"};
     const int pt[] = {7, 5, 9, 11, 13, 15, 4, 6, 8};
     printf("plot ");
-    for (size_t i = 0; i < n; i++) {
-        /* the run's name from the points text: the third field of line i */
-        const char *l = pts;
-        for (size_t k = 0; k < i; k++)
-            l = strchr(l, '\n') + 1;
-        const char *nm = strchr(strchr(l, ' ') + 1, ' ') + 1;
-        const int nl = (int)strcspn(nm, "\n");
+    for (size_t i = 0; i < n; i++)
         printf("%s\"%s\" every ::%zu::%zu using 1:2 with points pt %d ps 1.6 lc rgb \"%s\" "
-               "title \"%.*s\"", i ? ", \\\n     " : "", pf, i, i, pt[i % 9], col[i % 6], nl, nm);
-    }
+               "title \"%s(%s)\"", i ? ", \\\n     " : "", pf, i, i, pt[i % 9], col[i % 6], run[i],
+               design[i]);
     printf("\n");
     free(pts);
     free(t);
     free(x);
     free(y);
+    free(run);
+    free(design);
     return 0;
 }
 
