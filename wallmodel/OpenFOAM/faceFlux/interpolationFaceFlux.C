@@ -192,20 +192,35 @@ const Foam::scalarList& Foam::interpolationFaceFlux::tetFluxesOf
 {
     const polyMesh& mesh = this->pMesh_;
     const cell& cf = mesh.cells()[c];
+    HashTable<faceFluxAddressing::tetFluxes, label, Hash<label>>& cache =
+        addr_.tets();
+    {
+        // the kept fluxes while the cell's face fluxes are the same to the bit,
+        // compared in place (this runs at every interpolation: nothing is
+        // allocated here); a mesh that moved in this step has new tetrahedra
+        auto iter = cache.cfind(c);
+        if (iter.found() && !mesh.moving() && (*iter).phi.size() == cf.size())
+        {
+            const scalarList& kept = (*iter).phi;
+            bool same = true;
+            forAll(cf, i)
+            {
+                if (outwardFlux(c, cf[i]) != kept[i])
+                {
+                    same = false;
+                    break;
+                }
+            }
+            if (same)
+            {
+                return (*iter).F;
+            }
+        }
+    }
     scalarList phiC(cf.size());
     forAll(cf, i)
     {
         phiC[i] = outwardFlux(c, cf[i]);
-    }
-    HashTable<faceFluxAddressing::tetFluxes, label, Hash<label>>& cache =
-        addr_.tets();
-    {
-        auto iter = cache.cfind(c);
-        // (a mesh that moved in this step has new tetrahedra: found anew)
-        if (iter.found() && !mesh.moving() && (*iter).phi == phiC)
-        {
-            return (*iter).F;
-        }
     }
     const faceList& faces = mesh.faces();
     const pointField& pts = mesh.points();
