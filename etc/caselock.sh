@@ -49,6 +49,11 @@ case_lock() {
     local who=$1
     command -v flock > /dev/null || { echo "$who: 'flock' not found (util-linux): the folder cannot be locked" >&2; exit 2; }
     [ -f Allrun ] || { echo "$who: no Allrun in $(pwd): not a case folder" >&2; exit 2; }
+    # Allrun.owner is written here: never through a link, into a FIFO or over a device
+    if [ -L Allrun.owner ] || { [ -e Allrun.owner ] && [ ! -f Allrun.owner ]; }; then
+        echo "$who: $(pwd)/Allrun.owner is not a file a run wrote (a link, folder, FIFO or device): move it away" >&2
+        exit 2
+    fi
     exec 9< Allrun
     local wait
     wait=$(case_lock_wait) || exit 2

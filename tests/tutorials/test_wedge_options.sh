@@ -245,6 +245,13 @@ if [ -x /usr/bin/simpleFoam ] && [ -x "$top/bin/snowregime" ] && [ -x "$top/bin/
     (cd "$w" && ./Allclean) || fail "Allclean after the holder ended: exit $?"
     [ ! -e "$w/Allrun.owner" ] || fail "Allclean left Allrun.owner"
     echo "ok   the holder ended: the lock free again, Allclean removes Allrun.owner"
+    # Allrun.owner never written through a FIFO (or a link): refused, and Allclean leaves it
+    mkfifo "$w/Allrun.owner"; listing > "$tmp/before"
+    refused "Allrun.owner is not a file a run wrote (a link, folder, FIFO or device)" -test
+    (cd "$w" && ./Allclean) || fail "Allclean with a FIFO Allrun.owner: exit $?"
+    [ -p "$w/Allrun.owner" ] || fail "Allclean removed a FIFO it did not write"
+    rm -f "$w/Allrun.owner"
+    echo "ok   a FIFO named Allrun.owner: Allrun refuses, Allclean leaves it"
     unset SNOWWALL_LOCK_WAIT
 else
     echo "skip the estimate checks: OpenFOAM or the build missing"
