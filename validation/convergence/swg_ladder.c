@@ -141,7 +141,7 @@ int swg_discretization(const swg_level *l, size_t n, double p_two, const swg_set
 
 const char *swg_ref_kind_name(swg_ref_kind k)
 {
-    return k == SWG_REF_EXTRAPOLATED ? "extrapolated" : k == SWG_REF_BOUND ? "bound" : "finest";
+    return k == SWG_REF_EXTRAPOLATED ? "extrapolated" : "bound";
 }
 
 int swg_total_error(double se, double disc, double ref, double *total, double *rel, int *has_rel,

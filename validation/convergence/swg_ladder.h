@@ -39,7 +39,6 @@ int swg_series_mean(const double *t, const double *x, size_t n, double t0, doubl
 /* what the levels' error is measured against */
 typedef enum {
     SWG_REF_EXTRAPOLATED = 0, /* phi_ext21: a monotone ladder (or two resolved levels) */
-    SWG_REF_FINEST,           /* phi1 (no longer chosen: the reading A of SWG_REF_BOUND) */
     SWG_REF_BOUND             /* a ladder that does not resolve a monotone trend: a bound
                                  over two readings, A the finest value phi1 uncertain by
                                  its last change |phi2 - phi1|, B the extrapolation of the
@@ -83,7 +82,7 @@ typedef struct {
 int swg_discretization(const swg_level *l, size_t n, double p_two, const swg_settings *s,
                        swg_disc *d, double *disc, char *err, size_t errlen);
 
-/* "extrapolated", "finest" or "bound" (the reference_kind of snowladder's tables) */
+/* "extrapolated" or "bound" (the reference_kind of snowladder's tables) */
 const char *swg_ref_kind_name(swg_ref_kind k);
 
 /* ---- total error and the cheapest run -------------------------------------- */
