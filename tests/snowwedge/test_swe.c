@@ -2,8 +2,9 @@
  * known answers: the log-normal spray's distribution function and classes,
  * the mass medians of the spray and of a composed deposit, the regions of the
  * rear face and their effective sample sizes, the composition of classes with
- * its propagated error, the test of two halves, and the spectral peak of an
- * unevenly sampled signal; bad inputs give a named error, never an exit. */
+ * its propagated error, the face's blocks and the grid chosen from their error,
+ * the test of two halves, and the spectral peak of an unevenly sampled signal;
+ * bad inputs give a named error, never an exit. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -13,6 +14,7 @@
 
 #include <gsl/gsl_cdf.h>
 
+#include "swe_blocks.h"
 #include "swe_signal.h"
 #include "swe_spray.h"
 #include "swe_stats.h"
@@ -267,12 +269,107 @@ static void bad_inputs(void **st)
     assert_int_equal(swe_spray_classes(&s, d, 0, w, e0, e1, err, sizeof err), SWE_EINVAL);
 }
 
+/* the face's blocks: known answers, origins shared, two classes, mass kept,
+   the grid from the error, refusals */
+static void blocks(void **st)
+{
+    (void)st;
+    const double o[4] = {0, 1, 0, 1};
+    char err[256];
+    swe_block b[64];
+    /* one record per quadrant, mass 1, scale 2: each block 2 x 1 / 0.25, error 1 */
+    const swe_record q[4] = {{0.25, 0.75, 1, 0, 1}, {0.75, 0.75, 1, 0, 2},
+                             {0.25, 0.25, 1, 0, 3}, {0.75, 0.25, 1, 0, 4}};
+    swe_block_class c = {q, 4, 2};
+    assert_int_equal(swe_blocks(&c, 1, o, 2, b, err, sizeof err), 0);
+    for (int i = 0; i < 4; i++) {
+        ASSERT_NEAR(b[i].deposit, 8, 1e-12);
+        ASSERT_NEAR(b[i].rel, 1, 1e-12);
+        assert_int_equal(b[i].records, 1);
+    }
+    /* block 0 is the top left seen from behind: y 0 .. 0.5, z 0.5 .. 1 */
+    ASSERT_NEAR(b[0].y1, 0.5, 1e-15);
+    ASSERT_NEAR(b[0].z0, 0.5, 1e-15);
+    ASSERT_NEAR(b[3].y0, 0.5, 1e-15);
+    ASSERT_NEAR(b[3].z1, 0.5, 1e-15);
+    /* two records of one origin in a block: n_eff 1; of two origins: 2 */
+    const swe_record same[2] = {{0.1, 0.9, 1, 3, 7}, {0.2, 0.8, 1, 3, 7}};
+    const swe_record two[2] = {{0.1, 0.9, 1, 3, 7}, {0.2, 0.8, 1, 3, 8}};
+    c = (swe_block_class){same, 2, 1};
+    assert_int_equal(swe_blocks(&c, 1, o, 2, b, err, sizeof err), 0);
+    ASSERT_NEAR(b[0].rel, 1, 1e-12);
+    assert_int_equal(b[1].records, 0);
+    ASSERT_NEAR(b[1].rel, 0, 0);
+    c = (swe_block_class){two, 2, 1};
+    assert_int_equal(swe_blocks(&c, 1, o, 2, b, err, sizeof err), 0);
+    ASSERT_NEAR(b[0].rel, 1 / sqrt(2), 1e-12);
+    /* two classes: the deposits add, so do the variances D_kb^2 / n_eff_kb */
+    const swe_block_class cc[2] = {{two, 2, 1}, {q, 1, 3}};
+    assert_int_equal(swe_blocks(cc, 2, o, 2, b, err, sizeof err), 0);
+    ASSERT_NEAR(b[0].deposit, 2 / 0.25 + 3 / 0.25, 1e-12);
+    ASSERT_NEAR(b[0].var, (8.0 * 8) / 2 + 12.0 * 12, 1e-9);
+    /* the mass is kept at every grid, records on and beyond the outline included */
+    swe_record r[300];
+    for (int i = 0; i < 300; i++)
+        r[i] = (swe_record){fmod(0.37 * i, 1.3) - 0.15, fmod(0.61 * i, 1.2) - 0.1,
+                            1 + (i % 7), i % 5, i / 3};
+    const swe_block_class rc = {r, 300, 0.5};
+    double m = 0;
+    for (int i = 0; i < 300; i++)
+        m += 0.5 * r[i].mass;
+    for (int nb = 1; nb <= 8; nb++) {
+        assert_int_equal(swe_blocks(&rc, 1, o, nb, b, err, sizeof err), 0);
+        double s = 0;
+        long n = 0;
+        for (int i = 0; i < nb * nb; i++) {
+            s += b[i].deposit / (nb * nb);
+            n += b[i].records;
+        }
+        ASSERT_NEAR(s, m, 1e-9 * m);
+        assert_int_equal(n, 300);
+    }
+    /* the grid: a 24 x 24 lattice of single-origin records of one mass; every
+       block non-empty, the rms error is nb / 24 exactly: 7 at a target of 0.3 */
+    static swe_record lat[576];
+    for (int i = 0; i < 576; i++)
+        lat[i] = (swe_record){(i % 24 + 0.5) / 24, (i / 24 + 0.5) / 24, 1, 0, i};
+    const swe_block_class lc = {lat, 576, 1};
+    int nb;
+    double rms;
+    assert_int_equal(swe_blocks_grid(&lc, 1, o, 24, 0.3, &nb, &rms, err, sizeof err), 0);
+    assert_int_equal(nb, 7);
+    ASSERT_NEAR(rms, 7.0 / 24, 1e-12);
+    assert_int_equal(swe_blocks_grid(&lc, 1, o, 24, 1.0 / 24, &nb, &rms, err, sizeof err), 0);
+    assert_int_equal(nb, 1);
+    assert_int_equal(swe_blocks_grid(&lc, 1, o, 4, 0.3, &nb, &rms, err, sizeof err), 0);
+    assert_int_equal(nb, 4);
+    /* no record: one block, no error to give */
+    const swe_block_class none = {NULL, 0, 1};
+    assert_int_equal(swe_blocks_grid(&none, 1, o, 24, 0.3, &nb, &rms, err, sizeof err), 0);
+    assert_int_equal(nb, 1);
+    assert_true(isinf(rms));
+    /* refusals, named */
+    const double flat[4] = {0, 1, 1, 1};
+    assert_int_equal(swe_blocks(&lc, 1, flat, 2, b, err, sizeof err), SWE_EINVAL);
+    assert_non_null(strstr(err, "outline"));
+    assert_int_equal(swe_blocks(&lc, 1, o, 0, b, err, sizeof err), SWE_EINVAL);
+    const swe_block_class neg = {lat, 576, -1}, nan_s = {lat, 576, NAN};
+    assert_int_equal(swe_blocks(&neg, 1, o, 2, b, err, sizeof err), SWE_EINVAL);
+    assert_non_null(strstr(err, "scale"));
+    assert_int_equal(swe_blocks(&nan_s, 1, o, 2, b, err, sizeof err), SWE_EINVAL);
+    assert_int_equal(swe_blocks_grid(&lc, 1, o, 0, 0.3, &nb, &rms, err, sizeof err), SWE_EINVAL);
+    assert_int_equal(swe_blocks_grid(&lc, 1, o, 24, 0, &nb, &rms, err, sizeof err), SWE_EINVAL);
+    assert_non_null(strstr(err, "target"));
+    assert_int_equal(swe_blocks_grid(&lc, 1, o, 24, NAN, &nb, &rms, err, sizeof err), SWE_EINVAL);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(distribution), cmocka_unit_test(classes),
         cmocka_unit_test(medians),      cmocka_unit_test(rear_regions),
-        cmocka_unit_test(compose),      cmocka_unit_test(spectral_peak),
+        cmocka_unit_test(compose),      cmocka_unit_test(blocks),
+        cmocka_unit_test(spectral_peak),
         cmocka_unit_test(time_for_error), cmocka_unit_test(bad_inputs),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

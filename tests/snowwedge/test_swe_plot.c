@@ -210,11 +210,55 @@ static void map_max(void **st)
     remove(dir);
 }
 
+/* the blocks' picture: two panels 1200 px wide, the grey limit twice the
+   target, the errors written in the blocks up to 8 x 8, names quoted */
+static char *blocks_script(const swe_plot_blocks *p, const char *png, int want_rc)
+{
+    char *t = NULL, err[256] = "";
+    size_t len = 0;
+    FILE *f = open_memstream(&t, &len);
+    assert_non_null(f);
+    const int rc = swe_plot_blocks_script(f, p, png, err, sizeof err);
+    fclose(f);
+    assert_int_equal(rc, want_rc);
+    if (rc)
+        assert_string_equal(err, "a file name holds a newline");
+    return t;
+}
+
+static void blocks(void **st)
+{
+    (void)st;
+    swe_plot_blocks p = {"Rear \"face\"", "b's.csv", 3, 0.3, 0.288, 0.0435, {-0.06, 0.06, -0.06, 0.06}};
+    char *t = blocks_script(&p, "o.png", 0);
+    assert_non_null(strstr(t, "set terminal pngcairo size 1200,560 "));
+    assert_non_null(strstr(t, "set multiplot layout 1,2 title \"Rear \\\"face\\\"\"\n"));
+    assert_non_null(strstr(t, "deposit per block, 3 x 3: the finest grid"));
+    assert_non_null(strstr(t, "is <= 30 %: 29 %"));
+    assert_non_null(strstr(t, "grey: error > 60 % or no parcel"));
+    assert_non_null(strstr(t, "($7 > 0 && $6 <= 0.6) ?"));
+    assert_non_null(strstr(t, "($7 == 0 || $6 > 0.6) ?"));
+    assert_non_null(strstr(t, "set cbrange [0:0.0435]"));
+    assert_non_null(strstr(t, "plot 'b''s.csv' every ::1"));
+    assert_non_null(strstr(t, "with labels notitle"));
+    free(t);
+    /* finer than 8 x 8: no numbers in the blocks (they would not fit) */
+    p.nb = 9;
+    t = blocks_script(&p, "o.png", 0);
+    assert_null(strstr(t, "with labels"));
+    free(t);
+    p.csv = "a\nb.csv";
+    free(blocks_script(&p, "o.png", -1));
+    p.csv = "b.csv";
+    free(blocks_script(&p, "o\n.png", -1));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(wrapping), cmocka_unit_test(sizes),   cmocka_unit_test(one_panel),
         cmocka_unit_test(panels),   cmocka_unit_test(quoting), cmocka_unit_test(map_max),
+        cmocka_unit_test(blocks),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -5,7 +5,9 @@
 # composed region masses and their propagated errors (se^2 = sum (w_k M_k)^2 /
 # n_eff_k), the class captures, the log-normal weights (sum to 1, the mass median
 # class, the interpolated mass medians), the halves of the window composed and
-# compared, the bad inputs (exit 2, no output), and that a failed run leaves nothing.
+# compared, the blocks of the composed map from the classes' records (and the older
+# results without them), the bad inputs (exit 2, no output), and that a failed run
+# leaves nothing.
 set -u
 top=${SW_TOP:?SW_TOP not set}
 C="$top/tutorials/wedge/post/wedge-compose"
@@ -83,6 +85,31 @@ cp -r "$tmp/res" "$tmp/resB"; halves "$tmp/resB" 0.1 0.3
 "$C" --results "$tmp/resB" --out "$tmp/outB" --masses "$tmp/masses.csv" > /dev/null 2>&1
 check "second half 3x the first: disagree by +10.3 standard errors" \
     "grep -q '^Halves: \*\*disagree\*\* (1 of 1 regions' '$tmp/outB/regions.md' && grep -q '^| whole face | 0.2 | 6.1 % | 0.6 | 6.1 % | +10.3 |' '$tmp/outB/regions.md'"
+# the blocks: without rear_records.csv (an older run) the per-face picture, said; with 16
+# records per class on a 4 x 4 lattice (one origin each, mass 1) the face's error is
+# sqrt(sum (w_k dep_k)^2 / 16) / 0.225 = 16.0 % and 2 x 2 blocks would have 31.9 %: one
+# block of 0.225 kg / 16 m^2
+check "no records: the per-face picture, said" "grep -q 'no rear_records.csv in every class' '$tmp/log' && [ ! -e '$tmp/out/rear_blocks.csv' ]"
+cp -r "$tmp/res" "$tmp/resR"
+for d in "$tmp"/resR/d*um; do
+    { echo '# records'; echo 'y,z,mass_kg,origProc,origId'
+      for i in $(seq 0 15); do echo "$(( i % 4 - 2 )).5,$(( i / 4 - 2 )).5,1,0,$i"; done; } > "$d/rear_records.csv"
+done
+"$C" --results "$tmp/resR" --out "$tmp/outR" --masses "$tmp/masses.csv" > "$tmp/logR" 2>&1
+check "records: exit 0, one block of 16 %" "[ $? -eq 0 ] && grep -q '^blocks: 1 x 1 of 4 x 4 m, the finest of 1 .. 24 whose deposit-weighted rms error is <= 30 %: 16 %' '$tmp/logR'"
+check "records: rear_blocks.csv holds the face's 0.225 kg on 16 m^2" \
+    "awk -F, 'NR == 3 { exit !(\$1 == -2 && \$2 == 2 && \$5 == 0.0140625 && \$6 > 0.1595 && \$6 < 0.1597 && \$7 == 48) }' '$tmp/outR/rear_blocks.csv'"
+command -v gnuplot > /dev/null || echo "skip records: the picture (no gnuplot)"
+command -v gnuplot > /dev/null && check "records: the picture of the blocks" "[ \"\$(head -c 4 '$tmp/outR/rear_deposit.png' | tail -c 3)\" = PNG ]"
+# a class with a rear deposit and no record of it: exit 2, named, nothing written
+cp -r "$tmp/resR" "$tmp/resE"; printf 'y,z,mass_kg,origProc,origId\n' > "$tmp/resE/d10um/rear_records.csv"
+"$C" --results "$tmp/resE" --out "$tmp/outE" --masses "$tmp/masses.csv" > /dev/null 2> "$tmp/err"
+check "a deposit without records: exit 2, named, nothing written" \
+    "[ $? -eq 2 ] && grep -q 'd10um: a rear deposit of 0.2 kg but no record of it in rear_records.csv' '$tmp/err' && [ ! -e '$tmp/outE' ]"
+printf 'y,z,mass_kg,origProc,origId\n0,0,nan,0,1\n' > "$tmp/resE/d10um/rear_records.csv"
+"$C" --results "$tmp/resE" --out "$tmp/outE" --masses "$tmp/masses.csv" > /dev/null 2> "$tmp/err"
+check "a record of mass nan: exit 2, file and line named" \
+    "[ $? -eq 2 ] && grep -q 'd10um/rear_records.csv line 2: not y,z,mass_kg' '$tmp/err' && [ ! -e '$tmp/outE' ]"
 # bad inputs: exit 2, one line, nothing written
 bad() {  # bad TEXT args...
     local want=$1; shift

@@ -106,6 +106,10 @@ void swe_cli_parse(int argc, char **argv, swe_options *o)
                 o->window = v;
             else if (!strcmp(a, "--target"))
                 o->target = v;
+            else if (!strcmp(a, "--segments"))
+                o->segments = v;
+            else if (!strcmp(a, "--psd"))
+                o->psd = v;
             else
                 swe_cli_die(2, "%s: unknown option '%s' (see --help)", argv[1], a);
         } else

@@ -15,7 +15,7 @@ typedef struct {
     int has_spray;
     const char *mvd_s, *sg_s, *range_s, *freeze_s; /* as given, for the header */
     const char *masses, *classes, *weights, *table, *desc, *label, *outline, *kind, *window;
-    const char *from, *to, *target;
+    const char *from, *to, *target, *segments, *psd;
     const char **files;
     int nfiles;
 } swe_options;
@@ -45,7 +45,9 @@ int swe_cmd_regions(const swe_options *o);
 int swe_cmd_map(const swe_options *o);
 int swe_cmd_outline(const swe_options *o);
 int swe_cmd_rear_stats(const swe_options *o);
+int swe_cmd_rear_records(const swe_options *o);
 int swe_cmd_forces(const swe_options *o);
+int swe_cmd_spectrum(const swe_options *o);
 int swe_cmd_probes(const swe_options *o);
 int swe_cmd_errortime(const swe_options *o);
 /* the commands of swe_cmd_ladder.c (ladder-*, resolution, errortime-points,

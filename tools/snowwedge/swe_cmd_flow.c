@@ -85,6 +85,118 @@ int swe_cmd_forces(const swe_options *o)
     return 0;
 }
 
+/* one column of a table whose last "# Time ..." line names its columns */
+static size_t read_column(const char *path, const char *col, double **tp, double **xp)
+{
+    FILE *f = swe_cli_open(path);
+    static char line[1 << 16];
+    int c = -1;
+    size_t n = 0, cap = 4096;
+    double *t = malloc(cap * sizeof *t), *x = malloc(cap * sizeof *x);
+    if (!t || !x)
+        swe_cli_die(1, "out of memory");
+    for (long ln = 1; fgets(line, sizeof line, f); ln++) {
+        if (line[0] == '#') {
+            char *save = NULL, *w = strtok_r(line + 1, " \t\r\n", &save);
+            if (!w || strcmp(w, "Time"))
+                continue;
+            c = -1;
+            for (int k = 1; (w = strtok_r(NULL, " \t\r\n", &save)); k++)
+                if (!strcmp(w, col))
+                    c = k;
+            if (c < 0)
+                swe_cli_die(2, "%s: the header has no column '%s'", path, col);
+            continue;
+        }
+        if (c < 0)
+            continue;
+        char *save = NULL, *w = strtok_r(line, " \t\r\n", &save);
+        if (!w)
+            continue;
+        double v[2];
+        v[0] = swe_cli_number(path, w);
+        for (int k = 1; k <= c; k++)
+            if (!(w = strtok_r(NULL, " \t\r\n", &save)))
+                swe_cli_die(2, "%s line %ld: no column %d (%s)", path, ln, c + 1, col);
+        v[1] = swe_cli_number(path, w);
+        if (n == cap) {
+            cap *= 2;
+            double *g = realloc(t, cap * sizeof *t), *h = g ? realloc(x, cap * sizeof *x) : NULL;
+            if (!g || !h)
+                swe_cli_die(1, "out of memory");
+            t = g, x = h;
+        }
+        t[n] = v[0], x[n++] = v[1];
+    }
+    fclose(f);
+    if (c < 0)
+        swe_cli_die(2, "%s: no '# Time ...' header naming '%s'", path, col);
+    *tp = t, *xp = x;
+    return n;
+}
+
+int swe_cmd_spectrum(const swe_options *o)
+{
+    double a, b;
+    window_of(o, "spectrum", &a, &b);
+    if (o->nfiles < 2 || o->nfiles % 2)
+        swe_cli_die(2, "spectrum: give FILE COLUMN pairs (see --help)");
+    int k = 1;
+    if (o->segments) {
+        const double v = swe_cli_number("--segments", o->segments);
+        if (!(v >= 1 && v <= 1000 && v == floor(v)))
+            swe_cli_die(2, "--segments: '%s' is not a whole number 1 .. 1000", o->segments);
+        k = (int)v;
+    }
+    const int ns = o->nfiles / 2;
+    swe_spectrum *s = calloc((size_t)ns, sizeof *s);
+    if (!s)
+        swe_cli_die(1, "out of memory");
+    double dt = 0;
+    for (int i = 0; i < ns; i++) {
+        double *t, *x;
+        const char *path = o->files[2 * i], *col = o->files[2 * i + 1];
+        const size_t n = read_column(path, col, &t, &x);
+        char err[256];
+        if (swe_spectrum_welch(t, x, n, a, b, k, dt, &s[i], err, sizeof err))
+            swe_cli_die(2, "spectrum: %s %s: %s", path, col, err);
+        dt = s[i].dt; /* every signal on the first one's step */
+        double fp, fl, below;
+        swe_spectrum_peaks(&s[i], 0.1, &fp, &fl, &below);
+        printf("%s %s: rms %.4g; %d segment(s) of %.4g s, df %.3g Hz; peak %.1f Hz (St %.3f); "
+               "lowest peak with 10 %% of the variance %.1f Hz (St %.3f); below %.1f Hz %.0f %% "
+               "of the variance\n",
+               path, col, sqrt(s[i].var), s[i].nseg, (double)s[i].seglen * s[i].dt, s[i].df, fp,
+               fp * 0.12 / 19.444, fl, fl * 0.12 / 19.444, fp / 2, 100 * below);
+        free(t);
+        free(x);
+    }
+    if (o->psd) {
+        FILE *f = fopen(o->psd, "w");
+        if (!f)
+            swe_cli_die(1, "cannot write %s: %s", o->psd, strerror(errno));
+        fprintf(f, "f_Hz,St");
+        for (int i = 0; i < ns; i++)
+            fprintf(f, ",%s", o->files[2 * i + 1]);
+        fputc('\n', f);
+        size_t nf = s[0].nf;
+        for (int i = 1; i < ns; i++)
+            nf = s[i].nf < nf ? s[i].nf : nf;
+        for (size_t j = 0; j < nf; j++) {
+            fprintf(f, "%.6g,%.6g", (double)j * s[0].df, (double)j * s[0].df * 0.12 / 19.444);
+            for (int i = 0; i < ns; i++)
+                fprintf(f, ",%.6g", s[i].psd[j]);
+            fputc('\n', f);
+        }
+        if (fclose(f))
+            swe_cli_die(1, "cannot write %s: %s", o->psd, strerror(errno));
+    }
+    for (int i = 0; i < ns; i++)
+        swe_spectrum_free(&s[i]);
+    free(s);
+    return 0;
+}
+
 int swe_cmd_probes(const swe_options *o)
 {
     double a, b;

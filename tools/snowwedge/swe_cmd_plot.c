@@ -1,10 +1,12 @@
-/* swe_cmd_plot.c - snowwedge panels and compare: the rear-face maps side by
- * side on one colour scale (the script from swe_plot.h, drawn by gnuplot on
- * the PATH) and the gate comparison of tutorials/wedge (post/wedge-panels and
- * post/wedge-compare are their wrappers). Every output file is written to a
+/* swe_cmd_plot.c - snowwedge panels, compare and blocks: the rear-face maps
+ * side by side on one colour scale (the script from swe_plot.h, drawn by
+ * gnuplot on the PATH), the gate comparison of tutorials/wedge (post/wedge-panels
+ * and post/wedge-compare are their wrappers) and the composed rear face on the
+ * blocks its statistics hold (swe_blocks.h; post/wedge-compose). Every output file is written to a
  * temporary in its folder and renamed into place (common/swo_out.h) only when
  * the final name is absent or a regular file. --name NAME, first, sets the
  * prefix of the messages. */
+#include "swe_blocks.h"
 #include "swe_cli.h"
 #include "swe_plot.h"
 #include "swe_post.h"
@@ -469,15 +471,293 @@ static int compare(int argc, char **argv, int first)
     return 0;
 }
 
+/* ---- blocks ----------------------------------------------------------------------------- */
+static const char *blocks_help =
+    "%s - the composed rear face on blocks as coarse as its sampling error needs.\n"
+    "\n"
+    "Usage: %s --weights FILE [--target E] [--finest N] --csv OUT.csv\n"
+    "       [--out PNG --title TEXT] CLASS_DIR...\n"
+    "\n"
+    "  --weights FILE  the classes' weights (snowwedge weights: \"D w e0 e1\" per class)\n"
+    "  --target E      the deposit-weighted rms relative error the grid may have, a fraction\n"
+    "                  in (0, 1] (default 0.3)\n"
+    "  --finest N      the finest grid tried, N x N blocks, 1 .. 256 (default 24)\n"
+    "  --csv OUT.csv   per block y0,y1,z0,z1,deposit_kg_m2,rel_error,records after a '#' line\n"
+    "  --out PNG       the picture (gnuplot): the deposit per block, blocks whose error exceeds\n"
+    "                  2 E or without a parcel grey; each block's relative error\n"
+    "  --title TEXT    the picture's title (a literal \"\\n\" starts a new line)\n"
+    "  CLASS_DIR       a class's results, .../d<D>um: rear_records.csv (snowwedge rear-records),\n"
+    "                  deposit_per_patch.csv (its rear deposit [kg]), rear_deposit.csv (the\n"
+    "                  face's outline, the first class's)\n"
+    "The grid is the finest n in 1 .. N whose blocks' deposit-weighted rms relative error is\n"
+    "at most E (1 when none is); a block's error comes from the parcels' independent origins\n"
+    "(tools/snowwedge/swe_blocks.h). Prints one line: the grid, its error, the blocks' range.\n"
+    "Exit status 0 on success, 2 on bad usage or input, 1 when a file is unreadable or gnuplot\n"
+    "fails; nothing is written then.\n";
+
+/* a class's rear deposit [kg]: deposit_per_patch.csv's row "rear", third column */
+static double rear_deposit_kg(const char *dir)
+{
+    char path[4096];
+    snprintf(path, sizeof path, "%s/deposit_per_patch.csv", dir);
+    FILE *f = swe_cli_open(path);
+    char line[4096];
+    double v = NAN;
+    while (fgets(line, sizeof line, f))
+        if (!strncmp(line, "rear,", 5)) {
+            char *c = strchr(line + 5, ',');
+            if (c) {
+                char *e;
+                v = strtod(c + 1, &e);
+                if (e == c + 1 || (*e != ',' && *e != '\n' && *e))
+                    v = NAN;
+            }
+            break;
+        }
+    fclose(f);
+    if (!(v >= 0 && isfinite(v)))
+        die(2, "%s: no rear row with a deposit_kg >= 0", path);
+    return v;
+}
+
+/* a class's records (rear_records.csv) */
+static swe_record *read_class_records(const char *dir, size_t *count, double *mass)
+{
+    char path[4096];
+    snprintf(path, sizeof path, "%s/rear_records.csv", dir);
+    FILE *f = swe_cli_open(path);
+    size_t cap = 256, n = 0;
+    swe_record *r = malloc(cap * sizeof *r);
+    if (!r)
+        die(1, "out of memory");
+    char line[1024];
+    *mass = 0;
+    int header = 0;
+    for (int ln = 1; fgets(line, sizeof line, f); ln++) {
+        if (line[0] == '#' || line[0] == '\n')
+            continue;
+        if (!header) {
+            if (strncmp(line, "y,z,mass_kg,origProc,origId", 27))
+                die(2, "%s line %d: not the header y,z,mass_kg,origProc,origId", path, ln);
+            header = 1;
+            continue;
+        }
+        double y, z, m, p, id;
+        int used = 0;
+        if (sscanf(line, "%lf,%lf,%lf,%lf,%lf%n", &y, &z, &m, &p, &id, &used) != 5 ||
+            (line[used] && line[used] != '\n') || !isfinite(y) || !isfinite(z) || !(m >= 0) ||
+            !isfinite(m) || p != floor(p) || id != floor(id))
+            die(2, "%s line %d: not y,z,mass_kg,origProc,origId (finite numbers, mass >= 0, "
+                   "whole origins)", path, ln);
+        if (n == cap) {
+            cap *= 2;
+            swe_record *g = realloc(r, cap * sizeof *r);
+            if (!g)
+                die(1, "out of memory");
+            r = g;
+        }
+        r[n++] = (swe_record){y, z, m, (long)p, (long)id};
+        *mass += m;
+    }
+    fclose(f);
+    if (!header)
+        die(2, "%s: no header y,z,mass_kg,origProc,origId", path);
+    *count = n;
+    return r;
+}
+
+/* the class's diameter from its folder's name d<D>um (NULL when it is none) */
+static const char *class_of(const char *dir, char d[32])
+{
+    size_t len = strlen(dir);
+    while (len > 1 && dir[len - 1] == '/')
+        len--;
+    size_t b = len;
+    while (b > 0 && dir[b - 1] != '/')
+        b--;
+    const size_t k = len - b;
+    if (k < 4 || k > 30 || dir[b] != 'd' || strncmp(dir + len - 2, "um", 2))
+        return NULL;
+    for (size_t i = b + 1; i < len - 2; i++)
+        if (dir[i] < '0' || dir[i] > '9')
+            return NULL;
+    snprintf(d, 32, "%.*s", (int)(k - 3), dir + b + 1);
+    return d;
+}
+
+static int blocks(int argc, char **argv, int first)
+{
+    const char *weights = NULL, *csv = NULL, *png = NULL, *title = NULL;
+    double target = 0.3;
+    int finest = 24;
+    const char **dirs = calloc((size_t)argc, sizeof *dirs);
+    if (!dirs)
+        die(1, "out of memory");
+    int nd = 0;
+    for (int i = first; i < argc; i++) {
+        const char *a = argv[i];
+        if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
+            printf(blocks_help, prog, prog);
+            exit(0);
+        } else if (!strcmp(a, "--weights")) {
+            weights = value(argc, argv, i++, "a file");
+        } else if (!strcmp(a, "--csv")) {
+            csv = value(argc, argv, i++, "a file");
+        } else if (!strcmp(a, "--out")) {
+            png = value(argc, argv, i++, "a file");
+        } else if (!strcmp(a, "--title")) {
+            title = value(argc, argv, i++, "a text");
+        } else if (!strcmp(a, "--target")) {
+            const char *v = value(argc, argv, i++, "a fraction");
+            target = swe_cli_number("--target", v);
+            if (!(target > 0 && target <= 1))
+                die(2, "--target: '%s' is not in (0, 1]", v);
+        } else if (!strcmp(a, "--finest")) {
+            const char *v = value(argc, argv, i++, "a number of blocks");
+            const double f = swe_cli_number("--finest", v);
+            if (!(f >= 1 && f <= 256 && f == floor(f)))
+                die(2, "--finest: '%s' is not a whole number 1 .. 256", v);
+            finest = (int)f;
+        } else if (!strncmp(a, "--", 2)) {
+            die(2, "unknown option '%s' (see --help)", a);
+        } else {
+            dirs[nd++] = a;
+        }
+    }
+    if (!weights || !csv || nd < 1)
+        die(2, "--weights, --csv and at least one CLASS_DIR are required (see --help)");
+    if (png && !title)
+        die(2, "--out needs --title (see --help)");
+    file_check(csv);
+    if (png)
+        file_check(png);
+    if (png && !strcmp(png, csv))
+        die(2, "--out and --csv are the same file '%s'", csv);
+    enum { MAXC = 256 };
+    static char wd[MAXC][32];
+    static double ww[MAXC], we0[MAXC], we1[MAXC];
+    const int nw = swe_cli_read_weights(weights, wd, ww, we0, we1, MAXC);
+    swe_block_class *cl = calloc((size_t)nd, sizeof *cl);
+    if (!cl)
+        die(1, "out of memory");
+    double face = 0;
+    for (int k = 0; k < nd; k++) {
+        char d[32];
+        if (!class_of(dirs[k], d))
+            die(2, "'%s' is no class folder .../d<D>um", dirs[k]);
+        double w = NAN;
+        for (int i = 0; i < nw; i++)
+            if (!strcmp(wd[i], d))
+                w = ww[i];
+        if (isnan(w))
+            die(2, "'%s': class %s um has no weight in %s", dirs[k], d, weights);
+        double mass;
+        size_t n;
+        swe_record *r = read_class_records(dirs[k], &n, &mass);
+        const double dep = rear_deposit_kg(dirs[k]);
+        if (dep > 0 && !(mass > 0))
+            die(2, "%s: a rear deposit of %g kg but no record of it in rear_records.csv", dirs[k],
+                dep);
+        cl[k] = (swe_block_class){r, n, mass > 0 ? w * dep / mass : 0};
+        face += w * dep;
+    }
+    char path[4096], err[1024];
+    snprintf(path, sizeof path, "%s/rear_deposit.csv", dirs[0]);
+    double ol[4];
+    swe_cli_outline(path, ol);
+    int nb;
+    double rms;
+    if (swe_blocks_grid(cl, (size_t)nd, ol, finest, target, &nb, &rms, err, sizeof err))
+        die(2, "%s", err);
+    swe_block *b = malloc((size_t)nb * nb * sizeof *b);
+    if (!b)
+        die(1, "out of memory");
+    if (swe_blocks(cl, (size_t)nd, ol, nb, b, err, sizeof err))
+        die(2, "%s", err);
+    double lo = INFINITY, hi = 0, vmax = 0;
+    int grey = 0;
+    for (int i = 0; i < nb * nb; i++) {
+        if (b[i].records == 0 || b[i].rel > 2 * target) {
+            grey++;
+            continue;
+        }
+        lo = b[i].rel < lo ? b[i].rel : lo;
+        hi = b[i].rel > hi ? b[i].rel : hi;
+        vmax = b[i].deposit > vmax ? b[i].deposit : vmax;
+    }
+    /* the files: one set, written whole or not at all */
+    const swo_spec spec = {prog, "--csv", NULL, 0, 0};
+    if (swo_alloc(&spec, &live, err, sizeof err) != SWO_OK)
+        die(2, "%s", err);
+    const char *tcsv = swo_add(live, csv, err, sizeof err);
+    if (!tcsv)
+        die(swo_code(live), "%s", err);
+    FILE *f = fopen(tcsv, "w");
+    if (!f)
+        die(1, "cannot write '%s': %s", csv, strerror(errno));
+    fprintf(f, "# the composed rear deposit on %d x %d blocks: the finest grid of 1 .. %d whose "
+               "deposit-weighted rms relative error is at most %.3g (it is %.3g); the face %.6g kg\n"
+               "y0,y1,z0,z1,deposit_kg_m2,rel_error,records\n",
+            nb, nb, finest, target, rms, face);
+    for (int i = 0; i < nb * nb; i++)
+        fprintf(f, "%.6g,%.6g,%.6g,%.6g,%.6g,%.4g,%ld\n", b[i].y0, b[i].y1, b[i].z0, b[i].z1,
+                b[i].deposit, b[i].rel, b[i].records);
+    if (fclose(f))
+        die(1, "cannot write '%s': %s", csv, strerror(errno));
+    if (chmod(tcsv, 0644))
+        die(1, "cannot write '%s': %s", csv, strerror(errno));
+    if (png) {
+        const char *tpng = swo_add(live, png, err, sizeof err);
+        if (!tpng)
+            die(swo_code(live), "%s", err);
+        const swe_plot_blocks p = {title, tcsv, nb, target, rms, vmax, {ol[0], ol[1], ol[2], ol[3]}};
+        char *script = NULL;
+        size_t len = 0;
+        FILE *s = open_memstream(&script, &len);
+        if (!s)
+            die(1, "out of memory");
+        const int rc = swe_plot_blocks_script(s, &p, tpng, err, sizeof err);
+        if (fclose(s) || rc) {
+            free(script);
+            die(rc ? 2 : 1, "%s", rc ? err : "out of memory");
+        }
+        const int grc = gnuplot(script, len);
+        free(script);
+        if (grc)
+            die(1, "gnuplot failed");
+        if (chmod(tpng, 0644))
+            die(1, "cannot write '%s': %s", png, strerror(errno));
+    }
+    if (swo_commit(live, err, sizeof err) != SWO_OK)
+        die(swo_code(live), "%s", err);
+    swo_free(live);
+    live = NULL;
+    printf("blocks: %d x %d of %.3g x %.3g m, the finest of 1 .. %d whose deposit-weighted rms "
+           "error is <= %.0f %%: %.0f %%; ",
+           nb, nb, (ol[1] - ol[0]) / nb, (ol[3] - ol[2]) / nb, finest, 100 * target, 100 * rms);
+    if (grey < nb * nb)
+        printf("block errors %.0f .. %.0f %%", 100 * lo, 100 * hi);
+    printf("%s%d block(s) grey (error > %.0f %% or no parcel); face %.4g kg\n",
+           grey < nb * nb ? "; " : "", grey, 200 * target, face);
+    for (int k = 0; k < nd; k++)
+        free((void *)cl[k].rec);
+    free(cl);
+    free(b);
+    free(dirs);
+    return 0;
+}
+
 int swe_cmd_plot(int argc, char **argv)
 {
-    const int is_panels = !strcmp(argv[1], "panels");
-    if (!is_panels && strcmp(argv[1], "compare"))
+    const int is_panels = !strcmp(argv[1], "panels"), is_blocks = !strcmp(argv[1], "blocks");
+    if (!is_panels && !is_blocks && strcmp(argv[1], "compare"))
         return -1;
-    prog = is_panels ? "snowwedge panels" : "snowwedge compare";
+    prog = is_panels ? "snowwedge panels" : is_blocks ? "snowwedge blocks" : "snowwedge compare";
     int first = 2;
     if (argc > 3 && !strcmp(argv[2], "--name") && argv[3][0])
         prog = argv[3], first = 4;
     swo_signals_on(); /* interrupted, no temporary is left behind */
+    if (is_blocks)
+        return blocks(argc, argv, first);
     return is_panels ? panels(argc, argv, first) : compare(argc, argv, first);
 }

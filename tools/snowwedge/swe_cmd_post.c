@@ -499,6 +499,28 @@ static int rear_table(const post_opts *o)
     return 0;
 }
 
+/* ---- rear-records: the window's records of the rear face, for the blocks ------------ */
+static int rear_records_cmd(const post_opts *o)
+{
+    need(o->cloud, "--cloud", "rear-records");
+    char t[3][64];
+    if (o->window && split_times(o->window, t) != 3)
+        die(2, "rear-records: --window '%s' is not T0,TH,T1", o->window);
+    glob_t g = {0};
+    rear_records(o->cloud, &g);
+    if (!g.gl_pathc)
+        die(1, "no rear-face records postProcessing/lagrangian/%s/snowWallSticks/*/rear.post or "
+               "rearImpacts/*/rear.post", o->cloud);
+    swe_options s = {0};
+    s.files = (const char **)g.gl_pathv;
+    s.nfiles = (int)g.gl_pathc;
+    s.from = o->window ? t[0] : "-1";
+    s.to = o->window ? t[2] : "1e30";
+    const int rc = swe_cmd_rear_records(&s);
+    globfree(&g);
+    return rc;
+}
+
 /* ---- convergence: convergence.md up to the flow's forces --------------------------- */
 /* the solver's time steps over the window T0 < t <= T1 */
 static void flow_steps(const char *log, double a, double b)
@@ -1266,6 +1288,7 @@ int swe_cmd_post(int argc, char **argv)
                 {"map-max", map_max},
                 {"cloud-log", cloud_log},     {"balance", balance},
                 {"convergence", convergence}, {"rear-table", rear_table},
+                {"rear-records", rear_records_cmd},
                 {"capture", capture},         {"fill", fill},
                 {"cost", cost},               {"gates", gates},
                 {"dispersion", dispersion},

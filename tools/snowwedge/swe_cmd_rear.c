@@ -1,5 +1,6 @@
-/* swe_cmd_rear.c - snowwedge outline and rear-stats: the rear face's outline
- * and its records' regions and effective sample sizes (swe_stats.h). */
+/* swe_cmd_rear.c - snowwedge outline, rear-stats and rear-records: the rear
+ * face's outline, its records' regions and effective sample sizes
+ * (swe_stats.h), and the records themselves (for the blocks of swe_blocks.h). */
 #include "swe_cli.h"
 
 #include "swe_signal.h"
@@ -89,23 +90,18 @@ int swe_cmd_outline(const swe_options *o)
 
 /* ---- rear-face records ------------------------------------------------------------ */
 
-int swe_cmd_rear_stats(const swe_options *o)
+/* the records of the files (postProcessing's rear.post of a cloud function:
+   Time, position, origProc, origId, nParticle, d, rho) with ta < Time <= tb */
+static swe_record *read_records(const char *const *files, int nfiles, double ta, double tb,
+                                size_t *count)
 {
-    swe_cli_need("--label", o->label, "rear-stats");
-    swe_cli_need("--from", o->from, "rear-stats");
-    swe_cli_need("--to", o->to, "rear-stats");
-    swe_cli_need("--outline", o->outline, "rear-stats");
-    swe_cli_need("--kind", o->kind, "rear-stats");
-    const double ta = swe_cli_number("--from", o->from), tb = swe_cli_number("--to", o->to);
-    double ol[4];
-    swe_cli_outline(o->outline, ol);
     size_t cap = 4096, n = 0;
     swe_record *rec = malloc(cap * sizeof *rec);
     if (!rec)
         swe_cli_die(1, "out of memory");
     static char line[1 << 16];
-    for (int fi = 0; fi < o->nfiles; fi++) {
-        FILE *f = swe_cli_open(o->files[fi]);
+    for (int fi = 0; fi < nfiles; fi++) {
+        FILE *f = swe_cli_open(files[fi]);
         enum { T, Y, Z, P, I, N, D, R, NCOL };
         static const char *want[NCOL] = {"Time", "position1", "position2", "origProc",
                                          "origId", "nParticle", "d", "rho"};
@@ -126,7 +122,7 @@ int swe_cmd_rear_stats(const swe_options *o)
                             if (!strcmp(tok[j], want[k]))
                                 col[k] = j - 1;
                         if (col[k] < 0)
-                            swe_cli_die(2, "%s: the header has no column %s", o->files[fi], want[k]);
+                            swe_cli_die(2, "%s: the header has no column %s", files[fi], want[k]);
                     }
                     have = 1;
                 }
@@ -135,12 +131,12 @@ int swe_cmd_rear_stats(const swe_options *o)
             if (!nt)
                 continue;
             if (!have)
-                swe_cli_die(2, "%s line %d: a record before the header", o->files[fi], ln);
+                swe_cli_die(2, "%s line %d: a record before the header", files[fi], ln);
             double v[NCOL];
             for (int k = 0; k < NCOL; k++) {
                 if (col[k] >= nt)
-                    swe_cli_die(2, "%s line %d: %d columns, the header names more", o->files[fi], ln, nt);
-                v[k] = swe_cli_number(o->files[fi], tok[col[k]]);
+                    swe_cli_die(2, "%s line %d: %d columns, the header names more", files[fi], ln, nt);
+                v[k] = swe_cli_number(files[fi], tok[col[k]]);
             }
             if (!(v[T] > ta + 1e-12 && v[T] <= tb + 1e-12))
                 continue;
@@ -156,6 +152,40 @@ int swe_cmd_rear_stats(const swe_options *o)
         }
         fclose(f);
     }
+    *count = n;
+    return rec;
+}
+
+int swe_cmd_rear_records(const swe_options *o)
+{
+    swe_cli_need("--from", o->from, "rear-records");
+    swe_cli_need("--to", o->to, "rear-records");
+    if (!o->nfiles)
+        swe_cli_die(2, "rear-records: give the records' files (see --help)");
+    const double ta = swe_cli_number("--from", o->from), tb = swe_cli_number("--to", o->to);
+    size_t n;
+    swe_record *rec = read_records(o->files, o->nfiles, ta, tb, &n);
+    printf("# the rear face's records with %s < Time <= %s s: position (y, z), mass "
+           "nParticle rho pi d^3 / 6, origin\ny,z,mass_kg,origProc,origId\n", o->from, o->to);
+    for (size_t i = 0; i < n; i++)
+        printf("%.10g,%.10g,%.10g,%ld,%ld\n", rec[i].y, rec[i].z, rec[i].mass, rec[i].proc,
+               rec[i].id);
+    free(rec);
+    return 0;
+}
+
+int swe_cmd_rear_stats(const swe_options *o)
+{
+    swe_cli_need("--label", o->label, "rear-stats");
+    swe_cli_need("--from", o->from, "rear-stats");
+    swe_cli_need("--to", o->to, "rear-stats");
+    swe_cli_need("--outline", o->outline, "rear-stats");
+    swe_cli_need("--kind", o->kind, "rear-stats");
+    const double ta = swe_cli_number("--from", o->from), tb = swe_cli_number("--to", o->to);
+    double ol[4];
+    swe_cli_outline(o->outline, ol);
+    size_t n;
+    swe_record *rec = read_records(o->files, o->nfiles, ta, tb, &n);
     swe_region_stats st[SWE_NREGION];
     char err[256];
     if (swe_rear_stats(rec, n, ol, st, err, sizeof err))

@@ -535,8 +535,10 @@ static const wrap_spec compose_spec = {
     "  --masses CSV   or the class masses directly: lines \"d_um,mass\" (normalized)\n"
     "  --sampled F    the share of each cloud's injection in the sampling window (default 1)\n"
     "  --label TEXT   the spray's description in the tables (default: from the options)\n"
-    "  --out DIR      classes.md, regions.md, rear_deposit.csv and .png (with gnuplot):\n"
-    "                 created, or an empty or earlier SnowWall output folder\n"
+    "  --out DIR      classes.md, regions.md, rear_deposit.csv (per face), rear_blocks.csv\n"
+    "                 and rear_deposit.png (with gnuplot; the blocks the classes' records\n"
+    "                 hold, each with its error: snowwedge blocks): created, or an empty\n"
+    "                 or earlier SnowWall output folder\n"
     "  --force        write into any other existing --out folder (nothing deleted)\n"
     "Exit status: 0 done, 1 a result missing or unreadable, 2 usage.\n",
     {{"--results", "res", NULL, NULL},

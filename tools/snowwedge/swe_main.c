@@ -26,7 +26,10 @@ const char *swe_cli_usage =
 "    snowwedge outline MAP.csv\n"
 "    snowwedge rear-stats --label TEXT --from TA --to TB --outline MAP.csv\n"
 "                         --kind sticks|impacts [RECORDS.post...]\n"
+"    snowwedge blocks --weights FILE [--target E] [--finest N] --csv OUT.csv\n"
+"                     [--out PNG --title TEXT] CLASS_DIR...\n"
 "    snowwedge forces --window T0,T1 COEFFICIENT.dat\n"
+"    snowwedge spectrum --window T0,T1 [--segments K] [--psd OUT.csv] FILE COLUMN...\n"
 "    snowwedge probes --window T0,T1 PROBES_U\n"
 "    snowwedge errortime [--target P] POINTS\n"
 "    snowwedge ladder-level --name NAME RUN\n"
@@ -50,6 +53,7 @@ const char *swe_cli_usage =
 "    snowwedge cloud-log --cloud C --log LOG\n"
 "    snowwedge balance --cloud C --log LOG [--gate G]\n"
 "    snowwedge rear-table --cloud C --file MAP.csv [--window T0,TH,T1]\n"
+"    snowwedge rear-records --cloud C [--window T0,TH,T1]\n"
 "    snowwedge convergence --cloud C --log LOG --window T0,TH,T1 --file STATS.md [--gate G]\n"
 "                          [--threshold T]\n"
 "    snowwedge time-dir --file NAME [--time T] PARENT\n"
@@ -149,10 +153,31 @@ const char *swe_cli_usage =
 "             position2) origProc origId nParticle d rho), their independent\n"
 "             origins, mass (nParticle rho pi d^3 / 6), effective sample size\n"
 "             n_eff = (sum_a W_a)^2 / sum_a W_a^2 and error 1/sqrt(n_eff).\n"
+
+"    blocks   the composed rear face on n x n blocks as coarse as its sampling\n"
+"             error needs (tools/snowwedge/swe_blocks.h): every CLASS_DIR\n"
+"             (.../d<D>um, its weight in --weights) holds rear_records.csv,\n"
+"             deposit_per_patch.csv (its rear deposit) and rear_deposit.csv (the\n"
+"             face's outline). n is the finest of 1 .. N (--finest, default 24)\n"
+"             whose deposit-weighted rms relative error of the blocks is at most\n"
+"             E (--target, a fraction, default 0.3); per block the deposit\n"
+"             [kg/m^2], its relative error (sum_k D_kb^2 / n_eff_kb, by origin)\n"
+"             and records into --csv; with --out the picture (gnuplot): the\n"
+"             deposit per block, blocks above 2 E or without a parcel grey, and\n"
+"             each block's error. Prints one line: the grid and its error.\n"
 "    forces   over T0 < t <= T1 of forceCoeffs' table: mean Cd, rms and\n"
 "             dominant frequency of Cs and Cl (the largest peak of the transform\n"
 "             on the uneven samples, 2/W .. 300 Hz in steps of 1/(4W)) and their\n"
 "             Strouhal numbers f H / U (H 0.12 m, U 19.444 m/s); one line.\n"
+"    spectrum  the power spectral density of each FILE COLUMN pair (a table\n"
+"             whose last '# Time ...' line names its columns: forceCoeffs'\n"
+"             coefficient.dat, a surfaceFieldValue.dat) over T0 .. T1 by Welch's\n"
+"             method (swe_signal.h): the samples interpolated onto the first\n"
+"             signal's median step, K half-overlapping Hann segments (default 1);\n"
+"             per signal one line: rms, resolution df, the largest peak (Hz,\n"
+"             Strouhal number f H / U with H 0.12 m, U 19.444 m/s), the lowest\n"
+"             peak holding 10 % of the variance and the variance below half\n"
+"             the peak's frequency. --psd: f_Hz,St and one density per signal.\n"
 "    probes   over T0 < t <= T1 of a probes table of U: mean and rms of Ux at\n"
 "             every probe; one line.\n"
 "    errortime  POINTS has one tab-separated line \"design run wall_s error\" per\n"
@@ -227,6 +252,9 @@ const char *swe_cli_usage =
 "             their relative errors, parcels, mean parcel mass, split.\n"
 "    rear-table  rear_statistics.md: rear-stats rows of the stick records (else\n"
 "             every impact) for the whole run or the window and its halves.\n"
+"    rear-records  the same records over the whole run or the window T0 .. T1 as\n"
+"             CSV y,z,mass_kg,origProc,origId after a '#' line (the mass\n"
+"             nParticle rho pi d^3 / 6): a class's rear_records.csv for blocks.\n"
 "    convergence  convergence.md up to the rows of its regions: per patch the impacts and\n"
 "             sticks of the window, the deposits of the window and of the\n"
 "             halves x2, their difference about their mean and the Poisson\n"
@@ -445,6 +473,8 @@ int main(int argc, char **argv)
         rc = swe_cmd_rear_stats(&o);
     else if (!strcmp(argv[1], "forces"))
         rc = swe_cmd_forces(&o);
+    else if (!strcmp(argv[1], "spectrum"))
+        rc = swe_cmd_spectrum(&o);
     else if (!strcmp(argv[1], "probes"))
         rc = swe_cmd_probes(&o);
     else if (!strcmp(argv[1], "errortime"))

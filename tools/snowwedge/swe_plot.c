@@ -282,3 +282,81 @@ int swe_plot_map_max(const char *const *maps, int n, double *vmax, char *err, si
     *vmax = m;
     return 0;
 }
+
+int swe_plot_blocks_script(FILE *out, const swe_plot_blocks *p, const char *png, char *err,
+                           size_t errlen)
+{
+    int width, height, lines;
+    swe_plot_size(2, 0, &width, &height);
+    char *title = swe_plot_wrap(p->title, (width - 40) * 2 / 15, &lines);
+    swe_plot_size(2, lines + 1, &width, &height);
+    width += 160; /* room for the two colour scales' labels */
+    const double *o = p->outline, lim = 2 * p->target;
+    buf b = {0};
+    char t[512];
+    int newline = 0;
+    snprintf(t, sizeof t, "set terminal pngcairo size %d,%d font 'DejaVu Sans,11'\nset output ",
+             width, height);
+    PUT(&b, t);
+    newline |= put_sq(&b, png) < 0;
+    PUT(&b, "\nset multiplot layout 1,2 title ");
+    if (title)
+        put_dq(&b, title);
+    PUT(&b, "\nset size ratio -1\nset xrange [");
+    putf(&b, "%.6g", o[0]), PUT(&b, "-0.005:"), putf(&b, "%.6g", o[1]);
+    PUT(&b, "+0.005]; set yrange [");
+    putf(&b, "%.6g", o[2]), PUT(&b, "-0.005:"), putf(&b, "%.6g", o[3]);
+    PUT(&b, "+0.005]\nset xlabel 'y [m] (right = +y)'; set ylabel 'z [m]'\n"
+            "set datafile separator ','\nset object 1 rectangle from ");
+    putf(&b, "%.6g", o[0]), PUT(&b, ","), putf(&b, "%.6g", o[2]), PUT(&b, " to ");
+    putf(&b, "%.6g", o[1]), PUT(&b, ","), putf(&b, "%.6g", o[3]);
+    PUT(&b, " front fillstyle empty border lc rgb 'black' lw 2\n");
+    snprintf(t, sizeof t,
+             "set lmargin at screen 0.07; set rmargin at screen 0.37\n"
+             "set title \"deposit per block, %d x %d: the finest grid whose typical\\n"
+             "block's error (deposit-weighted rms) is <= %.0f %%: %.0f %%\\n"
+             "grey: error > %.0f %% or no parcel, no value shown\"\n",
+             p->nb, p->nb, 100 * p->target, 100 * p->rms, 100 * lim);
+    PUT(&b, t);
+    PUT(&b, "set cbrange [0:");
+    putf(&b, "%.6g", p->vmax > 0 ? p->vmax : 1);
+    PUT(&b, "]\nset cblabel 'deposit [kg/m^2]'\n"
+            "set palette defined (0 '#f7fbff', 0.15 '#c6dbef', 0.4 '#6baed6', 0.7 '#2171b5', "
+            "1 '#08306b')\nplot ");
+    newline |= put_sq(&b, p->csv) < 0;
+    snprintf(t, sizeof t,
+             " every ::1 using (($7 > 0 && $6 <= %.6g) ? ($1+$2)/2 : NaN):(($3+$4)/2):(($2-$1)/2):"
+             "(($4-$3)/2):5 with boxxyerror fs solid 1.0 noborder lc palette notitle, \\\n"
+             "     '' every ::1 using (($7 == 0 || $6 > %.6g) ? ($1+$2)/2 : NaN):(($3+$4)/2):"
+             "(($2-$1)/2):(($4-$3)/2) with boxxyerror fs solid 1.0 noborder lc rgb '#c8c8c8' "
+             "notitle\n",
+             lim, lim);
+    PUT(&b, t);
+    PUT(&b, "set lmargin at screen 0.57; set rmargin at screen 0.87\n"
+            "set title \"relative error of each block (1 sigma) [%]\\n"
+            "from the parcels' independent origins\"\n"
+            "set cbrange [0:100]; set cblabel 'relative error [%]'\n"
+            "set palette defined (0 '#ffffff', 0.3 '#fdd49e', 0.6 '#fc8d59', 1 '#b30000')\nplot ");
+    newline |= put_sq(&b, p->csv) < 0;
+    PUT(&b, " every ::1 using (($7 > 0) ? ($1+$2)/2 : NaN):(($3+$4)/2):(($2-$1)/2):"
+            "(($4-$3)/2):(100*$6 < 100 ? 100*$6 : 100) with boxxyerror fs solid 1.0 noborder "
+            "lc palette notitle, \\\n     '' every ::1 using (($7 == 0) ? ($1+$2)/2 : NaN):"
+            "(($3+$4)/2):(($2-$1)/2):(($4-$3)/2) with boxxyerror fs solid 1.0 noborder "
+            "lc rgb '#c8c8c8' notitle");
+    if (p->nb <= 8) {
+        PUT(&b, ", \\\n     '' every ::1 using (($1+$2)/2):(($3+$4)/2):($7 > 0 ? "
+                "sprintf('%.0f %%', 100*$6) : 'none') with labels notitle");
+    }
+    PUT(&b, "\nunset multiplot\n");
+    free(title);
+    int rc = 0;
+    if (!title || b.bad || newline) {
+        snprintf(err, errlen, newline ? "a file name holds a newline" : "out of memory");
+        rc = -1;
+    } else if (fwrite(b.s, 1, b.len, out) != b.len) {
+        snprintf(err, errlen, "cannot write the script");
+        rc = -1;
+    }
+    free(b.s);
+    return rc;
+}

@@ -49,4 +49,26 @@ int swe_plot_script(FILE *out, const swe_plot_panels *p, const char *png, char *
    or -1 with the unreadable map's path in err */
 int swe_plot_map_max(const char *const *maps, int n, double *vmax, char *err, size_t errlen);
 
+/* the picture of the rear face's blocks (swe_blocks.h): two panels, the
+   deposit per block on the colour scale 0 .. vmax (blocks without a record, or
+   whose relative error exceeds twice the target, in grey: no value shown) and
+   each block's relative error (1 sigma, per cent, on 0 .. 100 %), written in
+   the block when nb <= 8; the figure as two panels of swe_plot_size. The
+   blocks: a CSV with the columns y0,y1,z0,z1,deposit_kg_m2,rel_error,records
+   after '#' lines and one header line. */
+typedef struct {
+    const char *title;  /* the figure's */
+    const char *csv;    /* the blocks */
+    int nb;             /* blocks across */
+    double target;      /* the target error (a fraction) */
+    double rms;         /* the deposit-weighted rms error */
+    double vmax;        /* the largest block deposit */
+    double outline[4];  /* y0 y1 z0 z1 */
+} swe_plot_blocks;
+
+/* the gnuplot script of the blocks' picture into PNG; 0, or -1 with a message
+   in err (out of memory, a newline in a file name, a write error) */
+int swe_plot_blocks_script(FILE *out, const swe_plot_blocks *p, const char *png, char *err,
+                           size_t errlen);
+
 #endif
