@@ -363,13 +363,63 @@ static void blocks(void **st)
     assert_int_equal(swe_blocks_grid(&lc, 1, o, 24, NAN, &nb, &rms, err, sizeof err), SWE_EINVAL);
 }
 
+/* Welch's spectrum: a sine of 28 Hz and amplitude 2 plus one of 8 Hz and
+   amplitude 1 on uneven steps: the variance 2.5 kept within 3 %, the peak at
+   28 Hz and the lowest peak holding 10 % at 8 Hz within one bin; refusals */
+static void spectrum(void **st)
+{
+    (void)st;
+    enum { N = 6000 };
+    static double t[N], x[N];
+    double tt = 0;
+    for (int i = 0; i < N; i++) {
+        t[i] = tt;
+        x[i] = 2 * sin(2 * M_PI * 28 * tt) + sin(2 * M_PI * 8 * tt + 0.3) + 5;
+        tt += 1e-4 * (1 + 0.5 * sin(0.37 * i)); /* uneven, 0.5e-4 .. 1.5e-4 s */
+    }
+    swe_spectrum s;
+    char err[256];
+    assert_int_equal(swe_spectrum_welch(t, x, N, 0, t[N - 1], 1, 0, &s, err, sizeof err), 0);
+    assert_true(s.dt > 0.9e-4 && s.dt < 1.1e-4);
+    ASSERT_NEAR(s.var, 2.5, 0.03 * 2.5 * 1.5);
+    double fp, fl, below;
+    swe_spectrum_peaks(&s, 0.1, &fp, &fl, &below);
+    ASSERT_NEAR(fp, 28, s.df);
+    ASSERT_NEAR(fl, 8, s.df);
+    ASSERT_NEAR(below, 0.2, 0.05); /* the 8 Hz sine: 0.5 of 2.5 */
+    swe_spectrum_free(&s);
+    /* three segments: a coarser resolution, the same variance */
+    assert_int_equal(swe_spectrum_welch(t, x, N, 0, t[N - 1], 3, 0, &s, err, sizeof err), 0);
+    assert_int_equal(s.nseg, 3);
+    ASSERT_NEAR(s.var, 2.5, 0.1 * 2.5);
+    swe_spectrum_free(&s);
+    /* refusals, named */
+    assert_int_equal(swe_spectrum_welch(t, x, N, 1, 0.5, 1, 0, &s, err, sizeof err), SWE_EINVAL);
+    assert_non_null(strstr(err, "window"));
+    assert_int_equal(swe_spectrum_welch(t, x, N, 0, 2e-4, 1, 0, &s, err, sizeof err), SWE_EINVAL);
+    assert_non_null(strstr(err, "fewer than 8"));
+    assert_int_equal(swe_spectrum_welch(t, x, N, 0, t[N - 1], 0, 0, &s, err, sizeof err),
+                     SWE_EINVAL);
+    assert_int_equal(swe_spectrum_welch(t, x, 20, 0, 1, 5, 0, &s, err, sizeof err), SWE_EINVAL);
+    assert_non_null(strstr(err, "segment"));
+    x[7] = NAN;
+    assert_int_equal(swe_spectrum_welch(t, x, N, 0, t[N - 1], 1, 0, &s, err, sizeof err),
+                     SWE_EINVAL);
+    assert_non_null(strstr(err, "sample 8"));
+    x[7] = 0;
+    t[9] = t[8];
+    assert_int_equal(swe_spectrum_welch(t, x, N, 0, t[N - 1], 1, 0, &s, err, sizeof err),
+                     SWE_EINVAL);
+    assert_non_null(strstr(err, "do not increase"));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(distribution), cmocka_unit_test(classes),
         cmocka_unit_test(medians),      cmocka_unit_test(rear_regions),
         cmocka_unit_test(compose),      cmocka_unit_test(blocks),
-        cmocka_unit_test(spectral_peak),
+        cmocka_unit_test(spectral_peak), cmocka_unit_test(spectrum),
         cmocka_unit_test(time_for_error), cmocka_unit_test(bad_inputs),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
