@@ -37,6 +37,12 @@ check "ladder-level: window, Cp scale 1/(0.5 x 19.444^2), columns, spray, family
 check "ladder-rows: St 0.185 +- 0.12 / 19.444 / (0.4 sqrt(12))" "grep -qx 'St,A,full,-1,100,0.001,0.185,0.00445395,10,5' '$tmp/rows'"
 check "ladder-rows: the regions of the first table, se = value x error" "grep -qx 'edges-mvd20,A,full,-1,100,0.001,4e-05,2e-05,10,5' '$tmp/rows' && grep -qx 'centre-mvd8,A,full,-1,100,0.001,0,0,10,5' '$tmp/rows' && [ \$(grep -c -- '-mvd' '$tmp/rows') = 10 ]"
 check "ladder-rows: the classes' capture" "grep -qx 'capture-5um,A,full,-1,100,0.001,28,14,10,5' '$tmp/rows' && grep -qx 'capture-10um,A,full,-1,100,0.001,0,0,10,5' '$tmp/rows'"
+# a played-back flow: St of the solved library, its error the half-bin as a uniform error
+cp "$r/results/off/convergence.md" "$tmp/conv.md"
+echo 'The window...: side force Cs rms 0.02, peak 30.0 +- 5.0 Hz (Strouhal number of the solved flow = 0.185, +- 0.031); lift' >> "$r/results/off/convergence.md"
+"$S" ladder-rows --name A "$r" > "$tmp/rows"
+check "ladder-rows: St of the solved flow 0.185 +- 0.031 / sqrt(3)" "grep -qx 'St,A,full,-1,100,0.001,0.185,0.0178979,10,5' '$tmp/rows'"
+cp "$tmp/conv.md" "$r/results/off/convergence.md"
 sed -i '/^cells/d' "$r/results/level.txt"
 bad 1 "level.txt: no 'cells' line" ladder-level --name A "$r"
 bad 1 "no results/level.txt" ladder-rows --name A "$tmp"

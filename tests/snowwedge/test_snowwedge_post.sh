@@ -80,6 +80,20 @@ check "convergence: the halves x2, their difference, the Poisson error of 36 sti
 check "convergence: the parcel mass 100 / 50 kg and the time steps in the window" \
     "grep -q 'Parcel mass 2 kg (mean of the 50 injected)' '$tmp/conv' && grep -qx 'Time steps in the window: 2, mean deltaT 0.02 s, mean Courant number 0.2 (cell mean), largest 0.9.' '$tmp/conv'"
 
+# a played-back flow (the log's "Replay:" line): the spectrum of the solved library too;
+# Cs a sine of 30 Hz, Cd one of 10 Hz over 0.1 .. 0.3 s (resolution 5 Hz)
+mkdir -p "$c/postProcessing/forceCoeffs/0"
+awk 'BEGIN { pi = atan2(0, -1); print "# Time Cd Cs Cl"
+    for (i = 1; i <= 6000; i++) { t = i * 1e-4
+        printf "%.6g %.8g %.8g %.8g\n", t, 0.4 + 0.01 * sin(2 * pi * 10 * t), 0.02 * sin(2 * pi * 30 * t), 0.01 * sin(2 * pi * 60 * t) } }' \
+    > "$c/postProcessing/forceCoeffs/0/coefficient.dat"
+{ echo 'Replay: snapshots every 0.001 s from 0.1 s over 0.2 s (200 snapshots of 6(U p k omega nut phi)); the flow is solved until 0.3 s, then played back periodically'; cat "$c/log"; } > "$c/log.replay"
+(cd "$c" && "$S" convergence --cloud c --window 0.2,0.4,0.6 --log log.replay --file "$tmp/rs.md") > "$tmp/convr"
+check "convergence, replay: the solved library's spectrum, St 0.185 +- 0.015, Cd's mode 10 Hz" \
+    "grep -q 'library 0.1 .. 0.3 s played back with period 0.2 s, so its spectrum holds only multiples of 5 Hz' '$tmp/convr' && grep -q 'peak 30.0 +- 2.5 Hz (Strouhal number of the solved flow = 0.185, +- 0.015); lift Cl rms 0.00707, peak 60.0 Hz' '$tmp/convr' && grep -q \"the slowest mode with 10 % of Cd's variance 10.0 Hz (St 0.062): the library holds 2 of its periods.\" '$tmp/convr'"
+(cd "$c" && "$S" convergence --cloud c --gate off --window 0.2,0.4,0.6 --log log --file "$tmp/rs.md") > "$tmp/convn"
+check "convergence, no replay: the forces' line, no line of the library" "grep -q '^Forces on the wedge' '$tmp/convn' && ! grep -q 'solved flow of the library' '$tmp/convn'"
+rm -r "$c/postProcessing/forceCoeffs"
 # parcelSplitting split the cloud's parcels: no Poisson error of equal-mass parcels
 sed 's/^Evolving c$/Evolving c\nparcelSplitting c: 2 parcels split/' "$c/log" > "$c/log.split"
 (cd "$c" && "$S" convergence --cloud c --window 0.2,0.4,0.6 --log log.split --file "$tmp/rs.md") > "$tmp/convs"

@@ -48,6 +48,9 @@ int swe_cmd_rear_stats(const swe_options *o);
 int swe_cmd_rear_records(const swe_options *o);
 int swe_cmd_forces(const swe_options *o);
 int swe_cmd_spectrum(const swe_options *o);
+/* the line of convergence.md on the solved flow of a replay library a .. b
+   (period b - a): forceCoeffs' Cd mean, the spectra of Cd, Cs and Cl */
+int swe_forces_solved(const char *path, double a, double b, double period);
 int swe_cmd_probes(const swe_options *o);
 int swe_cmd_errortime(const swe_options *o);
 /* the commands of swe_cmd_ladder.c (ladder-*, resolution, errortime-points,

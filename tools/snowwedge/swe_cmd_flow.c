@@ -197,6 +197,57 @@ int swe_cmd_spectrum(const swe_options *o)
     return 0;
 }
 
+int swe_forces_solved(const char *path, double a, double b, double period)
+{
+    double *t = NULL, *x[3];
+    static const char *col[3] = {"Cd", "Cs", "Cl"};
+    size_t n = 0;
+    for (int k = 0; k < 3; k++) {
+        double *tk;
+        n = read_column(path, col[k], &tk, &x[k]);
+        if (k)
+            free(tk);
+        else
+            t = tk;
+    }
+    swe_spectrum s[3];
+    char err[256];
+    int bad = 0;
+    for (int k = 0; k < 3 && !bad; k++)
+        bad = swe_spectrum_welch(t, x[k], n, a, b, 1, k ? s[0].dt : 0, &s[k], err, sizeof err) != 0;
+    double mcd = 0;
+    size_t m = 0;
+    for (size_t i = 0; i < n; i++)
+        if (t[i] > a + 1e-12 && t[i] <= b + 1e-12)
+            mcd += x[0][i], m++;
+    free(t);
+    for (int k = 0; k < 3; k++)
+        free(x[k]);
+    if (bad) {
+        printf("The solved flow of the library %g .. %g s holds no spectrum (%s).\n", a, b, err);
+        return 0;
+    }
+    double fp[3], fl[3], below[3];
+    for (int k = 0; k < 3; k++)
+        swe_spectrum_peaks(&s[k], 0.1, &fp[k], &fl[k], &below[k]);
+    const double sc = 0.12 / 19.444, e = s[1].df / 2;
+    printf("The window's flow is the library %g .. %g s played back with period %g s, so its "
+           "spectrum holds only multiples of %.3g Hz. Over the solved flow of the library "
+           "(Welch, resolution %.3g Hz): mean Cd %.3f; side force Cs rms %.3g, peak %.1f +- %.1f "
+           "Hz (Strouhal number of the solved flow = %.3f, +- %.3f); lift Cl rms %.3g, peak %.1f Hz "
+           "(St %.3f); the slowest mode with 10 %% of Cd's variance %.1f Hz (St %.3f): the library "
+           "holds %.2g of its periods%s.\n",
+           a, b, period, 1 / period, s[1].df, m ? mcd / (double)m : 0, sqrt(s[1].var), fp[1], e,
+           fp[1] * sc, e * sc, sqrt(s[2].var), fp[2], fp[2] * sc, fl[0], fl[0] * sc,
+           (b - a) * fl[0],
+           fl[0] < 1.5 * s[0].df ? " (the lowest frequency the library resolves: a slower mode "
+                                   "cannot be told from it)"
+                                 : "");
+    for (int k = 0; k < 3; k++)
+        swe_spectrum_free(&s[k]);
+    return 0;
+}
+
 int swe_cmd_probes(const swe_options *o)
 {
     double a, b;

@@ -206,19 +206,35 @@ static int cmd_level(const opts *o)
     return 0;
 }
 
-/* the Strouhal number of convergence.md: on the first line with a
-   "(Strouhal number f H/U = X," its last X (empty: none) */
-static int strouhal(const char *path, char *st, size_t stlen)
+/* the Strouhal number of convergence.md: of the solved flow when the flow was
+   played back ("(Strouhal number of the solved flow = X, +- E)": X and E in
+   *se), else on the first line with a "(Strouhal number f H/U = X," its last X
+   (*se untouched); empty: none */
+static int strouhal(const char *path, char *st, size_t stlen, double *se)
 {
     char *t = slurp(path), *s = t;
     if (!t)
         return 1;
+    static const char solved[] = "(Strouhal number of the solved flow = ";
     static const char key[] = "(Strouhal number f H/U = ";
     int found = 0;
     st[0] = 0;
+    const char *p = strstr(t, solved);
+    if (p) {
+        const char *v = p + strlen(solved);
+        const size_t n = strspn(v, "0123456789.eE+-");
+        double e;
+        if (!strncmp(v + n, ", +- ", 5) && sscanf(v + n + 5, "%lf", &e) == 1) {
+            snprintf(st, stlen, "%.*s", (int)n, v);
+            /* the peak's half-bin as a uniform error: its standard deviation */
+            *se = e / sqrt(3);
+            free(t);
+            return !*st;
+        }
+    }
     for (char *l; !found && (l = next_line(&s));)
-        for (char *p = strstr(l, key); p; p = strstr(p + 1, key)) {
-            const char *v = p + strlen(key);
+        for (char *q = strstr(l, key); q; q = strstr(q + 1, key)) {
+            const char *v = q + strlen(key);
             const size_t n = strspn(v, "0123456789.eE+-");
             if (v[n] == ',') {
                 snprintf(st, stlen, "%.*s", (int)n, v);
@@ -261,9 +277,10 @@ static int cmd_rows(const opts *o)
     read_rung(d, name, &r);
     char path[4096], st[128];
     snprintf(path, sizeof path, "%s/results/%s/convergence.md", d, r.gate);
-    if (strouhal(path, st, sizeof st))
+    double st_se = swe_ladder_st_error(r.w0, r.w1);
+    if (strouhal(path, st, sizeof st, &st_se))
         swe_cli_die(1, "--run %s: no Strouhal number in %s", d, path);
-    printf("St,%s,%s,%.6g%s\n", r.pre, st, swe_ladder_st_error(r.w0, r.w1), r.post);
+    printf("St,%s,%s,%.6g%s\n", r.pre, st, st_se, r.post);
     /* the composed sprays: per region the deposit and its error */
     snprintf(path, sizeof path, "%s/results/compose/mvd*/regions.md", d);
     glob_t g;

@@ -548,6 +548,23 @@ static void flow_steps(const char *log, double a, double b)
                "mean), largest %.3g.\n", n, sdt / n, scm / n, mx);
 }
 
+/* the replay library of the solver log (its "Replay: snapshots every I s from A s
+   over P s" line): 1 with A and P, else 0 */
+static int replay_library(const char *log, double *a, double *p)
+{
+    FILE *f = fopen(log, "r");
+    if (!f)
+        return 0;
+    static char line[16384];
+    int found = 0;
+    double iv;
+    while (!found && fgets(line, sizeof line, f))
+        found = sscanf(line, "Replay: snapshots every %lf s from %lf s over %lf s", &iv, a, p) == 3 &&
+                *p > 0;
+    fclose(f);
+    return found;
+}
+
 /* the y+ line of convergence.md: per patch (in the order of the table) min / max /
    mean of the last row of the latest postProcessing/yPlus/<time>/yPlus.dat; nothing
    when there is none */
@@ -664,6 +681,12 @@ static int convergence(const post_opts *o)
         s.files = &fc;
         swe_cmd_forces(&s);
         fflush(stdout);
+        /* a played-back flow: its spectrum over the solved library too */
+        double ra, rp;
+        if (replay_library(o->log, &ra, &rp)) {
+            swe_forces_solved(fc, ra, ra + rp, rp);
+            fflush(stdout);
+        }
     }
     if (!stat(pu, &st) && S_ISREG(st.st_mode)) {
         s.files = &pu;
