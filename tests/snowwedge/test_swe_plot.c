@@ -242,6 +242,12 @@ static void blocks(void **st)
     assert_non_null(strstr(t, "plot 'b''s.csv' every ::1"));
     assert_non_null(strstr(t, "with labels notitle"));
     free(t);
+    /* no grid holds the target: said so */
+    p.nb = 1, p.rms = 0.32;
+    t = blocks_script(&p, "o.png", 0);
+    assert_non_null(strstr(t, "deposit per block, 1 x 1: no grid holds an error\\n<= 30 %; the whole face's is 32 %"));
+    free(t);
+    p.rms = 0.288;
     /* finer than 8 x 8: no numbers in the blocks (they would not fit) */
     p.nb = 9;
     t = blocks_script(&p, "o.png", 0);

@@ -101,6 +101,11 @@ check "records: rear_blocks.csv holds the face's 0.225 kg on 16 m^2" \
     "awk -F, 'NR == 3 { exit !(\$1 == -2 && \$2 == 2 && \$5 == 0.0140625 && \$6 > 0.1595 && \$6 < 0.1597 && \$7 == 48) }' '$tmp/outR/rear_blocks.csv'"
 command -v gnuplot > /dev/null || echo "skip records: the picture (no gnuplot)"
 command -v gnuplot > /dev/null && check "records: the picture of the blocks" "[ \"\$(head -c 4 '$tmp/outR/rear_deposit.png' | tail -c 3)\" = PNG ]"
+# fewer records: not even the whole face holds 30 %, said so
+cp -r "$tmp/resR" "$tmp/resF"
+for d in "$tmp"/resF/d*um; do sed -i '/,[4-9]$/d; /,1[0-5]$/d' "$d/rear_records.csv"; done
+"$C" --results "$tmp/resF" --out "$tmp/outF" --masses "$tmp/masses.csv" > "$tmp/logF" 2>&1
+check "4 records a class: one block, no grid within 30 %, said" "grep -q '^blocks: 1 x 1 of 4 x 4 m: no grid holds an error <= 30 %, the whole face.s is 32 %' '$tmp/logF' && grep -q '^# .*: no grid of 1 .. 24 holds' '$tmp/outF/rear_blocks.csv'"
 # a class with a rear deposit and no record of it: exit 2, named, nothing written
 cp -r "$tmp/resR" "$tmp/resE"; printf 'y,z,mass_kg,origProc,origId\n' > "$tmp/resE/d10um/rear_records.csv"
 "$C" --results "$tmp/resE" --out "$tmp/outE" --masses "$tmp/masses.csv" > /dev/null 2> "$tmp/err"

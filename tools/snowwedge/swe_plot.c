@@ -311,12 +311,20 @@ int swe_plot_blocks_script(FILE *out, const swe_plot_blocks *p, const char *png,
     putf(&b, "%.6g", o[0]), PUT(&b, ","), putf(&b, "%.6g", o[2]), PUT(&b, " to ");
     putf(&b, "%.6g", o[1]), PUT(&b, ","), putf(&b, "%.6g", o[3]);
     PUT(&b, " front fillstyle empty border lc rgb 'black' lw 2\n");
-    snprintf(t, sizeof t,
-             "set lmargin at screen 0.07; set rmargin at screen 0.37\n"
-             "set title \"deposit per block, %d x %d: the finest grid whose typical\\n"
-             "block's error (deposit-weighted rms) is <= %.0f %%: %.0f %%\\n"
-             "grey: error > %.0f %% or no parcel, no value shown\"\n",
-             p->nb, p->nb, 100 * p->target, 100 * p->rms, 100 * lim);
+    if (p->rms <= p->target)
+        snprintf(t, sizeof t,
+                 "set lmargin at screen 0.07; set rmargin at screen 0.37\n"
+                 "set title \"deposit per block, %d x %d: the finest grid whose typical\\n"
+                 "block's error (deposit-weighted rms) is <= %.0f %%: %.0f %%\\n"
+                 "grey: error > %.0f %% or no parcel, no value shown\"\n",
+                 p->nb, p->nb, 100 * p->target, 100 * p->rms, 100 * lim);
+    else
+        snprintf(t, sizeof t,
+                 "set lmargin at screen 0.07; set rmargin at screen 0.37\n"
+                 "set title \"deposit per block, %d x %d: no grid holds an error\\n"
+                 "<= %.0f %%; the whole face's is %.0f %%\\n"
+                 "grey: error > %.0f %% or no parcel, no value shown\"\n",
+                 p->nb, p->nb, 100 * p->target, 100 * p->rms, 100 * lim);
     PUT(&b, t);
     PUT(&b, "set cbrange [0:");
     putf(&b, "%.6g", p->vmax > 0 ? p->vmax : 1);
