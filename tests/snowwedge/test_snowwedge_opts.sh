@@ -49,6 +49,14 @@ refused() {  # refused MESSAGE ARGS...: exit 2, the one line, nothing on stdout
     check "allrun-options $*: exit 2, '$want'" \
         "[ $rc = 2 ] && [ ! -s '$tmp/o' ] && [ \"\$(cat '$tmp/e')\" = \"Allrun: \$want\" ]"
 }
+# -parcels K: the classes' factor K times (-test's 0.125 x 4), the spray's not; refusals
+opts -test -parcels 4 > "$tmp/o"
+check "allrun-options -test -parcels 4: class_factor 0.5, parcel_factor as the variant's" \
+    "grep -qx \"class_factor='0.5'\" '$tmp/o' && grep -q -- \"--class-factor '0.5'\" '$tmp/o' && [ \"\$(opts -test | grep '^parcel_factor=')\" = \"\$(grep '^parcel_factor=' '$tmp/o')\" ]"
+refused "-parcels needs a whole factor from 1 to 99, got '0'" -parcels 0
+refused "-parcels needs a whole factor from 1 to 99, got '100'" -parcels 100
+refused "-parcels needs a whole factor from 1 to 99, got ''" -parcels
+refused "-parcels multiplies the size classes of the transient route (not -steady)" -steady -parcels 2
 refused "-resume: no run to resume in $c (log.Allrun.args is missing: a run writes it when it starts)" -resume
 refused "-resume takes no other option: the run goes on with its own (log.Allrun.args)" -resume -test
 refused "-parallel 3: this machine has 2 processors (nproc); accepted: 1 to 2 (up to 8 with -oversubscribe)" -parallel 3

@@ -415,6 +415,11 @@ static int parse_loop(swe_allrun *o, int n, char *const *a, const char *case_dir
                 return fail(2, err, nerr, "-level needs a whole number from -3 to 3, got '%s'", v);
             copy(o->mesh_level, sizeof o->mesh_level, v);
             i++;
+        } else if (!strcmp(a[i], "-parcels")) {
+            if (!matches("^[1-9][0-9]?$", v))
+                return fail(2, err, nerr, "-parcels needs a whole factor from 1 to 99, got '%s'", v);
+            copy(o->parcels, sizeof o->parcels, v);
+            i++;
         } else if (!strcmp(a[i], "-parallel")) { /* digits only, at most 6 (no overflow) */
             if (!matches("^[1-9][0-9]{0,5}$", v))
                 return fail(2, err, nerr,
@@ -553,6 +558,13 @@ int swe_opts_parse(int nargs, char *const *argv, const char *case_dir, long ncpu
         (rc = variant(o, "classFactor", 0, o->class_factor, sizeof o->class_factor, err, nerr)) ||
         (rc = variant(o, "steadyFactor", 0, o->steady_factor, sizeof o->steady_factor, err, nerr)))
         return rc;
+    /* -parcels K: the size classes' parcels K times (the variant's classFactor x K) */
+    if (o->parcels[0] && strcmp(o->parcels, "1")) {
+        const double cf = strtod(o->class_factor, NULL) * strtod(o->parcels, NULL);
+        if (o->route[0] == 's')
+            return fail(2, err, nerr, "-parcels multiplies the size classes of the transient route (not -steady)");
+        snprintf(o->class_factor, sizeof o->class_factor, "%.10g", cf);
+    }
     /* -parallel N: at most nproc (-oversubscribe: 4 x) */
     const long np = strtol(o->nproc_run, NULL, 10), np_max = o->oversubscribe ? 4 * ncpu : ncpu;
     if (np > np_max && !o->oversubscribe)

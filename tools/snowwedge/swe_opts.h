@@ -46,6 +46,7 @@ typedef struct {
     int nargs;                   /* the options as -resume will read them (-ladder's file absolute) */
     char **args;
     char nproc_run[8], mesh_level[4], level[8], route[10], gate[12], checkpoint[64];
+    char parcels[4];             /* -parcels K: the size classes' parcels x K (1 .. 99) */
     int oversubscribe, compare, split, feedback, rebound, rough, replay, wake_source, full, halfstep;
     int refine_wake, estimate, rear_layers, sizes_given, ladder_given, mpi_oversubscribe;
     char sizes[SWE_OPTS_TEXT], dispersions[SWE_OPTS_TEXT], disp_main[64], disp_extra[SWE_OPTS_TEXT];
