@@ -17,7 +17,10 @@
 #    nan and 1e999 refused; -speedScale's bad factors and its use without -frozen
 #    refused;
 #  - memory: a mesh whose library (100 000 snapshots of U and p) is about twice the
-#    machine's MemAvailable: refused with the estimate before the first step, in seconds.
+#    machine's MemAvailable: refused with the estimate before the first step, in seconds;
+#    stored (store yes), streamed from disk instead;
+#  - streaming (stream yes): the played-back flow the in-memory one to the last bit, also
+#    resumed; stream yes without store and an unknown stream value refused.
 # About 20 s.
 set -euo pipefail
 # shellcheck source=common.sh
@@ -215,6 +218,28 @@ for stop in 0.03 0.01; do
         END { printf "resume at %s s: %d values, largest |U - U_whole| %.3g\n", s, n, m; exit !(n == 192 && m <= 1e-9) }' s="$stop" ||
         fail "stop $stop: U at 0.06 s is not the uninterrupted run's"
 done
+# streaming (stream yes): the snapshots read back from disk when played, two in memory:
+# U at 0.06 s the in-memory run's to the last bit, also resumed after the library
+c="$tmp/stream"
+resume_case "$c" 0.06
+foamDictionary -entry replay -set "{ start 0; period 0.02; interval 0.005; fields (U p phi); store yes; stream yes; }" \
+    "$c/system/controlDict" > /dev/null
+(cd "$c" && run log.run "$solver" -replay)
+grep -q '^Replay: the library is streamed: every snapshot is kept on disk only' "$c/log.run" || fail "stream: not announced"
+u_ascii "$c" 0.06 > "$tmp/u.stream"
+cmp -s "$tmp/u.whole" "$tmp/u.stream" || fail "stream: U at 0.06 s is not the in-memory run's to the last bit"
+rm -rf "$c"/0.0[3-6]*
+(cd "$c" && run log.run2 "$solver" -replay)
+grep -q '^Replay: resumed at 0.02 s: 4 of 4 snapshots read back' "$c/log.run2" || { tail -5 "$c/log.run2" >&2; fail "stream: not resumed"; }
+u_ascii "$c" 0.06 > "$tmp/u.stream2"
+cmp -s "$tmp/u.whole" "$tmp/u.stream2" || fail "stream: resumed, U at 0.06 s is not the in-memory run's"
+echo "stream: U at 0.06 s the in-memory run's to the last bit, also resumed at 0.02 s"
+for v in "stream yes;" "stream maybe; store yes;"; do
+    foamDictionary -entry replay -set "{ start 0; period 0.02; interval 0.005; fields (U p); $v }" \
+        "$c/system/controlDict" > /dev/null
+    case "$v" in *maybe*) want="replay: 'stream' must be auto, yes or no, got 'maybe'" ;; *) want="'stream yes' reads the snapshots back from disk: it needs 'store yes'" ;; esac
+    rm -rf "$c"/0.0*; expect_refusal "$c" "$want"
+done
 # refusals: a late start without store; a snapshot missing from the stored library
 c="$tmp/stop0.03"
 foamDictionary -entry replay -set "{ start 0; period 0.02; interval 0.005; fields (U p); }" \
@@ -292,4 +317,12 @@ foamDictionary -entry deltaT -set 0.001 "$c/system/controlDict" > /dev/null
 expect_refusal "$c" "replay: the library of 'period' 100 s / 'interval' 0.001 s = 100000 snapshots"
 grep -q "GB available (MemAvailable of /proc/meminfo)" "$c/log.run" || fail "memory: the error does not give the available memory"
 grep '^Replay: 100000 snapshots' "$c/log.run" || fail "memory: no estimate line before the refusal"
+# the same library stored (stream auto): streamed from disk instead of refused
+foamDictionary -entry replay -set "{ start 0; period 100; interval 0.001; fields (U p); store yes; }" \
+    "$c/system/controlDict" > /dev/null
+foamDictionary -entry endTime -set 0.003 "$c/system/controlDict" > /dev/null
+(cd "$c" && run log.run "$solver" -replay)
+grep -q '^Replay: the library is streamed: .*: the library does not fit in memory' "$c/log.run" || fail "memory, store yes: not streamed"
+[ -s "$c/replayLibrary/3/U" ] || fail "memory, store yes: the snapshots not on disk"
+echo "memory, store yes: streamed from disk"
 echo "PASS: replay set-up checks (estimate, time step, keys, memory at $n^3 cells)"

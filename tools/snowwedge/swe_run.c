@@ -150,7 +150,9 @@ int swe_check_classes(const char *sizes, const char *parcels, char *err, size_t 
  *                 only until the library is complete (replayStart + replayPeriod);
  *   the memory    2 kB per cell, the replay library (snapshots x cells x 10 values x
  *                 8 bytes x 1.1 for the boundaries: U p k omega nut, 7 a cell, and
- *                 phi, one a face, about 3 a cell) and 560 B per parcel, every parcel
+ *                 phi, one a face, about 3 a cell; streamed from disk, two snapshots in
+ *                 memory, when the flow, the library and the parcels would exceed 80 % of
+ *                 the available memory) and 560 B per parcel, every parcel
  *                 alive at once and a split one split to 1 + 4 F / 3 (F = 100),
  *                 at most 2e6 per cloud;
  *   the disk      4 writes of 20 values of 8 bytes per cell, the library, and 4 x 120
@@ -226,8 +228,12 @@ int swe_estimate(const swe_estimate_in *in, swe_estimate_out *o)
     o->steps = steps;
     o->flow_steps = fsteps;
     o->lib = lib;
-    o->mem_flow = cells * 2048 + lib;
     o->mem_parcels = (bspray + bcls + pwake) * 560;
+    /* a library that would take the flow and the parcels above 80 % of the memory is
+       streamed from its stored snapshots (Allrun: stream yes), two of them in memory */
+    o->streamed =
+        in->replay && in->avail >= 0 && cells * 2048 + lib + o->mem_parcels > 0.8 * in->avail;
+    o->mem_flow = cells * 2048 + (o->streamed ? 2 * lib / (in->replay_period / in->replay_interval) : lib);
     o->disk_fields = 4 * cells * 20 * 8 + lib;
     o->disk_parcels = (bspray + bcls + pwake) * (4 * 120 + 250);
     o->t_flow = tflow;
@@ -261,14 +267,15 @@ void swe_estimate_print(FILE *f, const swe_estimate_in *in, const swe_estimate_o
     gb(fr, sizeof fr, in->free_disk, "unknown");
     fprintf(f, "Allrun: estimate: %ld cells, %d clouds, %ld parcels injected (%ld in split classes); "
                "about %ld time steps (%ld with the flow solved); memory %.2g GB (flow %.2g GB incl. "
-               "a %.2g GB replay library, parcels at most %.2g GB), %s available; disk %.2g GB "
+               "%s%.2g GB replay library%s, parcels at most %.2g GB), %s available; disk %.2g GB "
                "(fields and the stored flow library %.2g GB, parcel records at most %.2g GB), %s "
                "free; time about %.2g min on %d process(es) (flow %.2g, particles %.2g min, and "
                "about 2 min of set-up and post-processing; scaled from the default run measured on "
                "this machine)\n",
             (long)o->cells, o->clouds, (long)o->parcels, (long)o->class_parcels, (long)o->steps,
-            (long)o->flow_steps, (o->mem_flow + o->mem_parcels) / GB, o->mem_flow / GB, o->lib / GB,
-            o->mem_parcels / GB, av, (o->disk_fields + o->disk_parcels) / GB, o->disk_fields / GB,
+            (long)o->flow_steps, (o->mem_flow + o->mem_parcels) / GB, o->mem_flow / GB,
+            o->streamed ? "two snapshots of a " : "a ", o->lib / GB,
+            o->streamed ? " streamed from disk: it does not fit" : "", o->mem_parcels / GB, av, (o->disk_fields + o->disk_parcels) / GB, o->disk_fields / GB,
             o->disk_parcels / GB, fr, (o->t_flow + o->t_parcels) / 60 + 2, in->np, o->t_flow / 60,
             o->t_parcels / 60);
 }
@@ -282,7 +289,7 @@ int swe_estimate_refuse(const swe_estimate_in *in, const swe_estimate_out *o, ch
         return fail(msg, n, 2,
                     "the flow and its replay library need about %.3g GB (%ld cells x 2 kB, "
                     "and %ld snapshots x %ld cells x 10 values x 8 bytes x 1.1), more than the %.3g "
-                    "GB available (MemAvailable): refused; use -coupled, a longer "
+                    "GB available (MemAvailable), even with the library streamed: refused; use -coupled, a longer "
                     "transient/replayInterval or a shorter replayPeriod, or a coarser mesh",
                     o->mem_flow / GB, (long)o->cells,
                     (long)(in->replay_period / in->replay_interval), (long)o->cells,

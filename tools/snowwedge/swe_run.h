@@ -66,6 +66,7 @@ typedef struct {
     int clouds;
     double mem_flow, lib, mem_parcels, disk_fields, disk_parcels;
     double t_flow, t_parcels;       /* s */
+    int streamed;                   /* the library above 80 % of avail: streamed from disk */
 } swe_estimate_out;
 
 /* the model (doc/reference/wedge-Allrun.md, "The estimate"); returns 0 */
