@@ -35,7 +35,8 @@ printf '0.4,0.8\t0.0052900377459\tA,full,-1,100,0.001\t,10,5\t20\tvariant coarse
 check "ladder-level: window, Cp scale 1/(0.5 x 19.444^2), columns, spray, family (rear_layers 0 when absent)" "cmp -s '$tmp/want' '$tmp/level'"
 "$S" ladder-rows --name A "$r" > "$tmp/rows"
 check "ladder-rows: St 0.185 +- 0.12 / 19.444 / (0.4 sqrt(12))" "grep -qx 'St,A,full,-1,100,0.001,0.185,0.00445395,10,5' '$tmp/rows'"
-check "ladder-rows: the regions of the first table, se = value x error" "grep -qx 'edges-mvd20,A,full,-1,100,0.001,4e-05,2e-05,10,5' '$tmp/rows' && grep -qx 'centre-mvd8,A,full,-1,100,0.001,0,0,10,5' '$tmp/rows' && [ \$(grep -c -- '-mvd' '$tmp/rows') = 10 ]"
+check "ladder-rows: the regions of the first table, se = value x error" "grep -qx 'edges-mvd20,A,full,-1,100,0.001,4e-05,2e-05,10,5' '$tmp/rows' && grep -qx 'centre-mvd8,A,full,-1,100,0.001,0,0,10,5' '$tmp/rows' && [ \$(grep -c -- '^[a-z]*-mvd' '$tmp/rows') = 12 ]"
+check "ladder-rows: the left/right ratio 1e-5 / 2e-5 = 0.5, se 0.5 sqrt(0.1^2 + 0.2^2)" "grep -qx 'lr-mvd20,A,full,-1,100,0.001,0.5,0.111803,10,5' '$tmp/rows'"
 check "ladder-rows: the classes' capture" "grep -qx 'capture-5um,A,full,-1,100,0.001,28,14,10,5' '$tmp/rows' && grep -qx 'capture-10um,A,full,-1,100,0.001,0,0,10,5' '$tmp/rows'"
 # a played-back flow: St of the solved library, its error the half-bin as a uniform error
 cp "$r/results/off/convergence.md" "$tmp/conv.md"

@@ -300,6 +300,7 @@ static int cmd_rows(const opts *o)
             static const char *tag[] = {"left", "right", "centre", "edges", "face"};
             int n = 0;
             char *s = t;
+            double lr[2][2] = {{NAN, NAN}, {NAN, NAN}}; /* left, right: value, relative error */
             for (char *l; (l = next_line(&s)) && strncmp(l, "## ", 3);) {
                 char *f[8];
                 const int nf = split(l, '|', f, 8);
@@ -308,6 +309,13 @@ static int cmd_rows(const opts *o)
                         char what[300];
                         snprintf(what, sizeof what, "%s-mvd%s", tag[k], q);
                         value_row(what, r.pre, nf > 2 ? f[2] : "", nf > 3 ? f[3] : "", r.post);
+                        if (k < 2 && nf > 3) {
+                            char vs[128], es[128];
+                            squeeze(f[2], " ", vs, sizeof vs);
+                            squeeze(f[3], " %", es, sizeof es);
+                            lr[k][0] = strtod(vs, NULL);
+                            lr[k][1] = (!strcmp(es, "-") || !*es) ? 0 : strtod(es, NULL) / 100;
+                        }
                         n++;
                     }
             }
@@ -315,6 +323,13 @@ static int cmd_rows(const opts *o)
             if (n != 5)
                 swe_cli_die(1, "--run %s: %s: not the five regions of wedge-compose", d,
                             g.gl_pathv[i]);
+            /* the left/right ratio of the two equal side regions; the regions are
+               disjoint, so their errors add in quadrature; none without snow on the right */
+            if (lr[1][0] > 0 && lr[0][0] >= 0) {
+                const double v = lr[0][0] / lr[1][0];
+                printf("lr-mvd%s,%s,%.6g,%.6g%s\n", q, r.pre, v,
+                       v * sqrt(lr[0][1] * lr[0][1] + lr[1][1] * lr[1][1]), r.post);
+            }
             ncomp++;
         }
         globfree(&g);
