@@ -90,7 +90,7 @@ awk 'BEGIN { pi = atan2(0, -1); print "# Time Cd Cs Cl"
 { echo 'Replay: snapshots every 0.001 s from 0.1 s over 0.2 s (200 snapshots of 6(U p k omega nut phi)); the flow is solved until 0.3 s, then played back periodically'; cat "$c/log"; } > "$c/log.replay"
 (cd "$c" && "$S" convergence --cloud c --window 0.2,0.4,0.6 --log log.replay --file "$tmp/rs.md") > "$tmp/convr"
 check "convergence, replay: the solved library's spectrum, St 0.185 +- 0.015, Cd's mode 10 Hz" \
-    "grep -q 'library 0.1 .. 0.3 s played back with period 0.2 s, so its spectrum holds only multiples of 5 Hz' '$tmp/convr' && grep -q 'peak 30.0 +- 2.5 Hz (Strouhal number of the solved flow = 0.185, +- 0.015); lift Cl rms 0.00707, peak 60.0 Hz' '$tmp/convr' && grep -q \"the slowest mode with 10 % of Cd's variance 10.0 Hz (St 0.062): the library holds 2 of its periods.\" '$tmp/convr'"
+    "grep -q 'library 0.1 .. 0.3 s played back with period 0.2 s, so its spectrum holds only multiples of 5 Hz' '$tmp/convr' && grep -q 'peak 30.0 +- 2.5 Hz (Strouhal number of the solved flow = 0.185, +- 0.015); lift Cl rms 0.00707, peak 60.0 Hz' '$tmp/convr' && grep -q \"the library holds 6 shedding periods (of the side force's peak); the slowest mode with 10 % of Cd's variance 10.0 Hz (St 0.062): the library holds 2 of its periods.\" '$tmp/convr'"
 (cd "$c" && "$S" convergence --cloud c --gate off --window 0.2,0.4,0.6 --log log --file "$tmp/rs.md") > "$tmp/convn"
 check "convergence, no replay: the forces' line, no line of the library" "grep -q '^Forces on the wedge' '$tmp/convn' && ! grep -q 'solved flow of the library' '$tmp/convn'"
 rm -r "$c/postProcessing/forceCoeffs"

@@ -235,11 +235,12 @@ int swe_forces_solved(const char *path, double a, double b, double period)
            "spectrum holds only multiples of %.3g Hz. Over the solved flow of the library "
            "(Welch, resolution %.3g Hz): mean Cd %.3f; side force Cs rms %.3g, peak %.1f +- %.1f "
            "Hz (Strouhal number of the solved flow = %.3f, +- %.3f); lift Cl rms %.3g, peak %.1f Hz "
-           "(St %.3f); the slowest mode with 10 %% of Cd's variance %.1f Hz (St %.3f): the library "
-           "holds %.2g of its periods%s.\n",
+           "(St %.3f); the library holds %.2g shedding periods (of the side force's peak); the "
+           "slowest mode with 10 %% of Cd's variance %.1f Hz (St %.3f): the library holds %.2g of "
+           "its periods%s.\n",
            a, b, period, 1 / period, s[1].df, m ? mcd / (double)m : 0, sqrt(s[1].var), fp[1], e,
-           fp[1] * sc, e * sc, sqrt(s[2].var), fp[2], fp[2] * sc, fl[0], fl[0] * sc,
-           (b - a) * fl[0],
+           fp[1] * sc, e * sc, sqrt(s[2].var), fp[2], fp[2] * sc, (b - a) * fp[1], fl[0],
+           fl[0] * sc, (b - a) * fl[0],
            fl[0] < 1.5 * s[0].df ? " (the lowest frequency the library resolves: a slower mode "
                                    "cannot be told from it)"
                                  : "");
