@@ -144,6 +144,26 @@ static void estimate_default(void **st)
     in.free_disk = 0.5e9; /* the fields and library 0.97 GB */
     assert_int_equal(swe_estimate_refuse(&in, &o, msg, sizeof msg), 2);
     assert_non_null(strstr(msg, "more than the 0.5 GB free"));
+    /* the flow, the library and the parcels above 80 % of 2 GB: the library streamed,
+       two of its 100 snapshots in memory; with 0.1 GB even that refused */
+    in = coarse_default();
+    in.avail = 2e9;
+    swe_estimate(&in, &o);
+    assert_int_equal(o.streamed, 1);
+    ASSERT_NEAR(o.mem_flow, 102568 * 2048 + 2 * o.lib / 100, 1);
+    out_open(&t);
+    swe_estimate_print(t.f, &in, &o);
+    s = out_close(&t);
+    assert_non_null(strstr(s, "incl. two snapshots of a 0.9 GB replay library streamed from disk: it does not fit,"));
+    free(s);
+    assert_int_equal(swe_estimate_refuse(&in, &o, msg, sizeof msg), 0);
+    in.avail = 1e8;
+    swe_estimate(&in, &o);
+    assert_int_equal(swe_estimate_refuse(&in, &o, msg, sizeof msg), 2);
+    assert_non_null(strstr(msg, "even with the library streamed"));
+    in.avail = 100e9; /* room for all: in memory */
+    swe_estimate(&in, &o);
+    assert_int_equal(o.streamed, 0);
     /* -halfstep: twice the steps */
     in = coarse_default();
     in.halfstep = 1;
