@@ -84,7 +84,8 @@ int swe_blocks(const swe_block_class *c, size_t nc, const double o[4], int nb, s
                       bj = cell_of((o[3] - r->z) / (o[3] - o[2]), nb);
             t[i] = (tagged){bj * nb + bi, r->proc, r->id, r->mass};
         }
-        qsort(t, c[k].n, sizeof *t, by_block_origin);
+        if (c[k].n)
+            qsort(t, c[k].n, sizeof *t, by_block_origin);
         for (int b = 0; b < nb * nb; b++)
             sum[b] = s2[b] = 0;
         for (size_t i = 0; i < c[k].n;) {
