@@ -69,7 +69,7 @@ fi
 say() { printf 'setup: %s\n' "$*"; }
 die() { printf 'setup: error: %s\n' "$*" >&2; exit 1; }
 
-c_pkgs=(build-essential cmake pkg-config libgsl-dev libcmocka-dev gnuplot-nox
+c_pkgs=(build-essential cmake pkg-config libgsl-dev libcmocka-dev gnuplot-nox universal-ctags
         libpng-dev libjpeg-dev)
 of_pkgs=(openfoam openfoam-examples openmpi-bin libopenmpi-dev dpkg-dev)
 # Code_Saturne 6.0 (tests/codesaturne): the solver, its headers, its Python
