@@ -479,6 +479,104 @@ static int variant(const swe_allrun *o, const char *key, int optional, char *out
     return 0;
 }
 
+/* the route's options: those of the transient route refused on the steady one, -rear-layers's
+ * default, the -dispersion list split into the main treatment and the others */
+static int route_options(swe_allrun *o, int replay_given, int checkpoint_given, char *err, size_t nerr)
+{
+    const int transient = !strcmp(o->route, "transient");
+    if (o->sizes_given && strcmp(o->sizes, "none") && !transient)
+        return fail(2, err, nerr, "-sizes needs the transient route (not -steady)");
+    if (o->wake_source && !strcmp(o->sizes, "none"))
+        return fail(2, err, nerr, "-wake-source releases the size classes in the wake: not with -sizes none");
+    if (!strcmp(o->sizes, "none"))
+        o->sizes[0] = '\0';
+    /* the options of the transient route only, in the order they have always been checked */
+    const int given[] = {o->feedback, o->rebound, o->rough, replay_given, o->wake_source,
+                         o->full,     o->halfstep, o->resume, checkpoint_given};
+    const char *name[] = {"feedback", "rebound", "rough", "replay", "wake-source", "full", "halfstep", "resume",
+                          "checkpoint"};
+    for (int i = 0; i < 9 && !transient; i++)
+        if (given[i] && !strcmp(name[i], "resume"))
+            return fail(2, err, nerr, "-resume: the steady route is not resumed (a few minutes: run it again)");
+        else if (given[i])
+            return fail(2, err, nerr, "-%s needs the transient route (not -steady)", name[i]);
+    if (!transient)
+        o->replay = 0;
+    if (o->rear_layers == 1 && !transient)
+        return fail(2, err, nerr,
+                    "-rear-layers needs the transient route (simpleFoam does not converge on the resolved rear face; "
+                    "the steady route keeps its wall function there)");
+    if (o->rear_layers < 0)
+        o->rear_layers = transient;
+    const size_t first = strcspn(o->dispersions, ",");
+    snprintf(o->disp_main, sizeof o->disp_main, "%.*s", (int)first, o->dispersions);
+    copy(o->disp_extra, sizeof o->disp_extra, o->dispersions[first] ? o->dispersions + first + 1 : "");
+    for (char *c = o->disp_extra; *c; c++)
+        if (*c == ',')
+            *c = ' ';
+    if (*o->disp_extra && !transient)
+        return fail(2, err, nerr, "several -dispersion treatments need the transient route (not -steady)");
+    return 0;
+}
+
+/* -parallel N against the machine's processors (nproc) and the mesh of the level (with -level
+ * and -refine-wake) against -parallel N */
+static int parallel_and_mesh(swe_allrun *o, long ncpu, char *err, size_t nerr)
+{
+    /* -parallel N: at most nproc (-oversubscribe: 4 x) */
+    const long np = strtol(o->nproc_run, NULL, 10), np_max = o->oversubscribe ? 4 * ncpu : ncpu;
+    if (np > np_max && !o->oversubscribe)
+        return fail(2, err, nerr,
+                    "-parallel %ld: this machine has %ld processors (nproc); accepted: 1 to %ld (up to %ld with "
+                    "-oversubscribe)",
+                    np, ncpu, np_max, 4 * ncpu);
+    if (np > np_max)
+        return fail(2, err, nerr, "-parallel %ld: accepted with -oversubscribe: 1 to %ld (4 x the %ld processors of nproc)",
+                    np, np_max, ncpu);
+    if (o->oversubscribe && np <= 1)
+        return fail(2, err, nerr, "-oversubscribe needs -parallel N with N > 1");
+    o->mpi_oversubscribe = np > ncpu;
+    /* the mesh of the level, -level and -refine-wake; -parallel N at most its cells along y */
+    swe_mesh m;
+    static const char *keys[] = {"nxUp", "nxBody", "nxDown", "nBody", "nOut"};
+    if (swe_mesh_parse(o->mesh, &m, err, nerr))
+        return 2;
+    for (int i = 0; i < 5; i++)
+        if (swe_mesh_get(&m, keys[i]) < 0)
+            return fail(2, err, nerr, "the mesh '%s' has no %s", o->mesh, keys[i]);
+    const int lv = atoi(o->mesh_level);
+    if (lv || o->refine_wake) {
+        swe_mesh_scale(&m, lv, o->refine_wake);
+        swe_mesh_format(&m, o->mesh, sizeof o->mesh);
+    }
+    o->ny = swe_mesh_ny(&m);
+    snprintf(o->level_scale, sizeof o->level_scale, "%.12g", swe_level_scale(lv));
+    if (np > o->ny)
+        return fail(2, err, nerr,
+                    "-parallel %ld: the %s mesh has %ld cells along y and every process needs a slab of at least one: "
+                    "accepted 1 to %ld",
+                    np, o->level, o->ny, o->ny);
+    return 0;
+}
+
+/* the regime map's slide length and v_t list (vtlist: comma-separated) */
+static int regime_map(swe_allrun *o, char *err, size_t nerr)
+{
+    char vt[1024];
+    swe_opts_entry("constant/gates/regime", "slideLength", o->slide, sizeof o->slide);
+    swe_opts_entry("constant/gates/regime", "vtTable", vt, sizeof vt);
+    size_t k = 0;
+    for (const char *p = vt; *p && k + 1 < sizeof o->vtlist; p++)
+        if (!strchr("()", *p) && (!strchr(" \t", *p) || (k && o->vtlist[k - 1] != ',')))
+            o->vtlist[k++] = strchr(" \t", *p) ? ',' : *p;
+    while (k && o->vtlist[k - 1] == ',')
+        k--;
+    o->vtlist[k] = '\0';
+    if (!*o->slide || !*o->vtlist)
+        return fail(2, err, nerr, "constant/gates/regime: slideLength and vtTable are required");
+    return 0;
+}
+
 int swe_opts_parse(int nargs, char *const *argv, const char *case_dir, long ncpu, swe_allrun *o, FILE *notes,
                    char *err, size_t nerr)
 {
@@ -519,39 +617,8 @@ int swe_opts_parse(int nargs, char *const *argv, const char *case_dir, long ncpu
             free(o->args[i + 1]);
             o->args[i + 1] = l;
         }
-    const int transient = !strcmp(o->route, "transient");
-    if (o->sizes_given && strcmp(o->sizes, "none") && !transient)
-        return fail(2, err, nerr, "-sizes needs the transient route (not -steady)");
-    if (o->wake_source && !strcmp(o->sizes, "none"))
-        return fail(2, err, nerr, "-wake-source releases the size classes in the wake: not with -sizes none");
-    if (!strcmp(o->sizes, "none"))
-        o->sizes[0] = '\0';
-    /* the options of the transient route only, in the order they have always been checked */
-    const int given[] = {o->feedback, o->rebound, o->rough, replay_given, o->wake_source,
-                         o->full,     o->halfstep, o->resume, checkpoint_given};
-    const char *name[] = {"feedback", "rebound", "rough", "replay", "wake-source", "full", "halfstep", "resume",
-                          "checkpoint"};
-    for (int i = 0; i < 9 && !transient; i++)
-        if (given[i] && !strcmp(name[i], "resume"))
-            return fail(2, err, nerr, "-resume: the steady route is not resumed (a few minutes: run it again)");
-        else if (given[i])
-            return fail(2, err, nerr, "-%s needs the transient route (not -steady)", name[i]);
-    if (!transient)
-        o->replay = 0;
-    if (o->rear_layers == 1 && !transient)
-        return fail(2, err, nerr,
-                    "-rear-layers needs the transient route (simpleFoam does not converge on the resolved rear face; "
-                    "the steady route keeps its wall function there)");
-    if (o->rear_layers < 0)
-        o->rear_layers = transient;
-    const size_t first = strcspn(o->dispersions, ",");
-    snprintf(o->disp_main, sizeof o->disp_main, "%.*s", (int)first, o->dispersions);
-    copy(o->disp_extra, sizeof o->disp_extra, o->dispersions[first] ? o->dispersions + first + 1 : "");
-    for (char *c = o->disp_extra; *c; c++)
-        if (*c == ',')
-            *c = ' ';
-    if (*o->disp_extra && !transient)
-        return fail(2, err, nerr, "several -dispersion treatments need the transient route (not -steady)");
+    if ((rc = route_options(o, replay_given, checkpoint_given, err, nerr)))
+        return rc;
     /* the variant's block: the mesh, the parcel factors, -rough's grid, the optional times */
     if ((rc = variant(o, "mesh", 0, o->mesh, sizeof o->mesh, err, nerr)) ||
         (rc = variant(o, "parcelFactor", 0, o->parcel_factor, sizeof o->parcel_factor, err, nerr)) ||
@@ -565,39 +632,8 @@ int swe_opts_parse(int nargs, char *const *argv, const char *case_dir, long ncpu
             return fail(2, err, nerr, "-parcels multiplies the size classes of the transient route (not -steady)");
         snprintf(o->class_factor, sizeof o->class_factor, "%.10g", cf);
     }
-    /* -parallel N: at most nproc (-oversubscribe: 4 x) */
-    const long np = strtol(o->nproc_run, NULL, 10), np_max = o->oversubscribe ? 4 * ncpu : ncpu;
-    if (np > np_max && !o->oversubscribe)
-        return fail(2, err, nerr,
-                    "-parallel %ld: this machine has %ld processors (nproc); accepted: 1 to %ld (up to %ld with "
-                    "-oversubscribe)",
-                    np, ncpu, np_max, 4 * ncpu);
-    if (np > np_max)
-        return fail(2, err, nerr, "-parallel %ld: accepted with -oversubscribe: 1 to %ld (4 x the %ld processors of nproc)",
-                    np, np_max, ncpu);
-    if (o->oversubscribe && np <= 1)
-        return fail(2, err, nerr, "-oversubscribe needs -parallel N with N > 1");
-    o->mpi_oversubscribe = np > ncpu;
-    /* the mesh of the level, -level and -refine-wake; -parallel N at most its cells along y */
-    swe_mesh m;
-    static const char *keys[] = {"nxUp", "nxBody", "nxDown", "nBody", "nOut"};
-    if (swe_mesh_parse(o->mesh, &m, err, nerr))
-        return 2;
-    for (int i = 0; i < 5; i++)
-        if (swe_mesh_get(&m, keys[i]) < 0)
-            return fail(2, err, nerr, "the mesh '%s' has no %s", o->mesh, keys[i]);
-    const int lv = atoi(o->mesh_level);
-    if (lv || o->refine_wake) {
-        swe_mesh_scale(&m, lv, o->refine_wake);
-        swe_mesh_format(&m, o->mesh, sizeof o->mesh);
-    }
-    o->ny = swe_mesh_ny(&m);
-    snprintf(o->level_scale, sizeof o->level_scale, "%.12g", swe_level_scale(lv));
-    if (np > o->ny)
-        return fail(2, err, nerr,
-                    "-parallel %ld: the %s mesh has %ld cells along y and every process needs a slab of at least one: "
-                    "accepted 1 to %ld",
-                    np, o->level, o->ny, o->ny);
+    if ((rc = parallel_and_mesh(o, ncpu, err, nerr)))
+        return rc;
     /* the default ladder: the one measured on the run's mesh family, when the case holds it */
     struct stat st;
     const char *def = o->rear_layers ? "constant/ladder-rear-layers.csv" : "constant/ladder.csv";
@@ -613,18 +649,8 @@ int swe_opts_parse(int nargs, char *const *argv, const char *case_dir, long ncpu
     variant(o, "replayStart", 1, o->replay_start, sizeof o->replay_start, err, nerr);
     variant(o, "replayPeriod", 1, o->replay_period, sizeof o->replay_period, err, nerr);
     /* the regime map's slide length and v_t list; the step the replay interval is checked against */
-    char vt[1024];
-    swe_opts_entry("constant/gates/regime", "slideLength", o->slide, sizeof o->slide);
-    swe_opts_entry("constant/gates/regime", "vtTable", vt, sizeof vt);
-    size_t k = 0;
-    for (const char *p = vt; *p && k + 1 < sizeof o->vtlist; p++)
-        if (!strchr("()", *p) && (!strchr(" \t", *p) || (k && o->vtlist[k - 1] != ',')))
-            o->vtlist[k++] = strchr(" \t", *p) ? ',' : *p;
-    while (k && o->vtlist[k - 1] == ',')
-        k--;
-    o->vtlist[k] = '\0';
-    if (!*o->slide || !*o->vtlist)
-        return fail(2, err, nerr, "constant/gates/regime: slideLength and vtTable are required");
+    if ((rc = regime_map(o, err, nerr)))
+        return rc;
     if (o->halfstep)
         copy(o->max_delta_t, sizeof o->max_delta_t, "5e-4");
     else
