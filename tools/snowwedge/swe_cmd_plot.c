@@ -585,84 +585,167 @@ static const char *class_of(const char *dir, char d[32])
     return d;
 }
 
-static int blocks(int argc, char **argv, int first)
+/* blocks' command line */
+typedef struct {
+    const char *weights, *csv, *png, *title;
+    double target;
+    int finest;
+    const char **dirs; /* the CLASS_DIRs, nd of them */
+    int nd;
+} blocks_opts;
+
+/* blocks' options read and checked (exits on --help and on bad usage) */
+static void blocks_parse(int argc, char **argv, int first, blocks_opts *o)
 {
-    const char *weights = NULL, *csv = NULL, *png = NULL, *title = NULL;
-    double target = 0.3;
-    int finest = 24;
-    const char **dirs = calloc((size_t)argc, sizeof *dirs);
-    if (!dirs)
+    o->dirs = calloc((size_t)argc, sizeof *o->dirs);
+    if (!o->dirs)
         die(1, "out of memory");
-    int nd = 0;
     for (int i = first; i < argc; i++) {
         const char *a = argv[i];
         if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
             printf(blocks_help, prog, prog);
             exit(0);
         } else if (!strcmp(a, "--weights")) {
-            weights = value(argc, argv, i++, "a file");
+            o->weights = value(argc, argv, i++, "a file");
         } else if (!strcmp(a, "--csv")) {
-            csv = value(argc, argv, i++, "a file");
+            o->csv = value(argc, argv, i++, "a file");
         } else if (!strcmp(a, "--out")) {
-            png = value(argc, argv, i++, "a file");
+            o->png = value(argc, argv, i++, "a file");
         } else if (!strcmp(a, "--title")) {
-            title = value(argc, argv, i++, "a text");
+            o->title = value(argc, argv, i++, "a text");
         } else if (!strcmp(a, "--target")) {
             const char *v = value(argc, argv, i++, "a fraction");
-            target = swe_cli_number("--target", v);
-            if (!(target > 0 && target <= 1))
+            o->target = swe_cli_number("--target", v);
+            if (!(o->target > 0 && o->target <= 1))
                 die(2, "--target: '%s' is not in (0, 1]", v);
         } else if (!strcmp(a, "--finest")) {
             const char *v = value(argc, argv, i++, "a number of blocks");
             const double f = swe_cli_number("--finest", v);
             if (!(f >= 1 && f <= 256 && f == floor(f)))
                 die(2, "--finest: '%s' is not a whole number 1 .. 256", v);
-            finest = (int)f;
+            o->finest = (int)f;
         } else if (!strncmp(a, "--", 2)) {
             die(2, "unknown option '%s' (see --help)", a);
         } else {
-            dirs[nd++] = a;
+            o->dirs[o->nd++] = a;
         }
     }
-    if (!weights || !csv || nd < 1)
+    if (!o->weights || !o->csv || o->nd < 1)
         die(2, "--weights, --csv and at least one CLASS_DIR are required (see --help)");
-    if (png && !title)
+    if (o->png && !o->title)
         die(2, "--out needs --title (see --help)");
-    file_check(csv);
-    if (png)
-        file_check(png);
-    if (png && !strcmp(png, csv))
-        die(2, "--out and --csv are the same file '%s'", csv);
+    file_check(o->csv);
+    if (o->png)
+        file_check(o->png);
+    if (o->png && !strcmp(o->png, o->csv))
+        die(2, "--out and --csv are the same file '%s'", o->csv);
+}
+
+/* every class's rear records, each weighted by its class's weight x rear deposit / the records'
+ * mass; the composed face's deposit [kg] in *face_kg (exits on bad input) */
+static swe_block_class *blocks_classes(const blocks_opts *o, double *face_kg)
+{
     enum { MAXC = 256 };
     static char wd[MAXC][32];
     static double ww[MAXC], we0[MAXC], we1[MAXC];
-    const int nw = swe_cli_read_weights(weights, wd, ww, we0, we1, MAXC);
-    swe_block_class *cl = calloc((size_t)nd, sizeof *cl);
+    const int nw = swe_cli_read_weights(o->weights, wd, ww, we0, we1, MAXC);
+    swe_block_class *cl = calloc((size_t)o->nd, sizeof *cl);
     if (!cl)
         die(1, "out of memory");
     double face = 0;
-    for (int k = 0; k < nd; k++) {
+    for (int k = 0; k < o->nd; k++) {
         char d[32];
-        if (!class_of(dirs[k], d))
-            die(2, "'%s' is no class folder .../d<D>um", dirs[k]);
+        if (!class_of(o->dirs[k], d))
+            die(2, "'%s' is no class folder .../d<D>um", o->dirs[k]);
         double w = NAN;
         for (int i = 0; i < nw; i++)
             if (!strcmp(wd[i], d))
                 w = ww[i];
         if (isnan(w))
-            die(2, "'%s': class %s um has no weight in %s", dirs[k], d, weights);
+            die(2, "'%s': class %s um has no weight in %s", o->dirs[k], d, o->weights);
         double mass;
         size_t n;
-        swe_record *r = read_class_records(dirs[k], &n, &mass);
-        const double dep = rear_deposit_kg(dirs[k]);
+        swe_record *r = read_class_records(o->dirs[k], &n, &mass);
+        const double dep = rear_deposit_kg(o->dirs[k]);
         if (dep > 0 && !(mass > 0))
-            die(2, "%s: a rear deposit of %g kg but no record of it in rear_records.csv", dirs[k],
+            die(2, "%s: a rear deposit of %g kg but no record of it in rear_records.csv", o->dirs[k],
                 dep);
         cl[k] = (swe_block_class){r, n, mass > 0 ? w * dep / mass : 0};
         face += w * dep;
     }
+    *face_kg = face;
+    return cl;
+}
+
+/* the blocks' table into tcsv, the output set's temporary of --csv: the '#' line with the grid
+ * and its error, a row per block (exits on a write error) */
+static void blocks_write_csv(const blocks_opts *o, const char *tcsv, const swe_block *b, int nb, double rms,
+                             double face)
+{
+    const char *csv = o->csv;
+    const int finest = o->finest;
+    const double target = o->target;
+    FILE *f = fopen(tcsv, "w");
+    if (!f)
+        die(1, "cannot write '%s': %s", csv, strerror(errno));
+    if (rms <= target)
+        fprintf(f, "# the composed rear deposit on %d x %d blocks: the finest grid of 1 .. %d whose "
+                   "deposit-weighted rms relative error is at most %.3g (it is %.3g); the face %.6g kg\n",
+                nb, nb, finest, target, rms, face);
+    else
+        fprintf(f, "# the composed rear deposit on %d x %d blocks: no grid of 1 .. %d holds a "
+                   "deposit-weighted rms relative error of at most %.3g (the whole face's is %.3g); "
+                   "the face %.6g kg\n",
+                nb, nb, finest, target, rms, face);
+    fprintf(f, "y0,y1,z0,z1,deposit_kg_m2,rel_error,records\n");
+    for (int i = 0; i < nb * nb; i++)
+        fprintf(f, "%.6g,%.6g,%.6g,%.6g,%.6g,%.4g,%ld\n", b[i].y0, b[i].y1, b[i].z0, b[i].z1,
+                b[i].deposit, b[i].rel, b[i].records);
+    if (fclose(f))
+        die(1, "cannot write '%s': %s", csv, strerror(errno));
+    if (chmod(tcsv, 0644))
+        die(1, "cannot write '%s': %s", csv, strerror(errno));
+}
+
+/* the picture of the blocks (--out) from the table tcsv, added to the output set (exits when
+ * gnuplot or a write fails) */
+static void blocks_picture(const blocks_opts *o, const char *tcsv, int nb, double rms, double vmax,
+                           const double ol[4])
+{
+    const char *png = o->png;
+    char err[1024];
+    const char *tpng = swo_add(live, png, err, sizeof err);
+    if (!tpng)
+        die(swo_code(live), "%s", err);
+    const swe_plot_blocks p = {o->title, tcsv, nb, o->target, rms, vmax, {ol[0], ol[1], ol[2], ol[3]}};
+    char *script = NULL;
+    size_t len = 0;
+    FILE *s = open_memstream(&script, &len);
+    if (!s)
+        die(1, "out of memory");
+    const int rc = swe_plot_blocks_script(s, &p, tpng, err, sizeof err);
+    if (fclose(s) || rc) {
+        free(script);
+        die(rc ? 2 : 1, "%s", rc ? err : "out of memory");
+    }
+    const int grc = gnuplot(script, len);
+    free(script);
+    if (grc)
+        die(1, "gnuplot failed");
+    if (chmod(tpng, 0644))
+        die(1, "cannot write '%s': %s", png, strerror(errno));
+}
+
+static int blocks(int argc, char **argv, int first)
+{
+    blocks_opts o = {NULL, NULL, NULL, NULL, 0.3, 24, NULL, 0};
+    blocks_parse(argc, argv, first, &o);
+    const double target = o.target;
+    const int finest = o.finest, nd = o.nd;
+    double face;
+    swe_block_class *cl = blocks_classes(&o, &face);
     char path[4096], err[1024];
-    snprintf(path, sizeof path, "%s/rear_deposit.csv", dirs[0]);
+    snprintf(path, sizeof path, "%s/rear_deposit.csv", o.dirs[0]);
     double ol[4];
     swe_cli_outline(path, ol);
     int nb;
@@ -689,51 +772,12 @@ static int blocks(int argc, char **argv, int first)
     const swo_spec spec = {prog, "--csv", NULL, 0, 0};
     if (swo_alloc(&spec, &live, err, sizeof err) != SWO_OK)
         die(2, "%s", err);
-    const char *tcsv = swo_add(live, csv, err, sizeof err);
+    const char *tcsv = swo_add(live, o.csv, err, sizeof err);
     if (!tcsv)
         die(swo_code(live), "%s", err);
-    FILE *f = fopen(tcsv, "w");
-    if (!f)
-        die(1, "cannot write '%s': %s", csv, strerror(errno));
-    if (rms <= target)
-        fprintf(f, "# the composed rear deposit on %d x %d blocks: the finest grid of 1 .. %d whose "
-                   "deposit-weighted rms relative error is at most %.3g (it is %.3g); the face %.6g kg\n",
-                nb, nb, finest, target, rms, face);
-    else
-        fprintf(f, "# the composed rear deposit on %d x %d blocks: no grid of 1 .. %d holds a "
-                   "deposit-weighted rms relative error of at most %.3g (the whole face's is %.3g); "
-                   "the face %.6g kg\n",
-                nb, nb, finest, target, rms, face);
-    fprintf(f, "y0,y1,z0,z1,deposit_kg_m2,rel_error,records\n");
-    for (int i = 0; i < nb * nb; i++)
-        fprintf(f, "%.6g,%.6g,%.6g,%.6g,%.6g,%.4g,%ld\n", b[i].y0, b[i].y1, b[i].z0, b[i].z1,
-                b[i].deposit, b[i].rel, b[i].records);
-    if (fclose(f))
-        die(1, "cannot write '%s': %s", csv, strerror(errno));
-    if (chmod(tcsv, 0644))
-        die(1, "cannot write '%s': %s", csv, strerror(errno));
-    if (png) {
-        const char *tpng = swo_add(live, png, err, sizeof err);
-        if (!tpng)
-            die(swo_code(live), "%s", err);
-        const swe_plot_blocks p = {title, tcsv, nb, target, rms, vmax, {ol[0], ol[1], ol[2], ol[3]}};
-        char *script = NULL;
-        size_t len = 0;
-        FILE *s = open_memstream(&script, &len);
-        if (!s)
-            die(1, "out of memory");
-        const int rc = swe_plot_blocks_script(s, &p, tpng, err, sizeof err);
-        if (fclose(s) || rc) {
-            free(script);
-            die(rc ? 2 : 1, "%s", rc ? err : "out of memory");
-        }
-        const int grc = gnuplot(script, len);
-        free(script);
-        if (grc)
-            die(1, "gnuplot failed");
-        if (chmod(tpng, 0644))
-            die(1, "cannot write '%s': %s", png, strerror(errno));
-    }
+    blocks_write_csv(&o, tcsv, b, nb, rms, face);
+    if (o.png)
+        blocks_picture(&o, tcsv, nb, rms, vmax, ol);
     if (swo_commit(live, err, sizeof err) != SWO_OK)
         die(swo_code(live), "%s", err);
     swo_free(live);
@@ -754,7 +798,7 @@ static int blocks(int argc, char **argv, int first)
         free((void *)cl[k].rec);
     free(cl);
     free(b);
-    free(dirs);
+    free(o.dirs);
     return 0;
 }
 
