@@ -166,92 +166,87 @@ static int finish_stdout(int rc)
     return rc;
 }
 
-int main(int argc, char **argv)
-{
-    if (argc < 2) {
-        fprintf(stderr, "snowphoto: missing command (compare or regions); see snowphoto --help\n");
-        return 2;
-    }
-    if (!strcmp(argv[1], "-h") || !strcmp(argv[1], "--help")) {
-        fputs(usage, stdout);
-        return finish_stdout(0);
-    }
-    const char *cmd = argv[1];
-    int is_compare = !strcmp(cmd, "compare"), is_regions = !strcmp(cmd, "regions");
-    if (!is_compare && !is_regions) {
-        fprintf(stderr, "snowphoto: unknown command '%s' (compare or regions); see snowphoto --help\n", cmd);
-        return 2;
-    }
+/* a command's options */
+typedef struct {
+    const char *cmd;           /* compare or regions */
+    int is_compare, is_regions;
     swi_config cfg;
-    swi_config_defaults(&cfg);
-    const char *photo_path = NULL, *sim_path = NULL, *out_path = NULL, *label = NULL;
-    const char *corners_arg = NULL;
-    int have_corners = 0;
-    double band = 0.1, hold = 0.3, parcel_mass = 0;
+    const char *photo_path, *sim_path, *out_path, *label;
+    const char *corners_arg;
+    int have_corners;
+    double band, hold, parcel_mass;
+} photo_opts;
+
+/* the command's options after argv[1] into o (its defaults set by the caller): 0, -1 when the
+ * help was printed, or the exit status of a usage error with its message printed */
+static int parse_options(int argc, char **argv, photo_opts *o)
+{
+    const char *cmd = o->cmd;
+    const int is_compare = o->is_compare, is_regions = o->is_regions;
     for (int i = 2; i < argc; i++) {
-        const char *o = argv[i];
-        if (!strcmp(o, "-h") || !strcmp(o, "--help")) {
+        const char *opt = argv[i];
+        if (!strcmp(opt, "-h") || !strcmp(opt, "--help")) {
             fputs(usage, stdout);
-            return finish_stdout(0);
+            return -1;
         }
         if (i + 1 >= argc) {
-            fprintf(stderr, "snowphoto: option '%s' unknown or missing its value; see snowphoto --help\n", o);
+            fprintf(stderr, "snowphoto: option '%s' unknown or missing its value; see snowphoto --help\n", opt);
             return 2;
         }
         const char *a = argv[++i];
         double d;
-        if (!strcmp(o, "--photo") && is_compare) photo_path = a;
-        else if (!strcmp(o, "--sim")) sim_path = a;
-        else if (!strcmp(o, "--out") && is_compare) out_path = a;
-        else if (!strcmp(o, "--label") && is_regions) label = a;
-        else if (!strcmp(o, "--corners") && is_compare) {
-            if (parse_corners(a, cfg.corners)) return 2;
-            have_corners = 1;
-            corners_arg = a;
-        } else if (!strcmp(o, "--photo-threshold") && is_compare) {
-            if (parse_double(o, a, &d)) return 2;
+        if (!strcmp(opt, "--photo") && is_compare) o->photo_path = a;
+        else if (!strcmp(opt, "--sim")) o->sim_path = a;
+        else if (!strcmp(opt, "--out") && is_compare) o->out_path = a;
+        else if (!strcmp(opt, "--label") && is_regions) o->label = a;
+        else if (!strcmp(opt, "--corners") && is_compare) {
+            if (parse_corners(a, o->cfg.corners)) return 2;
+            o->have_corners = 1;
+            o->corners_arg = a;
+        } else if (!strcmp(opt, "--photo-threshold") && is_compare) {
+            if (parse_double(opt, a, &d)) return 2;
             if (d < 0 || d > 1) {
                 fprintf(stderr, "snowphoto: --photo-threshold %s outside [0, 1]\n", a);
                 return 2;
             }
-            cfg.photoThreshold = d;
-        } else if (!strcmp(o, "--sim-threshold")) {
-            if (parse_double(o, a, &d)) return 2;
+            o->cfg.photoThreshold = d;
+        } else if (!strcmp(opt, "--sim-threshold")) {
+            if (parse_double(opt, a, &d)) return 2;
             if (d < 0) {
                 fprintf(stderr, "snowphoto: --sim-threshold %s is negative\n", a);
                 return 2;
             }
-            cfg.simThreshold = d;
-        } else if (!strcmp(o, "--sim-rel-threshold")) {
-            if (parse_double(o, a, &d)) return 2;
+            o->cfg.simThreshold = d;
+        } else if (!strcmp(opt, "--sim-rel-threshold")) {
+            if (parse_double(opt, a, &d)) return 2;
             if (!(d > 0 && d <= 1)) {
                 fprintf(stderr, "snowphoto: --sim-rel-threshold %s outside (0, 1]\n", a);
                 return 2;
             }
-            cfg.simRelThreshold = d;
-        } else if (!strcmp(o, "--res") && is_compare) {
-            if (parse_double(o, a, &d)) return 2;
+            o->cfg.simRelThreshold = d;
+        } else if (!strcmp(opt, "--res") && is_compare) {
+            if (parse_double(opt, a, &d)) return 2;
             if (d != floor(d) || d < 2 || d > 4000) {
                 fprintf(stderr, "snowphoto: --res %s is not an integer in 2..4000\n", a);
                 return 2;
             }
-            cfg.res = (int)d;
-        } else if (!strcmp(o, "--band") && is_regions) {
-            if (parse_double(o, a, &d)) return 2;
+            o->cfg.res = (int)d;
+        } else if (!strcmp(opt, "--band") && is_regions) {
+            if (parse_double(opt, a, &d)) return 2;
             if (!(d > 0 && d < 0.3)) {
                 fprintf(stderr, "snowphoto: --band %s outside (0, 0.3)\n", a);
                 return 2;
             }
-            band = d;
-        } else if (!strcmp(o, "--hold") && is_regions) {
-            if (parse_double(o, a, &d)) return 2;
+            o->band = d;
+        } else if (!strcmp(opt, "--hold") && is_regions) {
+            if (parse_double(opt, a, &d)) return 2;
             if (!(d > 0 && d <= 1)) {
                 fprintf(stderr, "snowphoto: --hold %s outside (0, 1]\n", a);
                 return 2;
             }
-            hold = d;
-        } else if (!strcmp(o, "--parcel-mass") && is_regions) {
-            if (parse_double(o, a, &d)) return 2;
+            o->hold = d;
+        } else if (!strcmp(opt, "--parcel-mass") && is_regions) {
+            if (parse_double(opt, a, &d)) return 2;
             /* from one 0.1 um ice sphere (4.8e-19 kg) to a tonne: outside it the
              * parcel counts mass / parcel mass are not counts of anything
              * (1e-300 and 1e300 are refused) */
@@ -260,81 +255,72 @@ int main(int argc, char **argv)
                         SWI_PARCEL_MASS_MIN, SWI_PARCEL_MASS_MAX);
                 return 2;
             }
-            parcel_mass = d;
+            o->parcel_mass = d;
         } else {
-            fprintf(stderr, "snowphoto %s: unknown option '%s'; see snowphoto --help\n", cmd, o);
+            fprintf(stderr, "snowphoto %s: unknown option '%s'; see snowphoto --help\n", cmd, opt);
             return 2;
         }
     }
-    if (!sim_path) {
-        fprintf(stderr, "snowphoto %s: --sim CSV is required\n", cmd);
-        return 2;
-    }
-    if (is_compare && (!photo_path || !have_corners)) {
-        fprintf(stderr, "snowphoto compare: --photo and --corners are required\n");
-        return 2;
-    }
-    if (out_path) {
-        const int c = check_out(out_path);
-        if (c)
-            return c;
-    }
-    swo_signals_on();   /* interrupted, the run leaves no temporary of --out behind */
+    return 0;
+}
+
+/* snowphoto regions: one table row, the map's regions holding snow or not; the exit status */
+static int run_regions(const photo_opts *o, const swi_simmap *sim)
+{
+    const swi_config cfg = o->cfg;
+    const char *sim_path = o->sim_path, *label = o->label;
+    const double parcel_mass = o->parcel_mass;
     char err[1024] = "";
-    swi_simmap *sim = NULL;
-    int rc = swi_simmap_read(sim_path, &sim, err, sizeof err);
+    double thr = cfg.simThreshold >= 0 ? cfg.simThreshold : cfg.simRelThreshold * sim->vmax;
+    swi_region_stats st;
+    int rc = swi_regions(sim, thr, o->band, o->hold, &st, err, sizeof err);
     if (rc) {
-        fprintf(stderr, "snowphoto: --sim %s\n", err);
+        fprintf(stderr, "snowphoto: %s: %s\n", sim_path, err);
         return rc;
     }
-    if (is_regions) {
-        double thr = cfg.simThreshold >= 0 ? cfg.simThreshold : cfg.simRelThreshold * sim->vmax;
-        swi_region_stats st;
-        rc = swi_regions(sim, thr, band, hold, &st, err, sizeof err);
-        if (rc) {
-            fprintf(stderr, "snowphoto: %s: %s\n", sim_path, err);
-            swi_simmap_free(sim);
-            return rc;
-        }
-        /* the label (or path) as a table cell: a '|' or newline in it cannot break the table */
-        const char *text = label ? label : sim_path;
-        size_t need = swi_md_cell(text, NULL, 0) + 1;
-        char *cell = malloc(need);
-        if (!cell) {
-            fprintf(stderr, "snowphoto: out of memory\n");
-            swi_simmap_free(sim);
-            return 1;
-        }
-        swi_md_cell(text, cell, need);
-        printf("| %s |", cell);
-        free(cell);
-        for (int r = 0; r < SWI_NREGIONS; r++) {
-            printf(" %s (%.0f %%, %.3g kg/m2", st.holds[r] ? "**snow**" : "no", 100 * st.covered[r], st.mean[r]);
-            if (parcel_mass > 0) {
-                double n = st.mass[r] / parcel_mass;
-                if (n >= 0.5)
-                    printf(", %.0f parcels +- %.1f %%", n, 100 / sqrt(n));
-                else
-                    printf(", 0 parcels +- inf");
-            }
-            printf(") |");
-        }
-        printf(" %.3g |\n", thr);
-        swi_simmap_free(sim);
-        return finish_stdout(0);
+    /* the label (or path) as a table cell: a '|' or newline in it cannot break the table */
+    const char *text = label ? label : sim_path;
+    size_t need = swi_md_cell(text, NULL, 0) + 1;
+    char *cell = malloc(need);
+    if (!cell) {
+        fprintf(stderr, "snowphoto: out of memory\n");
+        return 1;
     }
+    swi_md_cell(text, cell, need);
+    printf("| %s |", cell);
+    free(cell);
+    for (int r = 0; r < SWI_NREGIONS; r++) {
+        printf(" %s (%.0f %%, %.3g kg/m2", st.holds[r] ? "**snow**" : "no", 100 * st.covered[r], st.mean[r]);
+        if (parcel_mass > 0) {
+            double n = st.mass[r] / parcel_mass;
+            if (n >= 0.5)
+                printf(", %.0f parcels +- %.1f %%", n, 100 / sqrt(n));
+            else
+                printf(", 0 parcels +- inf");
+        }
+        printf(") |");
+    }
+    printf(" %.3g |\n", thr);
+    return finish_stdout(0);
+}
+
+/* snowphoto compare: the photo against the map, the metrics printed, the side-by-side
+ * picture written (--out); the exit status */
+static int run_compare(const photo_opts *o, const swi_simmap *sim)
+{
+    const swi_config cfg = o->cfg;
+    const char *photo_path = o->photo_path, *sim_path = o->sim_path, *out_path = o->out_path;
+    char err[1024] = "";
     swi_image *photo = NULL;
-    rc = swi_image_read(photo_path, &photo, err, sizeof err);
+    int rc = swi_image_read(photo_path, &photo, err, sizeof err);
     if (rc) {
         fprintf(stderr, "snowphoto: --photo %s\n", err);
-        swi_simmap_free(sim);
         return rc;
     }
     rc = swi_corners_check(cfg.corners, photo->width, photo->height, err, sizeof err);
     if (rc) {
-        fprintf(stderr, "snowphoto: --corners %s: %s\n", corners_arg, err);
+        fprintf(stderr, "snowphoto: --corners %s: %s\n", o->corners_arg, err);
         swi_image_free(photo);
-        swi_simmap_free(sim);
         return rc;
     }
     swi_metrics m;
@@ -361,6 +347,55 @@ int main(int argc, char **argv)
     }
     swi_image_free(side);
     swi_image_free(photo);
-    swi_simmap_free(sim);
     return finish_stdout(rc);
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        fprintf(stderr, "snowphoto: missing command (compare or regions); see snowphoto --help\n");
+        return 2;
+    }
+    if (!strcmp(argv[1], "-h") || !strcmp(argv[1], "--help")) {
+        fputs(usage, stdout);
+        return finish_stdout(0);
+    }
+    const char *cmd = argv[1];
+    int is_compare = !strcmp(cmd, "compare"), is_regions = !strcmp(cmd, "regions");
+    if (!is_compare && !is_regions) {
+        fprintf(stderr, "snowphoto: unknown command '%s' (compare or regions); see snowphoto --help\n", cmd);
+        return 2;
+    }
+    photo_opts o = {.cmd = cmd, .is_compare = is_compare, .is_regions = is_regions, .band = 0.1, .hold = 0.3,
+                    .parcel_mass = 0};
+    swi_config_defaults(&o.cfg);
+    const int prc = parse_options(argc, argv, &o);
+    if (prc < 0)
+        return finish_stdout(0);
+    if (prc)
+        return prc;
+    if (!o.sim_path) {
+        fprintf(stderr, "snowphoto %s: --sim CSV is required\n", cmd);
+        return 2;
+    }
+    if (is_compare && (!o.photo_path || !o.have_corners)) {
+        fprintf(stderr, "snowphoto compare: --photo and --corners are required\n");
+        return 2;
+    }
+    if (o.out_path) {
+        const int c = check_out(o.out_path);
+        if (c)
+            return c;
+    }
+    swo_signals_on();   /* interrupted, the run leaves no temporary of --out behind */
+    char err[1024] = "";
+    swi_simmap *sim = NULL;
+    int rc = swi_simmap_read(o.sim_path, &sim, err, sizeof err);
+    if (rc) {
+        fprintf(stderr, "snowphoto: --sim %s\n", err);
+        return rc;
+    }
+    rc = is_regions ? run_regions(&o, sim) : run_compare(&o, sim);
+    swi_simmap_free(sim);
+    return rc;
 }
