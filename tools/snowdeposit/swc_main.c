@@ -363,6 +363,104 @@ static int parse(int argc, char **argv, opts *o, swd_model *m)
     return 0;
 }
 
+/* snowdeposit check FILE: a closure file, read as the model reads it: usable or not, before
+ * any work; the exit status */
+static int cmd_check(int argc, char **argv)
+{
+    if (argc == 3 && (!strcmp(argv[2], "-h") || !strcmp(argv[2], "--help"))) {
+        fputs(usage, stdout);
+        return 0;
+    }
+    if (argc != 3)
+        return usage_error("check takes one FILE%s%s", "", "");
+    swd_model *m = swd_alloc();
+    if (!m) {
+        fprintf(stderr, "snowdeposit: out of memory\n");
+        return 1;
+    }
+    if (swd_load_closure(m, argv[2]) != SWD_OK || swd_commit(m) != SWD_OK) {
+        fprintf(stderr, "snowdeposit: check: %s\n", swd_errmsg(m));
+        swd_free(m);
+        return 2;
+    }
+    printf("%s: a sublayer closure for the default walk, Vs+ %g at tau+ 1\n", argv[2],
+           swd_closure_vs(m, 1.0));
+    swd_free(m);
+    return 0;
+}
+
+/* the options that do not go with the command (calibrate's --out, the other command's --law or
+ * --closure): refused, not dropped; 0, or the exit status with the message printed */
+static int command_mismatch(int cal, const opts *o)
+{
+    if (cal && !o->out)
+        return usage_error("calibrate needs --out FILE%s%s", "", "");
+    if (!cal && o->out)
+        return usage_error("--out is an option of calibrate, not of channel%s%s", "", "");
+    /* an option of the other command is refused, not dropped */
+    if (!cal && o->law_given)
+        return usage_error("--law is an option of calibrate, not of channel (channel --closure %s "
+                           "calibrates for that law and uses it)%s", o->law, "");
+    if (cal && o->closure)
+        return usage_error("--closure is an option of channel, not of calibrate (calibrate --law %s "
+                           "names the law to calibrate for)%s", o->closure, "");
+    return 0;
+}
+
+/* the work, estimated from below before any of it: a run of centuries (1e8 particles over t+
+ * 1e9) is refused, not started without a word; 0, or 2 with the message printed */
+static int estimate_work(int cal, const opts *o)
+{
+    const double runs = cal ? 2.0 : (o->closure ? 3.0 : 1.0);
+    const double steps = (double)o->p.n * (o->p.t_warm + o->p.t_run) / o->p.dt_max
+                         * (double)o->ntau * runs;
+    const double sec = steps * 0.25e-6;
+    if (steps > 1e10 && !o->force) {
+        fprintf(stderr,
+                "snowdeposit: the run needs at least %.3g particle steps (--particles %zu x "
+                "(--t-warm %g + --t-run %g) / --dt-max %g x %zu tau+ x %g runs), about %.3g h; "
+                "the limit is 1e10 steps (about 40 min): use fewer particles or a shorter "
+                "window, or --force\n",
+                steps, o->p.n, o->p.t_warm, o->p.t_run, o->p.dt_max, o->ntau, runs, sec / 3600.0);
+        return 2;
+    }
+    if (steps > 4e8)
+        fprintf(stderr, "snowdeposit: estimate: at least %.3g particle steps, about %.0f s "
+                        "at 0.25 us a step\n", steps, sec);
+    return 0;
+}
+
+/* snowdeposit channel's table: a run of the channel per tau+ (with the closure in m, if any);
+ * 0, or 2 with the message printed */
+static int channel_table(const opts *o, const swd_model *m)
+{
+    const size_t n = o->ntau;
+    char err[256];
+    printf("# Re_tau %g, %zu particles, warm-up t+ %g, window t+ %g, scheme %s%s%s, gravity "
+           "g+ %g, c_sub in y+ < %g\n",
+           o->p.re_tau, o->p.n, o->p.t_warm, o->p.t_run, o->p.scheme == SWC_EXACT ? "exact" : "host",
+           o->closure ? ", closure " : "", o->closure ? o->closure : "", o->p.g_plus, o->p.y_sub);
+    printf("%10s %12s %10s %9s %10s %12s %8s %8s %10s %7s\n", "tau+", "V+", "se", "D_track",
+           "E_closure", "V+_wood", "ratio", "c_sub", "steps", "dt+");
+    for (size_t i = 0; i < n; i++) {
+        swc_params q = o->p;
+        swc_result r;
+        q.tau_plus = o->tau[i];
+        q.r_plus = o->radius ? radius_plus(o->tau[i]) : 0.0;
+        q.seed = o->p.seed + 7919 * (i + 1);
+        if (swc_run(m, &q, &r, err, sizeof err)) {
+            fprintf(stderr, "snowdeposit: %s\n", err);
+            return 2;
+        }
+        const double w = swp_wood_vplus(o->tau[i], 0.0);
+        printf("%10.4g %12.4e %10.2e %9zu %10.2f %12.4e %8.3g %8.3f %10.3e %7.3f\n", o->tau[i],
+               r.vplus, r.vplus_se, r.deposits, r.expected_closure, w, r.vplus / w, r.c_sub,
+               r.steps, r.dt_mean);
+        fflush(stdout);
+    }
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2) {
@@ -373,29 +471,8 @@ int main(int argc, char **argv)
         fputs(usage, stdout);
         return 0;
     }
-    if (!strcmp(argv[1], "check")) {
-        /* a closure file, read as the model reads it: usable or not, before any work */
-        if (argc == 3 && (!strcmp(argv[2], "-h") || !strcmp(argv[2], "--help"))) {
-            fputs(usage, stdout);
-            return 0;
-        }
-        if (argc != 3)
-            return usage_error("check takes one FILE%s%s", "", "");
-        swd_model *m = swd_alloc();
-        if (!m) {
-            fprintf(stderr, "snowdeposit: out of memory\n");
-            return 1;
-        }
-        if (swd_load_closure(m, argv[2]) != SWD_OK || swd_commit(m) != SWD_OK) {
-            fprintf(stderr, "snowdeposit: check: %s\n", swd_errmsg(m));
-            swd_free(m);
-            return 2;
-        }
-        printf("%s: a sublayer closure for the default walk, Vs+ %g at tau+ 1\n", argv[2],
-               swd_closure_vs(m, 1.0));
-        swd_free(m);
-        return 0;
-    }
+    if (!strcmp(argv[1], "check"))
+        return cmd_check(argc, argv);
     const int cal = !strcmp(argv[1], "calibrate");
     swo_signals_on();   /* interrupted, calibrate leaves no temporary behind */
     if (!cal && strcmp(argv[1], "channel"))
@@ -421,28 +498,11 @@ int main(int argc, char **argv)
         return 1;
     }
     int rc = parse(argc, argv, &o, m);
+    if (!rc)
+        rc = command_mismatch(cal, &o);
     if (rc) {
         swd_free(m);
         return rc;
-    }
-    if (cal && !o.out) {
-        swd_free(m);
-        return usage_error("calibrate needs --out FILE%s%s", "", "");
-    }
-    if (!cal && o.out) {
-        swd_free(m);
-        return usage_error("--out is an option of calibrate, not of channel%s%s", "", "");
-    }
-    /* an option of the other command is refused, not dropped */
-    if (!cal && o.law_given) {
-        swd_free(m);
-        return usage_error("--law is an option of calibrate, not of channel (channel --closure %s "
-                           "calibrates for that law and uses it)%s", o.law, "");
-    }
-    if (cal && o.closure) {
-        swd_free(m);
-        return usage_error("--closure is an option of channel, not of calibrate (calibrate --law %s "
-                           "names the law to calibrate for)%s", o.closure, "");
     }
     /* calibrate's FILE: its folder takes files and FILE is absent or a regular
        file, checked before the work */
@@ -460,27 +520,10 @@ int main(int argc, char **argv)
             return c;
         }
     }
-    /* the work, estimated from below before any of it: a run of centuries
-       (1e8 particles over t+ 1e9) is refused, not started without a word */
-    {
-        const double runs = cal ? 2.0 : (o.closure ? 3.0 : 1.0);
-        const double steps = (double)o.p.n * (o.p.t_warm + o.p.t_run) / o.p.dt_max
-                             * (double)o.ntau * runs;
-        const double sec = steps * 0.25e-6;
-        if (steps > 1e10 && !o.force) {
-            fprintf(stderr,
-                    "snowdeposit: the run needs at least %.3g particle steps (--particles %zu x "
-                    "(--t-warm %g + --t-run %g) / --dt-max %g x %zu tau+ x %g runs), about %.3g h; "
-                    "the limit is 1e10 steps (about 40 min): use fewer particles or a shorter "
-                    "window, or --force\n",
-                    steps, o.p.n, o.p.t_warm, o.p.t_run, o.p.dt_max, o.ntau, runs, sec / 3600.0);
-            swo_free(set);
-            swd_free(m);
-            return 2;
-        }
-        if (steps > 4e8)
-            fprintf(stderr, "snowdeposit: estimate: at least %.3g particle steps, about %.0f s "
-                            "at 0.25 us a step\n", steps, sec);
+    if (estimate_work(cal, &o)) {
+        swo_free(set);
+        swd_free(m);
+        return 2;
     }
     const size_t n = o.ntau;
     double law[MAXTAU], vs[MAXTAU], vcrw[MAXTAU], vcrw_se[MAXTAU], cs[MAXTAU], vt[MAXTAU],
@@ -517,29 +560,7 @@ int main(int argc, char **argv)
     }
     if (o.closure && swd_set_closure(m, o.sublayer, o.tau, vs, n) == SWD_OK)
         swd_commit(m);
-    printf("# Re_tau %g, %zu particles, warm-up t+ %g, window t+ %g, scheme %s%s%s, gravity "
-           "g+ %g, c_sub in y+ < %g\n",
-           o.p.re_tau, o.p.n, o.p.t_warm, o.p.t_run, o.p.scheme == SWC_EXACT ? "exact" : "host",
-           o.closure ? ", closure " : "", o.closure ? o.closure : "", o.p.g_plus, o.p.y_sub);
-    printf("%10s %12s %10s %9s %10s %12s %8s %8s %10s %7s\n", "tau+", "V+", "se", "D_track",
-           "E_closure", "V+_wood", "ratio", "c_sub", "steps", "dt+");
-    for (size_t i = 0; i < n; i++) {
-        swc_params q = o.p;
-        swc_result r;
-        q.tau_plus = o.tau[i];
-        q.r_plus = o.radius ? radius_plus(o.tau[i]) : 0.0;
-        q.seed = o.p.seed + 7919 * (i + 1);
-        if (swc_run(m, &q, &r, err, sizeof err)) {
-            fprintf(stderr, "snowdeposit: %s\n", err);
-            swd_free(m);
-            return 2;
-        }
-        const double w = swp_wood_vplus(o.tau[i], 0.0);
-        printf("%10.4g %12.4e %10.2e %9zu %10.2f %12.4e %8.3g %8.3f %10.3e %7.3f\n", o.tau[i],
-               r.vplus, r.vplus_se, r.deposits, r.expected_closure, w, r.vplus / w, r.c_sub,
-               r.steps, r.dt_mean);
-        fflush(stdout);
-    }
+    rc = channel_table(&o, m);
     swd_free(m);
-    return 0;
+    return rc;
 }
