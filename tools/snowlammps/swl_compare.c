@@ -377,6 +377,158 @@ static void write_csv(FILE *f, const rows *R)
     }
 }
 
+/* whether one impact r of the group (case c, speed V) is within the tolerances of its case:
+ * q, hq the deviations of dev(r, 0, ...), I the moment of inertia per mass and R^2, dUa the
+ * separation energy a LAMMPS asperity contact does not lose */
+static int within_tolerance(const row *r, int c, double V, const swl_opts *a, const swl_model *m,
+                            const double q[6], int hq, double I, double dUa)
+{
+    const int both = r->o.bounce && r->l.bounce;
+    /* contacts: on bounces (a stick is decided by energy in the kernel, which
+     * stops counting there, while LAMMPS's sphere rolls on to the time bound) */
+    const int same_c_b = r->o.contacts == r->l.contacts || !both;
+    /* out of the plane of incidence, in every case: |dv_y| as |dv_x|, R |dw_x|
+     * and R |dw_z| as R |dw_y| (doc/kernel.md: measured like the in-plane ones) */
+    const int out_ok = !hq || (q[3] <= a->tol_v && q[4] <= a->tol_w && q[5] <= a->tol_w);
+    int good;
+    if (c == SWL_HERTZ) {
+        good = r->o.bounce == r->l.bounce && same_c_b &&
+               (!hq || (q[0] <= a->tol_v && q[1] <= a->tol_v && q[2] <= a->tol_w));
+    } else if (c == SWL_JKR_ELASTIC) {
+        /* the separation criterion accounted for: LAMMPS's rebound energy less
+         * n dU is the kernel's (a LAMMPS bounce whose energy less n dU is below
+         * tol_e E_in may stick in the kernel: within the difference of the criteria) */
+        double e = ekin_l(&r->l, I) * r->l.bounce - ekin_o(&r->o, I) - (double)r->l.contacts * dUa / m->mass;
+        e /= 0.5 * V * V;
+        good = same_c_b;
+        if (both) {
+            good = good && fabs(e) <= a->tol_e && q[0] <= a->tol_v && q[2] <= a->tol_w;
+        } else if (r->o.bounce != r->l.bounce) {
+            /* a kernel stick against a LAMMPS bounce: allowed when LAMMPS's normal
+             * rebound energy does not exceed what its n contacts did not lose at
+             * separation (capture is decided by the normal motion; the tangential
+             * motion of a captured sphere goes on along the wall) */
+            const double en = 0.5 * r->l.v[2] * r->l.v[2] - (double)r->l.contacts * dUa / m->mass;
+            good = r->l.bounce == 1 && en <= a->tol_e * 0.5 * V * V;
+        }
+    } else {
+        /* JKR with the COR dashpot: LAMMPS's tsuji dashpot acts on the JKR contact
+         * radius and in tension too (the kernel's only at delta > 0, on
+         * sqrt(R delta)): v_z within tol_vz_jkr V (the single-contact difference),
+         * and the outcome may differ when the bouncing one leaves slower than that */
+        good = same_c_b;
+        if (both) {
+            good = good && q[0] <= a->tol_v && q[1] <= a->tol_vz_jkr && q[2] <= a->tol_w;
+        } else if (r->o.bounce != r->l.bounce) {
+            const double vz = r->o.bounce ? r->o.v[2] : r->l.v[2];
+            good = vz <= a->tol_vz_jkr * V;
+        }
+    }
+    return good && out_ok;
+}
+
+/* the summary's row of one case, speed and angle, those of R->r[g0]: its impacts marked in
+ * done_g, those outside the tolerances appended to bad (nbad of them) */
+static void summary_group(const rows *R, size_t g0, const swl_opts *a, const swl_model *m, double I, double dUa,
+                          char *done_g, lines *summ, size_t *bad, size_t *nbad)
+{
+    const int c = R->r[g0].cas;
+    const double V = R->r[g0].V, th = R->r[g0].th;
+    long ng = 0, same_o = 0, same_c = 0, nb = 0, same_cb = 0, nbo = 0, nbl = 0, ok = 0;
+    double mx[6] = { 0, 0, 0, 0, 0, 0 }, hal[2][4] = { { 0, 0, 0, 0 }, { 0, 0, 0, 0 } }, ens = 0.0;
+    int any_hal = 0, nens = 0;
+    for (size_t i = g0; i < R->n; i++) {
+        const row *r = &R->r[i];
+        if (done_g[i] || r->cas != c || r->V != V || r->th != th) continue;
+        done_g[i] = 1;
+        ng++;
+        const int both = r->o.bounce && r->l.bounce;
+        same_o += r->o.bounce == r->l.bounce;
+        same_c += r->o.contacts == r->l.contacts;
+        nb += both;
+        same_cb += both && r->o.contacts == r->l.contacts;
+        nbo += r->o.bounce;
+        nbl += r->l.bounce;
+        double q[6];
+        const int hq = dev(r, 0, m->R, q);
+        if (hq)
+            for (int k = 0; k < 6; k++) mx[k] = fmax(mx[k], q[k]);
+        if (r->halved) {
+            any_hal = 1;
+            for (int w = 0; w < 2; w++) {
+                double h[6];
+                if (dev(r, 1 + w, m->R, h)) {
+                    hal[w][0] = fmax(hal[w][0], fmax(h[0], h[1]));
+                    hal[w][1] = fmax(hal[w][1], h[2]);
+                    hal[w][2] = fmax(hal[w][2], h[3]);
+                    hal[w][3] = fmax(hal[w][3], fmax(h[4], h[5]));
+                }
+            }
+        }
+        /* the separation criterion accounted for: a LAMMPS contact breaks with dU less lost */
+        if (c == SWL_JKR_ELASTIC && both) {
+            const double e = fabs(ekin_l(&r->l, I) - ekin_o(&r->o, I) - (double)r->l.contacts * dUa / m->mass) /
+                (0.5 * V * V);
+            ens = nens ? fmax(ens, e) : e;
+            nens++;
+        }
+        const int good = within_tolerance(r, c, V, a, m, q, hq, I, dUa);
+        ok += good;
+        if (!good)
+            bad[(*nbad)++] = i;
+    }
+    char h0[64] = "-", h1[64] = "-", h2[64] = "-", h3[64] = "-", en[32] = "-";
+    if (any_hal) {
+        snprintf(h0, sizeof h0, "%.2g, %.2g", hal[0][0], hal[0][1]);
+        snprintf(h1, sizeof h1, "%.2g, %.2g", hal[1][0], hal[1][1]);
+        snprintf(h2, sizeof h2, "%.2g, %.2g", hal[0][2], hal[0][3]);
+        snprintf(h3, sizeof h3, "%.2g, %.2g", hal[1][2], hal[1][3]);
+    }
+    if (nens) snprintf(en, sizeof en, "%.2g", ens);
+    add(summ, "| %s | %g | %g | %ld | %ld / %ld | %ld | %ld / %ld of %ld | %.2g | %.2g | %.2g | %s | %s | %s | %.2g | %.2g | %.2g | %s | %s | %ld of %ld |",
+        case_name[c], V, th, ng, nbo, nbl, same_o, same_c, same_cb, nb, mx[0], mx[1], mx[2], h0,
+        h1, en, mx[3], mx[4], mx[5], h2, h3, ok, ng);
+}
+
+/* summary.md's text: the setting and the tolerances, the calibration's and the summary's
+ * tables, the runs' cost and the count outside the tolerances */
+static void write_summary(FILE *sf, const swl_opts *a, const swl_model *m, int npts, const lines *cal,
+                          const lines *summ, const swl_ours *O, const swl_lammps *L, double secs, size_t nbad,
+                          size_t nrows)
+{
+    fprintf(sf, "Rough wall, snowregime against LAMMPS: d = %g m ice sphere on the default\n"
+                "square lattice (asperity r = %g m, spacing %g m), %d impact points (a %d x %d grid over\n"
+                "the unit cell) x angles %s deg x speeds |v| (hertz %s, jkr %s m/s); constant COR %g\n"
+                "(dashpot on both branches, LAMMPS tsuji calibrated to it).\n"
+                "Tolerances (bounces in both codes): |dv_x|, |dv_y|, |dv_z| <= %g V, R |dw_x|, R |dw_y|, R |dw_z|\n"
+                "<= %g V and the same number of contacts; hertz: the same outcome; jkr-elastic: |E_L - E_s - n dU| <= %g E_in\n"
+                "instead of dv_z (dU: the separation energy a LAMMPS contact does not lose), a kernel stick\n"
+                "against a LAMMPS bounce allowed when its v_z^2/2 - n dU <= %g E_in; jkr: |dv_z| <= %g V, the\n"
+                "outcome may differ when the bouncing code leaves with v_z <= %g V.\n\n",
+            a->d, m->r, m->sp, npts, a->grid, a->grid, a->angles_s, a->speeds_h_s, a->speeds_j_s, a->cor,
+            a->tol_v, a->tol_w, a->tol_e, a->tol_e, a->tol_vz_jkr, a->tol_vz_jkr);
+    for (size_t k = 0; k < cal->n; k++) fprintf(sf, "%s\n", cal->l[k]);
+    fprintf(sf, "\n");
+    for (size_t k = 0; k < summ->n; k++) fprintf(sf, "%s\n", summ->l[k]);
+    fprintf(sf, "\n");
+    fprintf(sf, "Runs: snowregime %ld impacts in %.1f s, LAMMPS %ld runs in %.1f s; total %.0f s.\n",
+            O->runs, O->seconds, L->runs, L->seconds, secs);
+    fprintf(sf, "impacts outside the tolerances: %zu of %zu\n", nbad, nrows);
+}
+
+/* one line per impact outside the tolerances, after the summary on the report */
+static void report_outside(FILE *report, const rows *R, const size_t *bad, size_t nbad)
+{
+    for (size_t b = 0; b < nbad; b++) {
+        const row *r = &R->r[bad[b]];
+        fprintf(report, "outside: %s V %g angle %g x %.3g y %.3g: outcome %d/%d contacts %ld/%ld v_x %.4g/%.4g v_z %.4g/%.4g w_y %.4g/%.4g"
+                " v_y %.4g/%.4g w_x %.4g/%.4g w_z %.4g/%.4g\n",
+                case_name[r->cas], r->V, r->th, r->x, r->y, r->o.bounce, r->l.bounce, r->o.contacts,
+                r->l.contacts, r->o.v[0], r->l.v[0], r->o.v[2], r->l.v[2], r->o.wy, r->l.w[1],
+                r->o.v[1], r->l.v[1], r->o.w[0], r->l.w[0], r->o.w[2], r->l.w[2]);
+    }
+}
+
 int swl_compare_run(const swl_opts *a, FILE *report, char *err, size_t errlen)
 {
     const double t_start = swl_now();
@@ -450,105 +602,9 @@ int swl_compare_run(const swl_opts *a, FILE *report, char *err, size_t errlen)
                "halving: snowregime | halving: LAMMPS | energy: (E_L - E_s - n dU)/E_in | "
                "max dv_y/V | max R dw_x/V | max R dw_z/V | halving v_y, R w_x/z: snowregime | halving v_y, R w_x/z: LAMMPS | within tolerance |");
     add(&summ, "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
-    for (size_t g0 = 0; g0 < R.n; g0++) {
-        if (done_g[g0]) continue;
-        const int c = R.r[g0].cas;
-        const double V = R.r[g0].V, th = R.r[g0].th;
-        long ng = 0, same_o = 0, same_c = 0, nb = 0, same_cb = 0, nbo = 0, nbl = 0, ok = 0;
-        double mx[6] = { 0, 0, 0, 0, 0, 0 }, hal[2][4] = { { 0, 0, 0, 0 }, { 0, 0, 0, 0 } }, ens = 0.0;
-        int any_hal = 0, nens = 0;
-        for (size_t i = g0; i < R.n; i++) {
-            const row *r = &R.r[i];
-            if (done_g[i] || r->cas != c || r->V != V || r->th != th) continue;
-            done_g[i] = 1;
-            ng++;
-            const int both = r->o.bounce && r->l.bounce;
-            same_o += r->o.bounce == r->l.bounce;
-            same_c += r->o.contacts == r->l.contacts;
-            nb += both;
-            same_cb += both && r->o.contacts == r->l.contacts;
-            nbo += r->o.bounce;
-            nbl += r->l.bounce;
-            double q[6];
-            const int hq = dev(r, 0, m.R, q);
-            if (hq)
-                for (int k = 0; k < 6; k++) mx[k] = fmax(mx[k], q[k]);
-            if (r->halved) {
-                any_hal = 1;
-                for (int w = 0; w < 2; w++) {
-                    double h[6];
-                    if (dev(r, 1 + w, m.R, h)) {
-                        hal[w][0] = fmax(hal[w][0], fmax(h[0], h[1]));
-                        hal[w][1] = fmax(hal[w][1], h[2]);
-                        hal[w][2] = fmax(hal[w][2], h[3]);
-                        hal[w][3] = fmax(hal[w][3], fmax(h[4], h[5]));
-                    }
-                }
-            }
-            /* the separation criterion accounted for: a LAMMPS contact breaks with dU less lost */
-            if (c == SWL_JKR_ELASTIC && both) {
-                const double e = fabs(ekin_l(&r->l, I) - ekin_o(&r->o, I) - (double)r->l.contacts * dUa / m.mass) /
-                    (0.5 * V * V);
-                ens = nens ? fmax(ens, e) : e;
-                nens++;
-            }
-            /* contacts: on bounces (a stick is decided by energy in the kernel, which
-             * stops counting there, while LAMMPS's sphere rolls on to the time bound) */
-            const int same_c_b = r->o.contacts == r->l.contacts || !both;
-            /* out of the plane of incidence, in every case: |dv_y| as |dv_x|, R |dw_x|
-             * and R |dw_z| as R |dw_y| (doc/kernel.md: measured like the in-plane ones) */
-            const int out_ok = !hq || (q[3] <= a->tol_v && q[4] <= a->tol_w && q[5] <= a->tol_w);
-            int good;
-            if (c == SWL_HERTZ) {
-                good = r->o.bounce == r->l.bounce && same_c_b &&
-                       (!hq || (q[0] <= a->tol_v && q[1] <= a->tol_v && q[2] <= a->tol_w));
-            } else if (c == SWL_JKR_ELASTIC) {
-                /* the separation criterion accounted for: LAMMPS's rebound energy less
-                 * n dU is the kernel's (a LAMMPS bounce whose energy less n dU is below
-                 * tol_e E_in may stick in the kernel: within the difference of the criteria) */
-                double e = ekin_l(&r->l, I) * r->l.bounce - ekin_o(&r->o, I) - (double)r->l.contacts * dUa / m.mass;
-                e /= 0.5 * V * V;
-                good = same_c_b;
-                if (both) {
-                    good = good && fabs(e) <= a->tol_e && q[0] <= a->tol_v && q[2] <= a->tol_w;
-                } else if (r->o.bounce != r->l.bounce) {
-                    /* a kernel stick against a LAMMPS bounce: allowed when LAMMPS's normal
-                     * rebound energy does not exceed what its n contacts did not lose at
-                     * separation (capture is decided by the normal motion; the tangential
-                     * motion of a captured sphere goes on along the wall) */
-                    const double en = 0.5 * r->l.v[2] * r->l.v[2] - (double)r->l.contacts * dUa / m.mass;
-                    good = r->l.bounce == 1 && en <= a->tol_e * 0.5 * V * V;
-                }
-            } else {
-                /* JKR with the COR dashpot: LAMMPS's tsuji dashpot acts on the JKR contact
-                 * radius and in tension too (the kernel's only at delta > 0, on
-                 * sqrt(R delta)): v_z within tol_vz_jkr V (the single-contact difference),
-                 * and the outcome may differ when the bouncing one leaves slower than that */
-                good = same_c_b;
-                if (both) {
-                    good = good && q[0] <= a->tol_v && q[1] <= a->tol_vz_jkr && q[2] <= a->tol_w;
-                } else if (r->o.bounce != r->l.bounce) {
-                    const double vz = r->o.bounce ? r->o.v[2] : r->l.v[2];
-                    good = vz <= a->tol_vz_jkr * V;
-                }
-            }
-            good = good && out_ok;
-            ok += good;
-            if (!good)
-                bad[nbad++] = i;
-        }
-        char h0[64] = "-", h1[64] = "-", h2[64] = "-", h3[64] = "-", en[32] = "-";
-        if (any_hal) {
-            snprintf(h0, sizeof h0, "%.2g, %.2g", hal[0][0], hal[0][1]);
-            snprintf(h1, sizeof h1, "%.2g, %.2g", hal[1][0], hal[1][1]);
-            snprintf(h2, sizeof h2, "%.2g, %.2g", hal[0][2], hal[0][3]);
-            snprintf(h3, sizeof h3, "%.2g, %.2g", hal[1][2], hal[1][3]);
-        }
-        if (nens) snprintf(en, sizeof en, "%.2g", ens);
-        add(&summ, "| %s | %g | %g | %ld | %ld / %ld | %ld | %ld / %ld of %ld | %.2g | %.2g | %.2g | %s | %s | %s | %.2g | %.2g | %.2g | %s | %s | %ld of %ld |",
-            case_name[c], V, th, ng, nbo, nbl, same_o, same_c, same_cb, nb, mx[0], mx[1], mx[2], h0,
-            h1, en, mx[3], mx[4], mx[5], h2, h3, ok, ng);
-    }
+    for (size_t g0 = 0; g0 < R.n; g0++)
+        if (!done_g[g0])
+            summary_group(&R, g0, a, &m, I, dUa, done_g, &summ, bad, &nbad);
     free(done_g);
 
     const double secs = swl_now() - t_start;
@@ -558,24 +614,7 @@ int swl_compare_run(const swl_opts *a, FILE *report, char *err, size_t errlen)
         rc = fail(err, errlen, "out of memory");
         goto done;
     }
-    fprintf(sf, "Rough wall, snowregime against LAMMPS: d = %g m ice sphere on the default\n"
-                "square lattice (asperity r = %g m, spacing %g m), %d impact points (a %d x %d grid over\n"
-                "the unit cell) x angles %s deg x speeds |v| (hertz %s, jkr %s m/s); constant COR %g\n"
-                "(dashpot on both branches, LAMMPS tsuji calibrated to it).\n"
-                "Tolerances (bounces in both codes): |dv_x|, |dv_y|, |dv_z| <= %g V, R |dw_x|, R |dw_y|, R |dw_z|\n"
-                "<= %g V and the same number of contacts; hertz: the same outcome; jkr-elastic: |E_L - E_s - n dU| <= %g E_in\n"
-                "instead of dv_z (dU: the separation energy a LAMMPS contact does not lose), a kernel stick\n"
-                "against a LAMMPS bounce allowed when its v_z^2/2 - n dU <= %g E_in; jkr: |dv_z| <= %g V, the\n"
-                "outcome may differ when the bouncing code leaves with v_z <= %g V.\n\n",
-            a->d, m.r, m.sp, npts, a->grid, a->grid, a->angles_s, a->speeds_h_s, a->speeds_j_s, a->cor,
-            a->tol_v, a->tol_w, a->tol_e, a->tol_e, a->tol_vz_jkr, a->tol_vz_jkr);
-    for (size_t k = 0; k < cal.n; k++) fprintf(sf, "%s\n", cal.l[k]);
-    fprintf(sf, "\n");
-    for (size_t k = 0; k < summ.n; k++) fprintf(sf, "%s\n", summ.l[k]);
-    fprintf(sf, "\n");
-    fprintf(sf, "Runs: snowregime %ld impacts in %.1f s, LAMMPS %ld runs in %.1f s; total %.0f s.\n",
-            O.runs, O.seconds, L.runs, L.seconds, secs);
-    fprintf(sf, "impacts outside the tolerances: %zu of %zu\n", nbad, R.n);
+    write_summary(sf, a, &m, npts, &cal, &summ, &O, &L, secs, nbad, R.n);
     if (ferror(sf) | (fclose(sf) != 0) || cal.oom || summ.oom) {
         free(bad);
         rc = fail(err, errlen, "out of memory");
@@ -589,14 +628,7 @@ int swl_compare_run(const swl_opts *a, FILE *report, char *err, size_t errlen)
         goto done;
     }
     fwrite(sbuf, 1, slen, report);
-    for (size_t b = 0; b < nbad; b++) {
-        const row *r = &R.r[bad[b]];
-        fprintf(report, "outside: %s V %g angle %g x %.3g y %.3g: outcome %d/%d contacts %ld/%ld v_x %.4g/%.4g v_z %.4g/%.4g w_y %.4g/%.4g"
-                " v_y %.4g/%.4g w_x %.4g/%.4g w_z %.4g/%.4g\n",
-                case_name[r->cas], r->V, r->th, r->x, r->y, r->o.bounce, r->l.bounce, r->o.contacts,
-                r->l.contacts, r->o.v[0], r->l.v[0], r->o.v[2], r->l.v[2], r->o.wy, r->l.w[1],
-                r->o.v[1], r->l.v[1], r->o.w[0], r->l.w[0], r->o.w[2], r->l.w[2]);
-    }
+    report_outside(report, &R, bad, nbad);
     free(bad);
     rc = nbad ? 3 : 0;
 done:
