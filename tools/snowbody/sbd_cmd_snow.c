@@ -317,15 +317,44 @@ static const char usage_snow[] =
 "    0 written; 2 a usage error or refused --out; 1 unreadable or inconsistent\n"
 "    records, a failed write or gnuplot. One line on standard error.\n";
 
-int sbd_cmd_snow_post(int argc, char **argv)
+/* snow-post's inputs and results, from the command line to the tables */
+typedef struct {
+    options o;
+    /* the run's level and cost (--flow), the resolution ladder (--ladder) */
+    char level[64], cells[64], ms[64], fs[64];
+    sbd_ladder lad;
+    sbd_ladder_error lerr[2];
+    int have_ladder, krow;
+    /* the patches; kr, ks: ahmed_rear's and ahmed_sensor's */
+    patch p[NPATCH];
+    int np, kr, ks;
+    /* the rear face (ahmed_rear and ahmed_sensor together) and the sensor in the window */
+    sbd_sticks rear;
+    sbd_window_stat wr, ws;
+    double t0, t1, mult, area_r, area_s, minutes;
+    double q_val[2], q_rel[2];          /* 0 the rear face, 1 the sensor: kg/m2, relative sampling error */
+    double cum[MINUTES_STEPS + 1][4];   /* the cumulative deposit against the exposure's minutes */
+    /* the rear-face map from the body's published dimensions */
+    sbd_params bp;
+    double ymax, z0, z1;
+    double map[2 * MAP_NY * MAP_NZ];
+    map_grid grid;
+    double map_max;
+    /* the errors, relative to the ladder's reference */
+    double strip_ratio, mesh[2], samp[2], total[2], zlad[2], run_seconds;
+} snow_post;
+
+/* the command line into *op (its defaults set by the caller): 0, -1 when the help was printed,
+ * or the exit status of a usage error with its message printed */
+static int parse_options(int argc, char **argv, options *op)
 {
-    options o = {.cloud = "kinematicCloud", .speed = 0, .processes = 1};
+    options o = *op;
     int have[3] = {0, 0, 0};
     for (int i = 2; i < argc; i++) {
         const char *a = argv[i];
         if (!strcmp(a, "-h") || !strcmp(a, "--help")) {
             printf(usage_snow, MINUTES_STEPS);
-            return fflush(stdout) ? 1 : 0;
+            return -1;
         }
         if (!strcmp(a, "--half-model")) { o.half = 1; continue; }
         if (!strcmp(a, "--force")) { o.force = 1; continue; }
@@ -354,101 +383,111 @@ int sbd_cmd_snow_post(int argc, char **argv)
         return die(2, "--cloud '%s' is not a cloud name", o.cloud);
     if (strchr(o.out, '\n'))
         return die(2, "--out: a folder name with a newline is refused");
+    *op = o;
+    return 0;
+}
 
-    /* the output folder checked before the work */
+/* the run's level and cost from --flow, the resolution ladder from --ladder and the run's row in
+ * it: 0, or the exit status with the message printed */
+static int read_flow_and_ladder(snow_post *s)
+{
+    const options o = s->o;
     char err[2048];
-    swo_spec spec = {.tool = "snowbody snow-post", .dir = o.out, .force = o.force, .parents = 1};
-    int rc = swo_alloc(&spec, &g_set, err, sizeof err);
-    if (rc)
-        return die(rc, "%s", err);
-    if (swo_note(g_set))
-        fprintf(stderr, "snowbody: snow-post: note: %s\n", swo_note(g_set));
-    swo_signals_on();
-
-    /* the ladder and the run's level */
-    sbd_ladder lad;
-    sbd_ladder_error lerr[2];
-    int have_ladder = 0, krow = -1;
-    char level[64] = "", cells[64] = "", ms[64] = "", fs[64] = "";
     if (o.flow) {
-        if (flow_value(o.flow, "level", level, sizeof level))
+        if (flow_value(o.flow, "level", s->level, sizeof s->level))
             return die(1, "--flow %s: no 'level = ...' line", o.flow);
-        flow_value(o.flow, "cells", cells, sizeof cells);
-        flow_value(o.flow, "mesh_seconds", ms, sizeof ms);
-        flow_value(o.flow, "flow_seconds", fs, sizeof fs);
+        flow_value(o.flow, "cells", s->cells, sizeof s->cells);
+        flow_value(o.flow, "mesh_seconds", s->ms, sizeof s->ms);
+        flow_value(o.flow, "flow_seconds", s->fs, sizeof s->fs);
     }
     if (o.ladder) {
-        if (sbd_ladder_read(o.ladder, &lad, err, sizeof err))
+        if (sbd_ladder_read(o.ladder, &s->lad, err, sizeof err))
             return die(1, "--ladder: %s", err);
-        have_ladder = 1;
-        krow = level[0] ? sbd_ladder_find(&lad, level) : -1;
+        s->have_ladder = 1;
+        s->krow = s->level[0] ? sbd_ladder_find(&s->lad, s->level) : -1;
         for (int q = 0; q < 2; q++)
-            if (sbd_ladder_disc(&lad, q, &lerr[q], err, sizeof err))
+            if (sbd_ladder_disc(&s->lad, q, &s->lerr[q], err, sizeof err))
                 return die(1, "--ladder %s: %s", o.ladder, err);
     }
+    return 0;
+}
 
-    patch p[NPATCH];
-    int np = 0;
-    memset(p, 0, sizeof p);
-    if ((rc = load_patches(&o, p, &np)))
-        goto done;
-    const int kr = find(p, np, "ahmed_rear"), ks = find(p, np, "ahmed_sensor");
-    if (kr < 0 || ks < 0) {
-        rc = die(1, "%s: no deposit table of ahmed_rear or ahmed_sensor", o.case_dir);
-        goto done;
-    }
-    const double t0 = o.fill, t1 = o.fill + o.sample, mult = o.half ? 2 : 1;
+/* every patch's records against its deposit field and its window; the rear face (ahmed_rear and
+ * ahmed_sensor together) and the sensor in the window: 0, or the exit status with the message
+ * printed */
+static int window_stats(snow_post *s)
+{
+    patch *p = s->p;
+    const int np = s->np, kr = s->kr, ks = s->ks;
+    const double t0 = s->t0, t1 = s->t1;
     /* every patch: the records against the deposit field, the window */
     for (int k = 0; k < np; k++) {
         double all = 0;
         for (size_t i = 0; i < p[k].st.n; i++)
             all += p[k].st.s[i].mass;
         const double ref = fmax(fabs(p[k].deposit), 1e-300);
-        if (fabs(all - p[k].deposit) > 1e-4 * ref && fabs(all - p[k].deposit) > 1e-15) {
-            rc = die(1, "patch %s: the stick records add up to %.8g kg, the deposit field to %.8g kg", p[k].name, all,
-                     p[k].deposit);
-            goto done;
-        }
-        if (sbd_window(p[k].st.s, p[k].st.n, t0, t1, &p[k].w)) {
-            rc = die(1, "out of memory");
-            goto done;
-        }
+        if (fabs(all - p[k].deposit) > 1e-4 * ref && fabs(all - p[k].deposit) > 1e-15)
+            return die(1, "patch %s: the stick records add up to %.8g kg, the deposit field to %.8g kg", p[k].name, all,
+                       p[k].deposit);
+        if (sbd_window(p[k].st.s, p[k].st.n, t0, t1, &p[k].w))
+            return die(1, "out of memory");
     }
     /* the rear face: ahmed_rear and ahmed_sensor together */
     sbd_sticks rear = {0};
     {
         const size_t n = p[kr].st.n + p[ks].st.n;
         rear.s = malloc((n ? n : 1) * sizeof *rear.s);
-        if (!rear.s) {
-            rc = die(1, "out of memory");
-            goto done;
-        }
+        if (!rear.s)
+            return die(1, "out of memory");
         memcpy(rear.s, p[kr].st.s, p[kr].st.n * sizeof *rear.s);
         memcpy(rear.s + p[kr].st.n, p[ks].st.s, p[ks].st.n * sizeof *rear.s);
         rear.n = rear.cap = n;
     }
+    s->rear = rear;
     sbd_window_stat wr, ws = p[ks].w;
     sbd_window(rear.s, rear.n, t0, t1, &wr);
-    const double area_r = p[kr].area + p[ks].area, area_s = p[ks].area;
-    const double q_val[2] = {wr.mass / area_r, ws.mass / area_s};
-    const double q_rel[2] = {wr.mass > 0 ? sqrt(wr.var) / wr.mass : 1, ws.mass > 0 ? sqrt(ws.var) / ws.mass : 1};
-    const char *q_name[2] = {"rear face", "sensor"};
-    const double minutes = o.build_up / 60;
+    s->wr = wr;
+    s->ws = ws;
+    s->area_r = p[kr].area + p[ks].area;
+    s->area_s = p[ks].area;
+    const double area_r = s->area_r, area_s = s->area_s;
+    s->q_val[0] = wr.mass / area_r;
+    s->q_val[1] = ws.mass / area_s;
+    s->q_rel[0] = wr.mass > 0 ? sqrt(wr.var) / wr.mass : 1;
+    s->q_rel[1] = ws.mass > 0 ? sqrt(ws.var) / ws.mass : 1;
+    return 0;
+}
 
-    /* deposit.csv */
+/* deposit.csv: per patch and the rear face; 0, or the exit status of a failed open */
+static int write_deposit_csv(const snow_post *s)
+{
+    const patch *p = s->p;
+    const sbd_window_stat wr = s->wr;
+    const double mult = s->mult, area_r = s->area_r;
     FILE *f = out_open("deposit.csv");
-    if (!f) { rc = g_out_rc; goto free_rear; }
+    if (!f)
+        return g_out_rc;
     fprintf(f, "patch,area_m2,sticks,origins,mass_kg,kg_m2,rel_err,halves_z\n");
-    for (int k = 0; k < np; k++) {
+    for (int k = 0; k < s->np; k++) {
         const sbd_window_stat *w = &p[k].w;
         fprintf(f, "%s,%.6g,%zu,%zu,%.6g,%.6g,%.4g,%.3f\n", p[k].name, p[k].area * mult, w->sticks, w->origins,
                 w->mass * mult, w->mass / p[k].area, w->mass > 0 ? sqrt(w->var) / w->mass : 0, sbd_halves_z(w));
     }
     fprintf(f, "rear_face,%.6g,%zu,%zu,%.6g,%.6g,%.4g,%.3f\n", area_r * mult, wr.sticks, wr.origins, wr.mass * mult,
-            q_val[0], q_rel[0], sbd_halves_z(&wr));
+            s->q_val[0], s->q_rel[0], sbd_halves_z(&wr));
+    return 0;
+}
 
-    /* sensor.csv: the cumulative deposit against the exposure's minutes */
-    double cum[MINUTES_STEPS + 1][4];
+/* sensor.csv: the cumulative deposit against the exposure's minutes (into s->cum); 0, or the
+ * exit status of a failed open */
+static int write_sensor_csv(snow_post *s)
+{
+    const options o = s->o;
+    const patch *p = s->p;
+    const int ks = s->ks;
+    const sbd_sticks rear = s->rear;
+    const double t0 = s->t0, area_s = s->area_s, area_r = s->area_r, minutes = s->minutes;
+    double (*cum)[4] = s->cum;
     for (int k = 0; k <= MINUTES_STEPS; k++) {
         const double tk = t0 + o.sample * k / MINUTES_STEPS;
         sbd_window_stat a = {0}, b = {0};
@@ -461,28 +500,56 @@ int sbd_cmd_snow_post(int argc, char **argv)
         cum[k][2] = b.mass / area_r;
         cum[k][3] = sqrt(b.var) / area_r;
     }
-    if (!(f = out_open("sensor.csv"))) { rc = g_out_rc; goto free_rear; }
+    FILE *f = out_open("sensor.csv");
+    if (!f)
+        return g_out_rc;
     fprintf(f, "minutes,sensor_kg_m2,sensor_sd,rear_kg_m2,rear_sd\n");
     for (int k = 0; k <= MINUTES_STEPS; k++)
         fprintf(f, "%.4g,%.6g,%.4g,%.6g,%.4g\n", minutes * k / MINUTES_STEPS, cum[k][0], cum[k][1], cum[k][2],
                 cum[k][3]);
+    return 0;
+}
 
-    /* rear_map.csv: the rear face from the body's published dimensions */
-    sbd_params bp;
-    sbd_params_default(&bp);
+/* rear_map.csv: the window's rear-face sticks binned on the rear face from the body's published
+ * dimensions (into s->map, s->grid, s->map_max); 0, or the exit status of a failed open */
+static int write_rear_map(snow_post *s)
+{
+    const options o = s->o;
+    const sbd_sticks rear = s->rear;
+    const double t0 = s->t0, t1 = s->t1;
+    sbd_params_default(&s->bp);
+    const sbd_params bp = s->bp;
     const double ymax = bp.width / 2, z0 = bp.clearance, z1 = bp.clearance + bp.height;
     const double ymin = o.half ? 0 : -ymax;
     const int ny = o.half ? MAP_NY : 2 * MAP_NY;
-    double map[2 * MAP_NY * MAP_NZ];
+    s->ymax = ymax;
+    s->z0 = z0;
+    s->z1 = z1;
+    double *map = s->map;
     size_t outside = 0;
     sbd_map(rear.s, rear.n, t0, t1, 1, 2, ymin, ymax, ny, z0, z1, MAP_NZ, map, &outside);
     if (outside)
         fprintf(stderr, "snowbody: snow-post: note: %zu rear-face sticks outside the face's rectangle\n", outside);
-    if (!(f = out_open("rear_map.csv"))) { rc = g_out_rc; goto free_rear; }
+    FILE *f = out_open("rear_map.csv");
+    if (!f)
+        return g_out_rc;
     fprintf(f, "y_m,z_m,kg_m2\n");
     const map_grid grid = {map, ny, ymin, (ymax - ymin) / ny, z0, (z1 - z0) / MAP_NZ, o.half};
-    const double map_max = map_rows(f, ',', &grid);
+    s->grid = grid;
+    s->map_max = map_rows(f, ',', &s->grid);
+    return 0;
+}
 
+/* the half model's symmetry-plane ratio; this run's sampling error and its level's
+ * discretization error, both relative to the ladder's reference (so that the total is their root
+ * sum of squares); the run's time */
+static void errors(snow_post *s)
+{
+    const options o = s->o;
+    const sbd_sticks rear = s->rear;
+    const double t0 = s->t0, t1 = s->t1, ymax = s->ymax;
+    const double *q_val = s->q_val, *q_rel = s->q_rel;
+    const int krow = s->krow;
     /* the half model's symmetry plane: the rear face's deposit per area within 5 mm of it
        against the rest of the face (1 for a deposit that does not see the plane) */
     double strip_ratio = NAN;
@@ -494,54 +561,90 @@ int sbd_cmd_snow_post(int argc, char **argv)
         if (m_out > 0)
             strip_ratio = (m_in / 0.005) / (m_out / (ymax - 0.005));
     }
+    s->strip_ratio = strip_ratio;
 
     /* the errors: this run's sampling error and its level's discretization error, both
        relative to the ladder's reference (so that the total is their root sum of squares) */
-    double mesh[2] = {NAN, NAN}, samp[2] = {NAN, NAN}, total[2] = {NAN, NAN}, zlad[2] = {NAN, NAN};
-    if (have_ladder && krow >= 0)
+    double *mesh = s->mesh, *samp = s->samp, *total = s->total, *zlad = s->zlad;
+    for (int q = 0; q < 2; q++)
+        mesh[q] = samp[q] = total[q] = zlad[q] = NAN;
+    if (s->have_ladder && krow >= 0)
         for (int q = 0; q < 2; q++) {
-            mesh[q] = lerr[q].disc[krow];
-            samp[q] = q_rel[q] * q_val[q] / fabs(lerr[q].ref);
+            mesh[q] = s->lerr[q].disc[krow];
+            samp[q] = q_rel[q] * q_val[q] / fabs(s->lerr[q].ref);
             total[q] = hypot(samp[q], mesh[q]);
-            const sbd_ladder_row *r = &lad.row[krow];
+            const sbd_ladder_row *r = &s->lad.row[krow];
             const double sa = q_rel[q] * q_val[q], sb = r->rel[q] * r->value[q];
             zlad[q] = (q_val[q] - r->value[q]) / sqrt(sa * sa + sb * sb);
             if (fabs(zlad[q]) < 0.005)
                 zlad[q] = 0;   /* printed as 0.00, not -0.00 */
         }
-    const double run_seconds = atof(ms) + atof(fs) + o.snow_seconds;
+    s->run_seconds = atof(s->ms) + atof(s->fs) + o.snow_seconds;
+}
 
+/* error_time.csv (with --ladder) and summary.txt; 0, or the exit status of a failed open */
+static int write_error_time_and_summary(const snow_post *s)
+{
+    const options o = s->o;
+    const sbd_ladder *lad = &s->lad;
+    const sbd_ladder_error *lerr = s->lerr;
+    const double *q_val = s->q_val, *q_rel = s->q_rel, *mesh = s->mesh, *total = s->total, *zlad = s->zlad;
+    const double minutes = s->minutes, t0 = s->t0, t1 = s->t1;
+    const char *level = s->level;
+    FILE *f;
     /* error_time.csv */
-    if (have_ladder) {
-        if (!(f = out_open("error_time.csv"))) { rc = g_out_rc; goto free_rear; }
+    if (s->have_ladder) {
+        if (!(f = out_open("error_time.csv")))
+            return g_out_rc;
         fprintf(f, "level,cells,seconds,quantity,sampling,mesh,total\n");
-        for (int k = 0; k < lad.n; k++)
+        for (int k = 0; k < lad->n; k++)
             for (int q = 0; q < 2; q++) {
-                fprintf(f, "%s,%ld,%.0f,%s,%.4f,%.4f,%.4f\n", lad.row[k].level, lad.row[k].cells, lad.row[k].seconds,
+                fprintf(f, "%s,%ld,%.0f,%s,%.4f,%.4f,%.4f\n", lad->row[k].level, lad->row[k].cells, lad->row[k].seconds,
                         q ? "sensor" : "rear", lerr[q].sampling[k], lerr[q].disc[k], lerr[q].total[k]);
             }
     }
 
     /* summary.txt */
-    if (!(f = out_open("summary.txt"))) { rc = g_out_rc; goto free_rear; }
+    if (!(f = out_open("summary.txt")))
+        return g_out_rc;
     fprintf(f, "# snowbody snow-post: the deposit of %.4g min (the window %.6g .. %.6g s of the snow run)\n",
             minutes, t0, t1);
     fprintf(f, "level = %s\n", level[0] ? level : "-");
     for (int q = 0; q < 2; q++) {
         const char *k = q ? "sensor" : "rear";
-        const sbd_window_stat *w = q ? &ws : &wr;
+        const sbd_window_stat *w = q ? &s->ws : &s->wr;
         fprintf(f, "%s_kg_m2 = %.6g\n%s_rel_sampling = %.4f\n%s_sticks = %zu\n%s_origins = %zu\n%s_halves_z = %.3f\n",
                 k, q_val[q], k, q_rel[q], k, w->sticks, k, w->origins, k, sbd_halves_z(w));
         if (!isnan(mesh[q]))
             fprintf(f, "%s_rel_mesh = %.4f\n%s_rel_total = %.4f\n%s_z_vs_ladder = %.2f\n", k, mesh[q], k, total[q], k,
                     zlad[q]);
     }
-    if (!isnan(strip_ratio))
-        fprintf(f, "rear_symmetry_strip_ratio = %.3f\n", strip_ratio);
-    fprintf(f, "snow_seconds = %.0f\nrun_seconds = %.0f\n", o.snow_seconds, run_seconds);
+    if (!isnan(s->strip_ratio))
+        fprintf(f, "rear_symmetry_strip_ratio = %.3f\n", s->strip_ratio);
+    fprintf(f, "snow_seconds = %.0f\nrun_seconds = %.0f\n", o.snow_seconds, s->run_seconds);
+    return 0;
+}
 
-    /* snow.md */
-    if (!(f = out_open("snow.md"))) { rc = g_out_rc; goto free_rear; }
+/* snow.md: the run, the deposit per patch, the sensor against time, the errors; 0, or the exit
+ * status of a failed open */
+static int write_snow_md(const snow_post *s)
+{
+    const options o = s->o;
+    const patch *p = s->p;
+    const int np = s->np, have_ladder = s->have_ladder, krow = s->krow;
+    const sbd_ladder *lad = &s->lad;
+    const sbd_ladder_error *lerr = s->lerr;
+    const sbd_window_stat wr = s->wr;
+    const double *q_val = s->q_val, *q_rel = s->q_rel, *mesh = s->mesh, *samp = s->samp, *total = s->total,
+                 *zlad = s->zlad;
+    const double (*cum)[4] = (const double (*)[4])s->cum;
+    const double mult = s->mult, minutes = s->minutes, t0 = s->t0, t1 = s->t1, area_r = s->area_r;
+    const double strip_ratio = s->strip_ratio, run_seconds = s->run_seconds;
+    const char *level = s->level, *cells = s->cells;
+    const char *q_name[2] = {"rear face", "sensor"};
+    FILE *f;
+    if (!(f = out_open("snow.md")))
+        return g_out_rc;
     fprintf(f, "# Snow on the square-back Ahmed body\n\n");
     fprintf(f, "%s level%s%s cells; the snow at %.5g m/s, %ld parcels per nozzle x %ld nozzles, "
                "%ld process(es); the deposit of %.4g min of spray (the sticks of %.6g .. %.6g s). "
@@ -597,8 +700,8 @@ int sbd_cmd_snow_post(int argc, char **argv)
     if (have_ladder) {
         fprintf(f, "### The error against run time (%s)\n\n| level | cells | run time [CPU min] | rear: sampling | mesh | "
                    "total | sensor: sampling | mesh | total |\n|---|---|---|---|---|---|---|---|---|\n", o.ladder);
-        for (int k = 0; k < lad.n; k++) {
-            const sbd_ladder_row *r = &lad.row[k];
+        for (int k = 0; k < lad->n; k++) {
+            const sbd_ladder_row *r = &lad->row[k];
             fprintf(f, "| %s | %ld | %.1f", r->level, r->cells, r->seconds / 60);
             for (int q = 0; q < 2; q++) {
                 fprintf(f, " | %.0f %% | %.0f %% | %.0f %%", 100 * lerr[q].sampling[k], 100 * lerr[q].disc[k],
@@ -610,101 +713,164 @@ int sbd_cmd_snow_post(int argc, char **argv)
                 cells[0] ? cells : "-", run_seconds / 60, 100 * q_rel[0] * q_val[0] / fabs(lerr[0].ref),
                 100 * q_rel[1] * q_val[1] / fabs(lerr[1].ref));
     }
+    return 0;
+}
 
-    /* the pictures: one gnuplot script, its PNGs written to the set's temporaries */
-    {
-        const char *png_map = swo_add(g_set, "rear_deposit.png", err, sizeof err);
-        const char *png_sensor = png_map ? swo_add(g_set, "sensor.png", err, sizeof err) : NULL;
-        const char *png_err = (png_sensor && have_ladder) ? swo_add(g_set, "error_time.png", err, sizeof err) : NULL;
-        if (png_sensor && have_ladder && !png_err)
-            png_sensor = NULL;   /* the failure is reported below */
-        char script[4096];
-        snprintf(script, sizeof script, "%s/.tmp-snow-post-%ld.gp", o.out, (long)getpid());
-        FILE *g = png_sensor ? fopen(script, "w") : NULL;
-        if (!g) {
-            rc = die(png_sensor ? 1 : swo_code(g_set), "%s", png_sensor ? "cannot write the gnuplot script" : err);
-            goto free_rear;
+/* the gnuplot script of the pictures into g, the data inline (the set's files are not final
+ * yet): the rear-face map, the sensor against time, the ladder's errors against run time
+ * (png_err, with --ladder) */
+static void pictures_script(FILE *g, const snow_post *s, const char *png_map, const char *png_sensor,
+                            const char *png_err)
+{
+    const sbd_params bp = s->bp;
+    const sbd_ladder *lad = &s->lad;
+    const sbd_ladder_error *lerr = s->lerr;
+    const double (*cum)[4] = (const double (*)[4])s->cum;
+    const double minutes = s->minutes, ymax = s->ymax, z0 = s->z0, z1 = s->z1, map_max = s->map_max;
+    const char *level = s->level;
+    fprintf(g, "set terminal pngcairo size 900,700 font 'sans,11'\nset output ");
+    gp_quoted(g, png_map);
+    fprintf(g, "\n$map << EOD\n");
+    map_rows(g, ' ', &s->grid);
+    fprintf(g, "EOD\n");
+    fprintf(g, "set title \"Snow on the rear face, %.3g min (%s level; kg/m^2)\"\n", minutes,
+            level[0] ? level : "?");
+    fprintf(g, "set xlabel 'y [m]'\nset ylabel 'z [m]'\nset size ratio -1\nset xrange [%g:%g]\nset yrange [%g:%g]\n",
+            -ymax, ymax, z0, z1);
+    fprintf(g, "set cblabel 'kg/m^2'\nset cbrange [0:%g]\nset palette defined (0 'white', 1 '#9ecae1', 2 '#3182bd', "
+               "3 '#08306b')\n", map_max > 0 ? map_max : 1);
+    fprintf(g, "set object 1 rect from %g,%g to %g,%g front fillstyle empty border lc rgb 'red' lw 2\n",
+            bp.sensor_y - bp.sensor_width / 2, bp.sensor_z - bp.sensor_height / 2,
+            bp.sensor_y + bp.sensor_width / 2, bp.sensor_z + bp.sensor_height / 2);
+    fprintf(g, "set label 1 'sensor' at %g,%g front tc rgb 'red'\n", bp.sensor_y + bp.sensor_width / 2 + 0.005,
+            bp.sensor_z);
+    fprintf(g, "plot $map using 1:2:3 with image notitle\n");
+    fprintf(g, "set output\nunset object 1\nunset label 1\nset size noratio\nset autoscale\nset output ");
+    gp_quoted(g, png_sensor);
+    fprintf(g, "\n$cum << EOD\n");
+    for (int k = 0; k <= MINUTES_STEPS; k++)
+        fprintf(g, "%.5g %.6g %.6g %.6g %.6g\n", minutes * k / MINUTES_STEPS, cum[k][0], cum[k][1], cum[k][2],
+                cum[k][3]);
+    fprintf(g, "EOD\nset title \"Deposit against time (%s level; band: 2 sigma of sampling)\"\n",
+            level[0] ? level : "?");
+    fprintf(g, "set xlabel 'minutes of spray'\nset ylabel 'kg/m^2'\nset key top left\nset grid\n"
+               "set style fill transparent solid 0.25 noborder\n");
+    fprintf(g, "plot $cum using 1:($2-2*$3 > 0 ? $2-2*$3 : 0):($2+2*$3) with filledcurves lc rgb '#e6550d' notitle, "
+               "$cum using 1:2 with lines lw 2 lc rgb '#e6550d' title 'sensor', "
+               "$cum using 1:($4-2*$5 > 0 ? $4-2*$5 : 0):($4+2*$5) with filledcurves lc rgb '#3182bd' notitle, "
+               "$cum using 1:4 with lines lw 2 lc rgb '#3182bd' title 'rear face (mean)'\n");
+    fprintf(g, "set output\n");
+    if (png_err) {   /* the ladder's total error against its run time, log-log */
+        fprintf(g, "unset style\nset style fill solid\nset output ");
+        gp_quoted(g, png_err);
+        fprintf(g, "\n$err << EOD\n");
+        for (int k = 0; k < lad->n; k++) {
+            const sbd_ladder_row *r = &lad->row[k];
+            fprintf(g, "%.6g", r->seconds / 60);
+            for (int q = 0; q < 2; q++)
+                fprintf(g, " %.6g %.6g", 100 * lerr[q].total[k], 100 * lerr[q].sampling[k]);
+            fprintf(g, " %s\n", r->level);
         }
-        swo_signal_scratch(script);
-        /* the data inline (the set's files are not final yet) */
-        fprintf(g, "set terminal pngcairo size 900,700 font 'sans,11'\nset output ");
-        gp_quoted(g, png_map);
-        fprintf(g, "\n$map << EOD\n");
-        map_rows(g, ' ', &grid);
-        fprintf(g, "EOD\n");
-        fprintf(g, "set title \"Snow on the rear face, %.3g min (%s level; kg/m^2)\"\n", minutes,
-                level[0] ? level : "?");
-        fprintf(g, "set xlabel 'y [m]'\nset ylabel 'z [m]'\nset size ratio -1\nset xrange [%g:%g]\nset yrange [%g:%g]\n",
-                -ymax, ymax, z0, z1);
-        fprintf(g, "set cblabel 'kg/m^2'\nset cbrange [0:%g]\nset palette defined (0 'white', 1 '#9ecae1', 2 '#3182bd', "
-                   "3 '#08306b')\n", map_max > 0 ? map_max : 1);
-        fprintf(g, "set object 1 rect from %g,%g to %g,%g front fillstyle empty border lc rgb 'red' lw 2\n",
-                bp.sensor_y - bp.sensor_width / 2, bp.sensor_z - bp.sensor_height / 2,
-                bp.sensor_y + bp.sensor_width / 2, bp.sensor_z + bp.sensor_height / 2);
-        fprintf(g, "set label 1 'sensor' at %g,%g front tc rgb 'red'\n", bp.sensor_y + bp.sensor_width / 2 + 0.005,
-                bp.sensor_z);
-        fprintf(g, "plot $map using 1:2:3 with image notitle\n");
-        fprintf(g, "set output\nunset object 1\nunset label 1\nset size noratio\nset autoscale\nset output ");
-        gp_quoted(g, png_sensor);
-        fprintf(g, "\n$cum << EOD\n");
-        for (int k = 0; k <= MINUTES_STEPS; k++)
-            fprintf(g, "%.5g %.6g %.6g %.6g %.6g\n", minutes * k / MINUTES_STEPS, cum[k][0], cum[k][1], cum[k][2],
-                    cum[k][3]);
-        fprintf(g, "EOD\nset title \"Deposit against time (%s level; band: 2 sigma of sampling)\"\n",
-                level[0] ? level : "?");
-        fprintf(g, "set xlabel 'minutes of spray'\nset ylabel 'kg/m^2'\nset key top left\nset grid\n"
-                   "set style fill transparent solid 0.25 noborder\n");
-        fprintf(g, "plot $cum using 1:($2-2*$3 > 0 ? $2-2*$3 : 0):($2+2*$3) with filledcurves lc rgb '#e6550d' notitle, "
-                   "$cum using 1:2 with lines lw 2 lc rgb '#e6550d' title 'sensor', "
-                   "$cum using 1:($4-2*$5 > 0 ? $4-2*$5 : 0):($4+2*$5) with filledcurves lc rgb '#3182bd' notitle, "
-                   "$cum using 1:4 with lines lw 2 lc rgb '#3182bd' title 'rear face (mean)'\n");
-        fprintf(g, "set output\n");
-        if (png_err) {   /* the ladder's total error against its run time, log-log */
-            fprintf(g, "unset style\nset style fill solid\nset output ");
-            gp_quoted(g, png_err);
-            fprintf(g, "\n$err << EOD\n");
-            for (int k = 0; k < lad.n; k++) {
-                const sbd_ladder_row *r = &lad.row[k];
-                fprintf(g, "%.6g", r->seconds / 60);
-                for (int q = 0; q < 2; q++)
-                    fprintf(g, " %.6g %.6g", 100 * lerr[q].total[k], 100 * lerr[q].sampling[k]);
-                fprintf(g, " %s\n", r->level);
-            }
-            fprintf(g, "EOD\nset title \"Error of the 30-min deposit against run time (the resolution ladder)\"\n"
-                       "set xlabel 'run time: mesh, flow and snow [CPU min]' offset 0,-1\nset ylabel 'error [%%]'\n"
-                       "set logscale xy\nset key outside right top vertical\nset grid\nset autoscale xfix\n"
-                       "set offsets graph 0.1, graph 0.1, 0, 0\nset yrange [*:*]\nset bmargin 6\n");
-            /* the levels named on the run-time axis at their run times (each tic "level\n
-               minutes"), the key right of the data: no label over a point */
-            fprintf(g, "plot $err using 1:2:xtic(sprintf(\"%%s\\n%%.3g\", strcol(6), $1)) with linespoints lw 2 pt 7 "
-                       "lc rgb '#3182bd' title 'rear face, total', "
-                       "$err using 1:3 with linespoints dt 2 pt 6 lc rgb '#3182bd' title 'rear face, sampling', "
-                       "$err using 1:4 with linespoints lw 2 pt 7 lc rgb '#e6550d' title 'sensor, total', "
-                       "$err using 1:5 with linespoints dt 2 pt 6 lc rgb '#e6550d' title 'sensor, sampling'\n"
-                       "set output\n");
-        }
-        int bad = fclose(g);
-        int grc = bad ? -1 : run_gnuplot(script);
-        remove(script);
-        swo_signal_scratch(NULL);
-        if (grc) {
-            rc = die(1, "gnuplot failed on the pictures (is gnuplot with pngcairo installed?)");
-            goto free_rear;
-        }
+        fprintf(g, "EOD\nset title \"Error of the 30-min deposit against run time (the resolution ladder)\"\n"
+                   "set xlabel 'run time: mesh, flow and snow [CPU min]' offset 0,-1\nset ylabel 'error [%%]'\n"
+                   "set logscale xy\nset key outside right top vertical\nset grid\nset autoscale xfix\n"
+                   "set offsets graph 0.1, graph 0.1, 0, 0\nset yrange [*:*]\nset bmargin 6\n");
+        /* the levels named on the run-time axis at their run times (each tic "level\n
+           minutes"), the key right of the data: no label over a point */
+        fprintf(g, "plot $err using 1:2:xtic(sprintf(\"%%s\\n%%.3g\", strcol(6), $1)) with linespoints lw 2 pt 7 "
+                   "lc rgb '#3182bd' title 'rear face, total', "
+                   "$err using 1:3 with linespoints dt 2 pt 6 lc rgb '#3182bd' title 'rear face, sampling', "
+                   "$err using 1:4 with linespoints lw 2 pt 7 lc rgb '#e6550d' title 'sensor, total', "
+                   "$err using 1:5 with linespoints dt 2 pt 6 lc rgb '#e6550d' title 'sensor, sampling'\n"
+                   "set output\n");
     }
+}
+
+/* the pictures: one gnuplot script, its PNGs written to the set's temporaries; 0, or the exit
+ * status with the message printed */
+static int write_pictures(const snow_post *s)
+{
+    const options o = s->o;
+    const int have_ladder = s->have_ladder;
+    char err[2048];
+    const char *png_map = swo_add(g_set, "rear_deposit.png", err, sizeof err);
+    const char *png_sensor = png_map ? swo_add(g_set, "sensor.png", err, sizeof err) : NULL;
+    const char *png_err = (png_sensor && have_ladder) ? swo_add(g_set, "error_time.png", err, sizeof err) : NULL;
+    if (png_sensor && have_ladder && !png_err)
+        png_sensor = NULL;   /* the failure is reported below */
+    char script[4096];
+    snprintf(script, sizeof script, "%s/.tmp-snow-post-%ld.gp", o.out, (long)getpid());
+    FILE *g = png_sensor ? fopen(script, "w") : NULL;
+    if (!g)
+        return die(png_sensor ? 1 : swo_code(g_set), "%s", png_sensor ? "cannot write the gnuplot script" : err);
+    swo_signal_scratch(script);
+    pictures_script(g, s, png_map, png_sensor, png_err);
+    int bad = fclose(g);
+    int grc = bad ? -1 : run_gnuplot(script);
+    remove(script);
+    swo_signal_scratch(NULL);
+    if (grc)
+        return die(1, "gnuplot failed on the pictures (is gnuplot with pngcairo installed?)");
+    return 0;
+}
+
+int sbd_cmd_snow_post(int argc, char **argv)
+{
+    snow_post s;
+    memset(&s, 0, sizeof s);
+    s.o = (options){.cloud = "kinematicCloud", .speed = 0, .processes = 1};
+    int rc = parse_options(argc, argv, &s.o);
+    if (rc < 0)
+        return fflush(stdout) ? 1 : 0;
+    if (rc)
+        return rc;
+    const options *o = &s.o;
+
+    /* the output folder checked before the work */
+    char err[2048];
+    swo_spec spec = {.tool = "snowbody snow-post", .dir = o->out, .force = o->force, .parents = 1};
+    rc = swo_alloc(&spec, &g_set, err, sizeof err);
+    if (rc)
+        return die(rc, "%s", err);
+    if (swo_note(g_set))
+        fprintf(stderr, "snowbody: snow-post: note: %s\n", swo_note(g_set));
+    swo_signals_on();
+
+    /* the ladder and the run's level */
+    s.krow = -1;
+    if ((rc = read_flow_and_ladder(&s)))
+        return rc;
+
+    if ((rc = load_patches(o, s.p, &s.np)))
+        goto done;
+    s.kr = find(s.p, s.np, "ahmed_rear");
+    s.ks = find(s.p, s.np, "ahmed_sensor");
+    if (s.kr < 0 || s.ks < 0) {
+        rc = die(1, "%s: no deposit table of ahmed_rear or ahmed_sensor", o->case_dir);
+        goto done;
+    }
+    s.t0 = o->fill;
+    s.t1 = o->fill + o->sample;
+    s.mult = o->half ? 2 : 1;
+    s.minutes = o->build_up / 60;
+    if ((rc = window_stats(&s)) || (rc = write_deposit_csv(&s)) || (rc = write_sensor_csv(&s)) ||
+        (rc = write_rear_map(&s)))
+        goto done;
+    errors(&s);
+    if ((rc = write_error_time_and_summary(&s)) || (rc = write_snow_md(&s)) || (rc = write_pictures(&s)))
+        goto done;
 
     if ((rc = swo_commit(g_set, err, sizeof err))) {
         rc = die(rc, "%s", err);
-        goto free_rear;
+        goto done;
     }
     printf("sensor: %.3g kg/m2 in %.4g min, sampling %.0f %%%s; rear face %.3g kg/m2, sampling %.0f %%; written to %s/\n",
-           q_val[1], minutes, 100 * q_rel[1], "", q_val[0], 100 * q_rel[0], o.out);
+           s.q_val[1], s.minutes, 100 * s.q_rel[1], "", s.q_val[0], 100 * s.q_rel[0], o->out);
     rc = 0;
-free_rear:
-    sbd_sticks_free(&rear);
 done:
-    for (int k = 0; k < np; k++)
-        sbd_sticks_free(&p[k].st);
+    sbd_sticks_free(&s.rear);
+    for (int k = 0; k < s.np; k++)
+        sbd_sticks_free(&s.p[k].st);
     swo_free(g_set);
     g_set = NULL;
     return rc;
