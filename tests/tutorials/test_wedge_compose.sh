@@ -115,6 +115,10 @@ printf 'y,z,mass_kg,origProc,origId\n0,0,nan,0,1\n' > "$tmp/resE/d10um/rear_reco
 "$C" --results "$tmp/resE" --out "$tmp/outE" --masses "$tmp/masses.csv" > /dev/null 2> "$tmp/err"
 check "a record of mass nan: exit 2, file and line named" \
     "[ $? -eq 2 ] && grep -q 'd10um/rear_records.csv line 2: not y,z,mass_kg' '$tmp/err' && [ ! -e '$tmp/outE' ]"
+printf 'y,z,mass_kg,origProc,origId\n0,0,1e-9,inf,1\n' > "$tmp/resE/d10um/rear_records.csv"
+"$C" --results "$tmp/resE" --out "$tmp/outE" --masses "$tmp/masses.csv" > /dev/null 2> "$tmp/err"
+check "a record of origin inf: exit 2, file and line named" \
+    "[ $? -eq 2 ] && grep -q 'd10um/rear_records.csv line 2: not y,z,mass_kg' '$tmp/err' && [ ! -e '$tmp/outE' ]"
 # bad inputs: exit 2, one line, nothing written
 bad() {  # bad TEXT args...
     local want=$1; shift

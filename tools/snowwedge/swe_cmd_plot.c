@@ -545,8 +545,8 @@ static swe_record *read_class_records(const char *dir, size_t *count, double *ma
         double y, z, m, p, id;
         int used = 0;
         if (sscanf(line, "%lf,%lf,%lf,%lf,%lf%n", &y, &z, &m, &p, &id, &used) != 5 ||
-            (line[used] && line[used] != '\n') || !isfinite(y) || !isfinite(z) || !(m >= 0) ||
-            !isfinite(m) || p != floor(p) || id != floor(id))
+            (line[used] && line[used] != '\n') || !isfinite(y) || !isfinite(z) || !isfinite(m) ||
+            !(m >= 0) || !isfinite(p) || !isfinite(id) || p != floor(p) || id != floor(id))
             die(2, "%s line %d: not y,z,mass_kg,origProc,origId (finite numbers, mass >= 0, "
                    "whole origins)", path, ln);
         if (n == cap) {
