@@ -17,7 +17,7 @@
  *     `"` also ends a word. Without it `"` is a byte of a word like any other.
  * The two files' dialects differ in details that both loaders keep:
  *   regime.coeffs      SWX_STRINGS | SWX_STRICT
- *   deposition.coeffs  0 (a lexer that never fails)
+ *   deposition.coeffs  0 (swx_next never fails)
  * SWX_STRICT: `//` and a C comment's start also end a word; a byte outside
  * isprint inside a word, a word longer than SWX_MAX_TOK - 1 bytes and a C
  * comment without its end are errors. Without it a word holds any byte but
