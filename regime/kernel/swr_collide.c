@@ -218,6 +218,7 @@ static void impact_warnings(const swr_model *m, const swr_impact *in, swr_result
         append_msg(r, "contact shorter than the Rayleigh time: quasi-static contact law doubtful");
 }
 
+/* The outcome of a flat-wall impact as the steps go: open (undecided), bounce or stick. */
 typedef enum { OPEN, BOUNCE, STICK } flat_outcome;
 
 /* A flat-wall impact in scaled units: the constants set up once (flat_setup,
