@@ -171,9 +171,11 @@ static double plastic_closed_form(swr_plastic *pl, double E0, double dstar, doub
     return rebound;
 }
 
-/* The checks of an impact's inputs: SWR_OK, or SWR_EINVAL with the message in r. */
-static swr_status check_impact(const swr_model *m, const swr_impact *in, swr_result *r)
+swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
+                       const swr_trace *trace)
 {
+    memset(r, 0, sizeof *r);
+    r->e_t = NAN;
     if (!m || !in)
         return bad_input(r, "model or impact", NAN, NULL);
     /* each NaN is refused before it is compared: an ordered comparison of a NaN
@@ -193,15 +195,24 @@ static swr_status check_impact(const swr_model *m, const swr_impact *in, swr_res
         return bad_input(r, "x", in->x, "|x| <= 1 m");
     if (isnan(in->y) || !(fabs(in->y) <= 1.0))
         return bad_input(r, "y", in->y, "|y| <= 1 m");
-    return SWR_OK;
-}
+    r->contacts = 1;
+    if (m->wall.type == SWR_WALL_LATTICE)
+        return swr_collide_rough(m, in, r, trace);
 
-/* The warnings of an impact on the flat wall (into r->msg): the dashpot
- * capped, JKR outside its Tabor range, a contact shorter than the Rayleigh time. */
-static void impact_warnings(const swr_model *m, const swr_impact *in, swr_result *r, int plastic,
-                            int damp_both, double R, double tc)
-{
     const swr_params *p = &m->p;
+    /* --- physical quantities of this impact (SI) --- */
+    const double R = swr_wall_rstar(&m->wall, 0.5 * in->d);
+    const double mass = p->rho * (4.0 / 3.0) * M_PI * R * R * R;
+    const double gam = m->adhesive ? p->gamma : 0.0;
+    const double Uc_si = m->adhesive ? swp_jkr_separation_energy(gam, m->Estar, R) : 0.0;
+    const double v_adh = sqrt(2.0 * Uc_si / mass);
+    const double v_ref = in->vn > v_adh ? in->vn : v_adh;
+    const double tc = swp_hertz_contact_time(mass, R, m->Estar, v_ref);
+
+    const int plastic = p->cor == SWR_COR_THORNTON_NING;
+    r->e_target = swr_damping_target(p, m->Estar, R, mass, in->vn);
+    const int damp_both = p->dashpot == SWR_DASHPOT_BOTH;
+    const double alpha = plastic ? 0.0 : swr_damping_alpha_for(p, m->alpha_const, r->e_target);
     if (!plastic && r->e_target < (damp_both ? swr_damping_e_min_both() : m->e_min))
         append_msg(r, "plastic COR below the dashpot table: damping capped");
     if (m->adhesive) {
@@ -216,430 +227,292 @@ static void impact_warnings(const swr_model *m, const swr_impact *in, swr_result
     }
     if (tc < swp_rayleigh_time(R, p->rho, swp_shear_modulus(p->E, p->nu), p->nu))
         append_msg(r, "contact shorter than the Rayleigh time: quasi-static contact law doubtful");
-}
-
-/* The outcome of a flat-wall impact as the steps go: open (undecided), bounce or stick. */
-typedef enum { OPEN, BOUNCE, STICK } flat_outcome;
-
-/* A flat-wall impact in scaled units: the constants set up once (flat_setup,
- * plastic_setup) and the state the velocity-Verlet steps advance (flat_step). */
-typedef struct {
-    /* units and constants of the impact */
-    double mass, gam, T, V, L, u0, sE, Rs, Is, Gs, kd, pk, xic, mu, alpha, E0;
-    int plastic, damp_both, tangential, stride, shortcut;
-    swr_normal nrm;
-    swr_plastic pl;
-    double dstar, h_el, h_yield, h_unload, h_min, t_bound;
-    /* the step, the separation and the energies of the decision */
-    double h, h2, dsep, usep, eref, e_dec;
-    /* state */
-    double t, delta, u, x, fne, fd, fn, vt, w, ft, mr;
-    swr_tangential tan;
-    swr_rolling rol;
-    const swr_normal *act;                           /* curve the tangential laws use */
-    double wd, err, dmax, em, phi_old;
-    flat_outcome outcome;
-    int separated, moving_out;
-    long n;
-    double t_end, vt_out;
-} flat_impact;
-
-/* The physical quantities of the impact (SI) and its warnings; the scaled
- * units, the contact law and the step of the integration into s. */
-static void flat_setup(flat_impact *s, const swr_model *m, const swr_impact *in, swr_result *r,
-                       const swr_trace *trace)
-{
-    const swr_params *p = &m->p;
-    memset(s, 0, sizeof *s);
-    /* --- physical quantities of this impact (SI) --- */
-    const double R = swr_wall_rstar(&m->wall, 0.5 * in->d);
-    s->mass = p->rho * (4.0 / 3.0) * M_PI * R * R * R;
-    s->gam = m->adhesive ? p->gamma : 0.0;
-    const double Uc_si = m->adhesive ? swp_jkr_separation_energy(s->gam, m->Estar, R) : 0.0;
-    const double v_adh = sqrt(2.0 * Uc_si / s->mass);
-    const double v_ref = in->vn > v_adh ? in->vn : v_adh;
-    const double tc = swp_hertz_contact_time(s->mass, R, m->Estar, v_ref);
-
-    s->plastic = p->cor == SWR_COR_THORNTON_NING;
-    r->e_target = swr_damping_target(p, m->Estar, R, s->mass, in->vn);
-    s->damp_both = p->dashpot == SWR_DASHPOT_BOTH;
-    s->alpha = s->plastic ? 0.0 : swr_damping_alpha_for(p, m->alpha_const, r->e_target);
-    impact_warnings(m, in, r, s->plastic, s->damp_both, R, tc);
 
     /* --- scaled units: mass m, speed v_ref = max(vn, v_adh), time tc ---
      * (the adhesive speed keeps the length unit V tc finite for any vn: with
      * vn itself a JKR contact's radii over vn tc overflow below vn ~ 1e-85) */
-    s->T = tc;
-    s->V = v_ref;
-    s->L = s->V * s->T;
-    s->u0 = in->vn / s->V;                           /* impact speed, <= 1 */
-    s->sE = s->L * s->T * s->T / s->mass;            /* modulus: F T^2/(m L) per L^2 */
-    swr_normal_init(&s->nrm, R / s->L, m->Estar * s->sE, s->gam * s->T * s->T / s->mass);
-    s->Rs = R / s->L;
-    s->Is = 0.4 * s->Rs * s->Rs;
-    s->Gs = m->Gstar * s->sE;
-    s->kd = sqrt(2.0 * m->Estar * s->sE * sqrt(s->Rs)); /* c_d = alpha kd delta^(1/4) */
-    s->pk = 0.8 * s->alpha * s->kd;                  /* Phi = pk delta^(5/4) */
-    s->xic = p->xi_crit / s->L;
-    s->mu = p->mu;
+    const double T = tc, V = v_ref, L = V * T;
+    const double u0 = in->vn / V;                    /* impact speed, <= 1 */
+    const double sE = L * T * T / mass;              /* modulus: F T^2/(m L) per L^2 */
+    swr_normal nrm;
+    swr_normal_init(&nrm, R / L, m->Estar * sE, gam * T * T / mass);
+    const double Rs = R / L, Is = 0.4 * Rs * Rs;
+    const double Gs = m->Gstar * sE;
+    const double kd = sqrt(2.0 * m->Estar * sE * sqrt(Rs)); /* c_d = alpha kd delta^(1/4) */
+    const double pk = 0.8 * alpha * kd;              /* Phi = pk delta^(5/4) */
+    const double xic = p->xi_crit / L;
+    const double mu = p->mu;
     /* step: accuracy steps per contact time, the undamped t_c shortened by
      * the damping's loading-time factor */
-    const double g = swr_damping_time_factor(s->alpha);
-    s->h = g / p->accuracy;
-    s->h2 = 0.5 * s->h;
-    s->E0 = 0.5 * s->u0 * s->u0;                     /* kinetic energy at first contact */
-    s->dsep = s->nrm.delta_c;                        /* 0 for Hertz */
-    s->usep = s->nrm.Uc;                             /* energy needed to separate */
+    const double g = swr_damping_time_factor(alpha);
+    double h = g / p->accuracy, h2 = 0.5 * h;
+    const double E0 = 0.5 * u0 * u0;                 /* kinetic energy at first contact */
+    double dsep = nrm.delta_c;                       /* 0 for Hertz */
+    double usep = nrm.Uc;                            /* energy needed to separate */
     /* energy scale of the balance check: the largest of the impact energy,
      * the adhesive separation energy (slow impacts) and the kinetic energy
      * the adhesion's pull gives during the contact */
-    s->eref = s->E0 > s->nrm.Uc ? s->E0 : s->nrm.Uc;
+    double eref = E0 > nrm.Uc ? E0 : nrm.Uc;
     /* no tangential motion and no trace: once the remaining normal motion is
      * conservative, finish it in closed form instead of stepping */
-    s->tangential = in->vt != 0.0 || in->omega != 0.0;
-    s->stride = trace && trace->fn && trace->stride > 0 ? trace->stride : 0;
-    s->shortcut = !s->tangential && !s->stride;
+    const int tangential = in->vt != 0.0 || in->omega != 0.0;
+    const int stride = trace && trace->fn && trace->stride > 0 ? trace->stride : 0;
+    const int shortcut = !tangential && !stride;
 
     /* bound: SWR_CONTACT_TIMES_MAX undamped contact times t_c */
-    s->t_bound = SWR_CONTACT_TIMES_MAX / g;
-    s->dstar = 0.0;
-    s->h_el = s->h_yield = s->h_unload = s->h_min = s->h;
-}
-
-/* Thornton-Ning: the elastic-plastic contact law, its turning point and the
- * steps and step bound of its branches into s. */
-static void plastic_setup(flat_impact *s, const swr_model *m)
-{
-    const swr_params *p = &m->p;
-    swr_plastic_init(&s->pl, s->Rs, m->Estar * s->sE, s->gam * s->T * s->T / s->mass,
-                     swp_limiting_pressure(p->sigma_y) * s->sE);
-    /* the turning point follows from the energy (closed form). Steps:
-     * `accuracy` per time scale of each branch: the elastic loading, the
-     * Hertz time (or the yield branch's, if shorter); the yield branch,
-     * its half period pi/sqrt(k) (F = F_y + k z is harmonic); unloading,
-     * the half period of the flattened contact's stiffness 2 E* a* at
-     * the turning point, if shorter than the Hertz time. */
-    s->dstar = swr_plastic_turning(&s->pl, s->E0);
-    double xs;
-    swr_plastic_load_work(&s->pl, s->dstar, &xs);
-    const double tu = M_PI / sqrt(2.0 * m->Estar * s->sE * xs * xs);
-    const double tp = M_PI / sqrt(s->pl.k);
-    s->h_el = (tp < 1.0 ? tp : 1.0) / p->accuracy;
-    s->h_yield = tp / p->accuracy;
-    s->h_unload = (tu < 1.0 ? tu : 1.0) / p->accuracy;
-    s->h = s->pl.dy > 0.0 ? s->h_el : s->h_yield;   /* dy = 0: yields from the first touch */
-    s->h2 = 0.5 * s->h;
-    s->h_min = fmin(s->h_el, fmin(s->h_yield, s->h_unload));
-    s->t_bound = SWR_CONTACT_TIMES_MAX * (1.0 + tu + tp);
-}
-
-/* Thornton-Ning without tangential motion and trace: the whole impact in
- * closed form (plastic_closed_form) into r. */
-static swr_status plastic_result(flat_impact *s, swr_result *r)
-{
-    double t_turn, t_sep;
-    const double reb = plastic_closed_form(&s->pl, s->E0, s->dstar, &t_turn, &t_sep);
-    r->status = SWR_OK;
-    r->dt = 0.0;
-    r->steps = 0;
-    r->max_steps = 0;
-    r->delta_max = s->dstar * s->L;
-    r->energy_err = 0.0;
-    r->contact_kept = !(reb > 0.0);
-    r->stick = r->contact_kept;
-    r->e_n = reb > 0.0 ? sqrt(2.0 * reb) / s->u0 : 0.0;
-    r->t_contact = (reb > 0.0 ? t_sep : t_turn) * s->T;
-    return SWR_OK;
-}
-
-/* The state at first contact (jump-in for JKR), its trace point and the
- * outcomes known already then. */
-static void flat_start(flat_impact *s, const swr_impact *in, const swr_trace *trace)
-{
-    /* zero from flat_setup: t, delta, fd, the tangential and rolling springs,
-     * ft, mr, wd, err, dmax, phi_old, separated, moving_out, t_end, n */
-    s->u = s->u0;
-    s->x = s->nrm.xj;
-    s->fne = swr_normal_force(&s->nrm, s->x);
-    s->fn = s->fne;
-    s->vt = in->vt / s->V;
-    s->w = in->omega * s->T;
-    s->act = &s->nrm;
-    s->em = s->E0;
-    s->e_dec = s->E0;   /* normal energy from the decision on (conserved) */
-    s->outcome = OPEN;
-    s->vt_out = s->vt;
-
-    if (s->stride)
-        trace->fn(trace->ctx, 0.0, 0.0, in->vn, s->fn * s->mass * s->L / (s->T * s->T),
-                  s->x * s->x * s->L, in->vt, in->omega);
-    /* Known at first contact: with E0 <= U_c it can never escape (damping
-     * only removes energy); undamped, the energy is conserved. */
-    if (s->plastic)
-        ; /* decided on the unloading curve */
-    else if (s->E0 <= s->nrm.Uc)
-        s->outcome = STICK;
-    else if (s->alpha == 0.0)
-        s->outcome = BOUNCE;
-}
-
-/* Thornton-Ning, turned: unload from the turning point of the energy balance.
- * The normal motion does not depend on the tangential one and is
- * conservative from here, so the outcome is decided now by the exact energy
- * (as in the closed form); the steps go on for the tangential motion (and
- * the trace) of a bounce. */
-static void plastic_turned(flat_impact *s)
-{
-    swr_plastic_unload(&s->pl, s->dstar);
-    s->act = &s->pl.un;
-    s->x = s->pl.xstar;
-    s->dsep = swr_plastic_separation_overlap(&s->pl);
-    s->usep = swr_plastic_separation_energy(&s->pl);
-    if (s->E0 <= s->usep) {
-        s->outcome = STICK;
-        s->t_end = s->t - s->h2;
-    } else {
-        s->outcome = BOUNCE;
-        s->e_dec = s->E0;
-        s->moving_out = 1;
-    }
-}
-
-/* The closing kick of the normal motion at the drifted overlap: the contact
- * force and the dashpot (the kick's half-step velocity uh, the step's old
- * overlap, velocity and dashpot force). */
-static void normal_kick(flat_impact *s, double uh, double d_old, double u_old, double fd_old)
-{
-    if (s->plastic) {
-        s->fne = swr_plastic_force(&s->pl, s->delta, &s->x);
-    } else {
-        s->x = swr_normal_x(&s->nrm, s->delta, s->x);
-        s->fne = swr_normal_force(&s->nrm, s->x);
-    }
-    /* closing kick. The dashpot acts while loading, with its exact
-     * impulse over the step (swr_damping.h: the opening kick took
-     * h/2 F_d(old), the rest is applied here). */
-    s->u = uh - s->h2 * s->fne;
-    const double phi = swr_dashpot_potential(s->pk, s->delta);
-    s->fd = 0.0;
-    if ((uh > 0.0 || (s->damp_both && (s->delta > 0.0 || d_old > 0.0))) && s->alpha > 0.0) {
-        s->u = swr_dashpot_step(s->u, phi - s->phi_old, s->h2 * fd_old, u_old, &s->wd);
-        if ((s->u > 0.0 || s->damp_both) && s->delta > 0.0)
-            s->fd = swr_dashpot_force(s->alpha, s->kd, s->delta, s->u);
-    } else if (fd_old != 0.0) {
-        s->u += s->h2 * fd_old; /* loading ended: undo the opening kick's dashpot part */
-    }
-    s->phi_old = phi;
-    s->fn = s->fne + s->fd;
-}
-
-/* The tangential spring and rolling resistance over the drift's slip and
- * rolling increments, and the closing kick of the tangential motion (from
- * the opening kick's half-step velocities vth, wh). */
-static void tangential_kick(flat_impact *s, const swr_model *m, double vth, double wh)
-{
-    const double a = s->x * s->x;
-    /* Coulomb limit on the whole contact load: the dashpot stands for
-     * the plastic contact pressure while loading */
-    s->ft = swr_tangential_update(&s->tan, s->h * (vth + s->Rs * wh),
-                                  swr_tangential_stiffness(s->Gs, a),
-                                  swr_tangential_limit(s->mu, s->fn, s->act->Fc));
-    if (m->adhesive)
-        s->mr = swr_rolling_update(&s->rol, -s->h * s->Rs * wh,
-                                   swr_rolling_stiffness(s->act->Fc, a, s->act->a0), s->xic);
-    s->vt = vth + s->h2 * s->ft;
-    s->w = wh + s->h2 * (s->Rs * s->ft + s->mr) / s->Is;
-}
-
-/* Hertz, JKR and the dashpot: the outcome once the energy after the step
- * decides it, and back to the undamped step for an elastic remainder. */
-static void elastic_decision(flat_impact *s, const swr_params *p)
-{
-    if (s->em <= s->usep) {
-        /* it can never reach delta_c: damping only removes energy */
-        s->outcome = STICK;
-        s->t_end = s->t;
-    } else if (s->u < 0.0 && !(s->damp_both && s->alpha > 0.0 && s->delta > 0.0)) {
-        /* moving out: undamped from here on, and with E > U_c the
-         * energy exceeds U everywhere between here and delta_c (U
-         * falls to its minimum at delta(a0), then rises to U_c), so
-         * it escapes. (At u = 0 an attractive force may still pull
-         * it back in: no decision there.) */
-        s->outcome = BOUNCE;
-        s->e_dec = s->em < s->E0 ? s->em : s->E0;
-        /* the elastic remainder is slower than the damped loading:
-         * back to the undamped step */
-        s->h = 1.0 / p->accuracy;
-        s->h2 = 0.5 * s->h;
-    }
-}
-
-/* One velocity-Verlet step (kick, drift, closing kick), the energy balance,
- * the trace and the decisions: 1 when the contact is over (separated), else 0. */
-static int flat_step(flat_impact *s, const swr_model *m, const swr_trace *trace)
-{
-    /* kick */
-    const double uh = s->u - s->h2 * s->fn;
-    const double vth = s->vt + s->h2 * s->ft;
-    const double wh = s->w + s->h2 * (s->Rs * s->ft + s->mr) / s->Is;
-    const double d_old = s->delta, u_old = s->u, fd_old = s->fd;
-    /* drift */
-    s->delta += s->h * uh;
-    s->n++;
-    s->t += s->h;
-    if (s->plastic && uh < 0.0 && s->pl.branch != SWR_PL_UNLOAD)
-        plastic_turned(s);
-    if (s->delta < s->dsep || (s->act->gamma == 0.0 && s->delta <= s->dsep)) {
-        /* the contact breaks during this drift (undamped since u < 0) */
-        s->t_end = s->t - s->h + s->h * (d_old - s->dsep) / (d_old - s->delta);
-        s->vt_out = vth;
-        s->separated = 1;
-        if (s->outcome == OPEN)
-            s->e_dec = s->em < s->E0 ? s->em : s->E0;
-        s->outcome = BOUNCE;
-        return 1;
-    }
-    normal_kick(s, uh, d_old, u_old, fd_old);
-    if (s->tangential)
-        tangential_kick(s, m, vth, wh);
-    if (s->delta > s->dmax)
-        s->dmax = s->delta;
-
-    s->em = 0.5 * s->u * s->u + (s->plastic ? swr_plastic_energy(&s->pl, s->delta, s->x)
-                                            : swr_normal_energy(&s->nrm, s->x));
-    if (0.5 * s->u * s->u > s->eref)
-        s->eref = 0.5 * s->u * s->u;
-    const double e_err = fabs(s->em + s->wd - s->E0) / s->eref;
-    if (e_err > s->err)
-        s->err = e_err;
-    if (s->stride && s->n % s->stride == 0)
-        trace->fn(trace->ctx, s->t * s->T, s->delta * s->L, s->u * s->V,
-                  s->fn * s->mass * s->L / (s->T * s->T), s->x * s->x * s->L, s->vt * s->V,
-                  s->w / s->T);
-    if (s->u < 0.0)
-        s->moving_out = 1;
-    if (s->outcome == BOUNCE && s->moving_out && s->u > 0.0) {
-        /* Turned back after a bounce decision: only possible within the
-         * integration error of E - U_c, right at the threshold. The
-         * decision stands (it used the energy); finish in closed form. */
-        s->t_end = s->t + (s->plastic ? travel_time(s->act, s->e_dec - s->pl.Wstar + s->pl.Ustar,
-                                                    s->act->xf, s->x)
-                                      : travel_time(&s->nrm, s->e_dec, s->nrm.xf, s->x));
-        s->vt_out = s->vt;
-        s->separated = 1;
-        return 1;
-    }
-    if (s->outcome == OPEN && !s->plastic)
-        elastic_decision(s, &m->p);
-    if (s->plastic) {
-        /* the next step on the branch the contact is on now */
-        const double hb = s->pl.branch == SWR_PL_UNLOAD ? s->h_unload
-                        : s->pl.branch == SWR_PL_YIELD ? s->h_yield : s->h_el;
-        if (hb != s->h) {
-            s->h = hb;
-            s->h2 = 0.5 * s->h;
+    double t_bound = SWR_CONTACT_TIMES_MAX / g;
+    swr_plastic pl;
+    double dstar = 0.0, h_el = h, h_yield = h, h_unload = h, h_min = h;
+    if (plastic) {
+        swr_plastic_init(&pl, Rs, m->Estar * sE, gam * T * T / mass,
+                         swp_limiting_pressure(p->sigma_y) * sE);
+        /* the turning point follows from the energy (closed form). Steps:
+         * `accuracy` per time scale of each branch: the elastic loading, the
+         * Hertz time (or the yield branch's, if shorter); the yield branch,
+         * its half period pi/sqrt(k) (F = F_y + k z is harmonic); unloading,
+         * the half period of the flattened contact's stiffness 2 E* a* at
+         * the turning point, if shorter than the Hertz time. */
+        dstar = swr_plastic_turning(&pl, E0);
+        double xs;
+        swr_plastic_load_work(&pl, dstar, &xs);
+        const double tu = M_PI / sqrt(2.0 * m->Estar * sE * xs * xs);
+        const double tp = M_PI / sqrt(pl.k);
+        h_el = (tp < 1.0 ? tp : 1.0) / p->accuracy;
+        h_yield = tp / p->accuracy;
+        h_unload = (tu < 1.0 ? tu : 1.0) / p->accuracy;
+        h = pl.dy > 0.0 ? h_el : h_yield;    /* dy = 0: yields from the first touch */
+        h2 = 0.5 * h;
+        h_min = fmin(h_el, fmin(h_yield, h_unload));
+        t_bound = SWR_CONTACT_TIMES_MAX * (1.0 + tu + tp);
+        if (shortcut) {
+            double t_turn, t_sep;
+            const double reb = plastic_closed_form(&pl, E0, dstar, &t_turn, &t_sep);
+            r->status = SWR_OK;
+            r->dt = 0.0;
+            r->steps = 0;
+            r->max_steps = 0;
+            r->delta_max = dstar * L;
+            r->energy_err = 0.0;
+            r->contact_kept = !(reb > 0.0);
+            r->stick = r->contact_kept;
+            r->e_n = reb > 0.0 ? sqrt(2.0 * reb) / u0 : 0.0;
+            r->t_contact = (reb > 0.0 ? t_sep : t_turn) * T;
+            return SWR_OK;
         }
     }
-    return 0;
-}
+    if (!plastic)
+        h_min = h;
+    r->dt = h_min * T;
+    r->max_steps = (long)ceil(t_bound / h_min) + 16;
 
-/* After the steps: the status, a bounce's conservative remainder in closed
- * form, the step bound, and the overlap of a stick decided at first contact. */
-static void flat_finish(flat_impact *s, swr_result *r)
-{
-    r->status = SWR_OK;
-    if (s->outcome == BOUNCE && !s->separated) {
-        if (s->shortcut) {
-            /* conservative remainder with energy e_dec, closed form */
-            double xs = s->nrm.xf;            /* separation: a_f, or 0 for Hertz */
-            if (s->u > 0.0) {                 /* still loading (undamped run) */
-                const double xm = swr_normal_turning_x(&s->nrm, s->e_dec, s->x);
-                s->t += travel_time(&s->nrm, s->e_dec, s->x, xm)
-                      + travel_time(&s->nrm, s->e_dec, xs, xm);
-                const double dm = xm * xm * xm * xm / s->nrm.R - s->nrm.C * xm;
-                if (dm > s->dmax)
-                    s->dmax = dm;
+    /* --- state at first contact (jump-in for JKR) --- */
+    double t = 0.0, delta = 0.0, u = u0;
+    double x = nrm.xj;
+    double fne = swr_normal_force(&nrm, x), fd = 0.0, fn = fne;
+    double vt = in->vt / V, w = in->omega * T;
+    swr_tangential tan = { 0.0, 0, 0.0 };
+    swr_rolling rol = { 0.0, 0, 0.0 };
+    const swr_normal *act = &nrm;                    /* curve the tangential laws use */
+    double ft = 0.0, mr = 0.0;
+    double wd = 0.0, err = 0.0, dmax = 0.0, em = E0, phi_old = 0.0;
+    double e_dec = E0;   /* normal energy from the decision on (conserved) */
+    enum { OPEN, BOUNCE, STICK } outcome = OPEN;
+    int separated = 0, moving_out = 0;
+    double t_end = 0.0, vt_out = vt;
+
+    if (stride)
+        trace->fn(trace->ctx, 0.0, 0.0, in->vn, fn * mass * L / (T * T), x * x * L, in->vt,
+                  in->omega);
+    /* Known at first contact: with E0 <= U_c it can never escape (damping
+     * only removes energy); undamped, the energy is conserved. */
+    if (plastic)
+        ; /* decided on the unloading curve */
+    else if (E0 <= nrm.Uc)
+        outcome = STICK;
+    else if (alpha == 0.0)
+        outcome = BOUNCE;
+
+    long n = 0;
+    while (outcome != STICK && !(outcome == BOUNCE && shortcut) && n < r->max_steps) {
+        /* kick */
+        const double uh = u - h2 * fn;
+        const double vth = vt + h2 * ft;
+        const double wh = w + h2 * (Rs * ft + mr) / Is;
+        const double d_old = delta, u_old = u, fd_old = fd;
+        /* drift */
+        delta += h * uh;
+        n++;
+        t += h;
+        if (plastic && uh < 0.0 && pl.branch != SWR_PL_UNLOAD) {
+            /* turned: unload from the turning point of the energy balance.
+             * The normal motion does not depend on the tangential one and is
+             * conservative from here, so the outcome is decided now by the
+             * exact energy (as in the closed form); the steps go on for the
+             * tangential motion (and the trace) of a bounce. */
+            swr_plastic_unload(&pl, dstar);
+            act = &pl.un;
+            x = pl.xstar;
+            dsep = swr_plastic_separation_overlap(&pl);
+            usep = swr_plastic_separation_energy(&pl);
+            if (E0 <= usep) {
+                outcome = STICK;
+                t_end = t - h2;
             } else {
-                s->t += travel_time(&s->nrm, s->e_dec, xs, s->x);
+                outcome = BOUNCE;
+                e_dec = E0;
+                moving_out = 1;
             }
-            s->t_end = s->t;
-            s->separated = 1;
+        }
+        if (delta < dsep || (act->gamma == 0.0 && delta <= dsep)) {
+            /* the contact breaks during this drift (undamped since u < 0) */
+            t_end = t - h + h * (d_old - dsep) / (d_old - delta);
+            vt_out = vth;
+            separated = 1;
+            if (outcome == OPEN)
+                e_dec = em < E0 ? em : E0;
+            outcome = BOUNCE;
+            break;
+        }
+        if (plastic) {
+            fne = swr_plastic_force(&pl, delta, &x);
+        } else {
+            x = swr_normal_x(&nrm, delta, x);
+            fne = swr_normal_force(&nrm, x);
+        }
+        /* closing kick. The dashpot acts while loading, with its exact
+         * impulse over the step (swr_damping.h: the opening kick took
+         * h/2 F_d(old), the rest is applied here). */
+        u = uh - h2 * fne;
+        const double phi = swr_dashpot_potential(pk, delta);
+        fd = 0.0;
+        if ((uh > 0.0 || (damp_both && (delta > 0.0 || d_old > 0.0))) && alpha > 0.0) {
+            u = swr_dashpot_step(u, phi - phi_old, h2 * fd_old, u_old, &wd);
+            if ((u > 0.0 || damp_both) && delta > 0.0)
+                fd = swr_dashpot_force(alpha, kd, delta, u);
+        } else if (fd_old != 0.0) {
+            u += h2 * fd_old; /* loading ended: undo the opening kick's dashpot part */
+        }
+        phi_old = phi;
+        fn = fne + fd;
+        if (tangential) {
+            const double a = x * x;
+            /* Coulomb limit on the whole contact load: the dashpot stands for
+             * the plastic contact pressure while loading */
+            ft = swr_tangential_update(&tan, h * (vth + Rs * wh), swr_tangential_stiffness(Gs, a),
+                                       swr_tangential_limit(mu, fn, act->Fc));
+            if (m->adhesive)
+                mr = swr_rolling_update(&rol, -h * Rs * wh, swr_rolling_stiffness(act->Fc, a, act->a0),
+                                        xic);
+            vt = vth + h2 * ft;
+            w = wh + h2 * (Rs * ft + mr) / Is;
+        }
+        if (delta > dmax)
+            dmax = delta;
+
+        em = 0.5 * u * u + (plastic ? swr_plastic_energy(&pl, delta, x) : swr_normal_energy(&nrm, x));
+        if (0.5 * u * u > eref)
+            eref = 0.5 * u * u;
+        const double e_err = fabs(em + wd - E0) / eref;
+        if (e_err > err)
+            err = e_err;
+        if (stride && n % stride == 0)
+            trace->fn(trace->ctx, t * T, delta * L, u * V, fn * mass * L / (T * T), x * x * L,
+                      vt * V, w / T);
+        if (u < 0.0)
+            moving_out = 1;
+        if (outcome == BOUNCE && moving_out && u > 0.0) {
+            /* Turned back after a bounce decision: only possible within the
+             * integration error of E - U_c, right at the threshold. The
+             * decision stands (it used the energy); finish in closed form. */
+            t_end = t + (plastic ? travel_time(act, e_dec - pl.Wstar + pl.Ustar, act->xf, x)
+                                 : travel_time(&nrm, e_dec, nrm.xf, x));
+            vt_out = vt;
+            separated = 1;
+            break;
+        }
+        if (outcome == OPEN && !plastic) {
+            if (em <= usep) {
+                /* it can never reach delta_c: damping only removes energy */
+                outcome = STICK;
+                t_end = t;
+            } else if (u < 0.0 && !(damp_both && alpha > 0.0 && delta > 0.0)) {
+                /* moving out: undamped from here on, and with E > U_c the
+                 * energy exceeds U everywhere between here and delta_c (U
+                 * falls to its minimum at delta(a0), then rises to U_c), so
+                 * it escapes. (At u = 0 an attractive force may still pull
+                 * it back in: no decision there.) */
+                outcome = BOUNCE;
+                e_dec = em < E0 ? em : E0;
+                /* the elastic remainder is slower than the damped loading:
+                 * back to the undamped step */
+                h = 1.0 / p->accuracy;
+                h2 = 0.5 * h;
+            }
+        }
+        if (plastic) {
+            /* the next step on the branch the contact is on now */
+            const double hb = pl.branch == SWR_PL_UNLOAD ? h_unload
+                            : pl.branch == SWR_PL_YIELD ? h_yield : h_el;
+            if (hb != h) {
+                h = hb;
+                h2 = 0.5 * h;
+            }
+        }
+    }
+
+    r->status = SWR_OK;
+    if (outcome == BOUNCE && !separated) {
+        if (shortcut) {
+            /* conservative remainder with energy e_dec, closed form */
+            double xs = nrm.xf;               /* separation: a_f, or 0 for Hertz */
+            if (u > 0.0) {                    /* still loading (undamped run) */
+                const double xm = swr_normal_turning_x(&nrm, e_dec, x);
+                t += travel_time(&nrm, e_dec, x, xm) + travel_time(&nrm, e_dec, xs, xm);
+                const double dm = xm * xm * xm * xm / nrm.R - nrm.C * xm;
+                if (dm > dmax)
+                    dmax = dm;
+            } else {
+                t += travel_time(&nrm, e_dec, xs, x);
+            }
+            t_end = t;
+            separated = 1;
         } else {
             r->status = SWR_STEP_BOUND;
         }
-    } else if (s->outcome == OPEN) {
+    } else if (outcome == OPEN) {
         r->status = SWR_STEP_BOUND;
-        s->outcome = STICK; /* still in contact: best estimate */
-        s->t_end = s->t;
+        outcome = STICK; /* still in contact: best estimate */
+        t_end = t;
     }
     if (r->status == SWR_STEP_BOUND) {
         append_msg(r, "step bound reached: outcome is the best estimate");
-        s->vt_out = s->vt;
+        vt_out = vt;
     }
-    if (s->outcome == STICK && s->n == 0 && !s->plastic) {
+    if (outcome == STICK && n == 0 && !plastic) {
         /* decided at first contact: the overlap an undamped approach reaches
          * (an upper bound when damped) */
-        const double xm = swr_normal_turning_x(&s->nrm, s->E0, s->nrm.xj);
-        s->dmax = xm * xm * xm * xm / s->nrm.R - s->nrm.C * xm;
+        const double xm = swr_normal_turning_x(&nrm, E0, nrm.xj);
+        dmax = xm * xm * xm * xm / nrm.R - nrm.C * xm;
     }
-}
-
-/* The outcome into r: rebound, contact time, overlap, energy error, and for a
- * kept contact when and where sliding and rolling stop. Returns r->status. */
-static swr_status flat_result(const flat_impact *s, const swr_impact *in, swr_result *r)
-{
-    r->steps = s->n;
-    r->contact_kept = s->outcome == STICK;
+    r->steps = n;
+    r->contact_kept = outcome == STICK;
     /* rebound speed from the conserved energy past the decision */
-    r->e_n = s->outcome == BOUNCE ? sqrt(2.0 * fmax(s->e_dec - s->usep, 0.0)) / s->u0 : 0.0;
-    r->t_contact = s->t_end * s->T;
-    r->delta_max = s->dmax * s->L;
-    r->energy_err = s->err;
-    if (s->outcome == BOUNCE) {
+    r->e_n = outcome == BOUNCE ? sqrt(2.0 * fmax(e_dec - usep, 0.0)) / u0 : 0.0;
+    r->t_contact = t_end * T;
+    r->delta_max = dmax * L;
+    r->energy_err = err;
+    if (outcome == BOUNCE) {
         if (in->vt > 0.0)
-            r->e_t = s->vt_out * s->V / in->vt;
+            r->e_t = vt_out * V / in->vt;
         r->stick = 0;
     } else {
         /* sliding and rolling of the adhered sphere stop under the adhesive
          * resistances; predict when and where (doc/kernel.md) */
-        const double fs = s->mu * 2.0 * s->act->Fc, ml = 4.0 * s->act->Fc * s->xic;
+        const double fs = mu * 2.0 * act->Fc, ml = 4.0 * act->Fc * xic;
         double tr = 0.0, sr = 0.0;
-        r->stick = s->tangential ? swr_tangential_rest(1.0, s->Rs, s->Is, fs, ml, s->vt, s->w, &tr, &sr)
-                                 : 1;
-        r->t_rest = tr * s->T;
-        r->s_rest = sr * s->L;
+        r->stick = tangential ? swr_tangential_rest(1.0, Rs, Is, fs, ml, vt, w, &tr, &sr) : 1;
+        r->t_rest = tr * T;
+        r->s_rest = sr * L;
     }
     return r->status;
-}
-
-swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
-                       const swr_trace *trace)
-{
-    memset(r, 0, sizeof *r);
-    r->e_t = NAN;
-    const swr_status st = check_impact(m, in, r);
-    if (st != SWR_OK)
-        return st;
-    r->contacts = 1;
-    if (m->wall.type == SWR_WALL_LATTICE)
-        return swr_collide_rough(m, in, r, trace);
-
-    flat_impact s;
-    flat_setup(&s, m, in, r, trace);
-    if (s.plastic) {
-        plastic_setup(&s, m);
-        if (s.shortcut)
-            return plastic_result(&s, r);
-    }
-    if (!s.plastic)
-        s.h_min = s.h;
-    r->dt = s.h_min * s.T;
-    r->max_steps = (long)ceil(s.t_bound / s.h_min) + 16;
-
-    flat_start(&s, in, trace);
-    while (s.outcome != STICK && !(s.outcome == BOUNCE && s.shortcut) && s.n < r->max_steps)
-        if (flat_step(&s, m, trace))
-            break;
-    flat_finish(&s, r);
-    return flat_result(&s, in, r);
 }
