@@ -2,6 +2,7 @@
  * classes, halves' z-test (swe_stats.h). */
 #include "swe_stats.h"
 
+#include "spo_origin.h"
 #include "swe_spray.h"
 
 #include <gsl/gsl_cdf.h>
@@ -36,24 +37,6 @@ int swe_region_of(const double o[4], double y, double z)
     return -1;
 }
 
-typedef struct {
-    int region;
-    long proc, id;
-    double mass;
-} tagged;
-
-static int by_origin(const void *pa, const void *pb)
-{
-    const tagged *a = pa, *b = pb;
-    if (a->region != b->region)
-        return a->region < b->region ? -1 : 1;
-    if (a->proc != b->proc)
-        return a->proc < b->proc ? -1 : 1;
-    if (a->id != b->id)
-        return a->id < b->id ? -1 : 1;
-    return 0;
-}
-
 int swe_rear_stats(const swe_record *rec, size_t n, const double o[4],
                    swe_region_stats out[SWE_NREGION], char *err, size_t errlen)
 {
@@ -67,33 +50,24 @@ int swe_rear_stats(const swe_record *rec, size_t n, const double o[4],
     }
     if (n == 0)
         return 0;
-    tagged *t = malloc(2 * n * sizeof *t);
+    /* a record is in the whole face and in its region, if any: the bins are the regions */
+    spo_record *t = malloc(2 * n * sizeof *t);
     if (!t)
         return SWE_ENOMEM;
     size_t m = 0;
     for (size_t i = 0; i < n; i++) {
-        t[m++] = (tagged){SWE_FACE, rec[i].proc, rec[i].id, rec[i].mass};
+        t[m++] = (spo_record){SWE_FACE, 0, rec[i].proc, rec[i].id, rec[i].mass};
         const int r = swe_region_of(o, rec[i].y, rec[i].z);
         if (r >= 0)
-            t[m++] = (tagged){r, rec[i].proc, rec[i].id, rec[i].mass};
+            t[m++] = (spo_record){r, 0, rec[i].proc, rec[i].id, rec[i].mass};
     }
-    qsort(t, m, sizeof *t, by_origin);
-    double s2[SWE_NREGION] = {0};
-    for (size_t i = 0; i < m;) {
-        size_t j = i;
-        double wa = 0;
-        while (j < m && by_origin(t + i, t + j) == 0)
-            wa += t[j++].mass;
-        swe_region_stats *st = &out[t[i].region];
-        st->n += (long)(j - i);
-        st->origins++;
-        st->mass += wa;
-        s2[t[i].region] += wa * wa;
-        i = j;
-    }
-    for (int r = 0; r < SWE_NREGION; r++)
-        out[r].neff = (s2[r] > 0) ? out[r].mass * out[r].mass / s2[r] : 0;
+    spo_bin b[SWE_NREGION];
+    const int rc = spo_origin_bins(t, m, SWE_NREGION, b, err, errlen);
     free(t);
+    if (rc)
+        return SWE_EINVAL;
+    for (int r = 0; r < SWE_NREGION; r++)
+        out[r] = (swe_region_stats){b[r].n, b[r].origins, b[r].mass, spo_neff(&b[r])};
     return 0;
 }
 

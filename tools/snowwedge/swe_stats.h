@@ -13,7 +13,8 @@
  * The effective sample size of a region is n_eff = (sum_a W_a)^2 / sum_a W_a^2
  * over the independent origins a (injected parcels whose copies a splitting
  * made share their origin), W_a the mass of origin a's records; 1/sqrt(n_eff)
- * is the relative standard error of the region's mass. */
+ * is the relative standard error of the region's mass (the sums by origin:
+ * tools/snowpost/spo_origin.h). */
 #ifndef SWE_STATS_H
 #define SWE_STATS_H
 
