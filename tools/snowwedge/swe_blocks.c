@@ -2,29 +2,12 @@
  * sampling error (swe_blocks.h). */
 #include "swe_blocks.h"
 
+#include "spo_origin.h"
 #include "swe_spray.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-
-typedef struct {
-    int block;
-    long proc, id;
-    double mass;
-} tagged;
-
-static int by_block_origin(const void *pa, const void *pb)
-{
-    const tagged *a = pa, *b = pb;
-    if (a->block != b->block)
-        return a->block < b->block ? -1 : 1;
-    if (a->proc != b->proc)
-        return a->proc < b->proc ? -1 : 1;
-    if (a->id != b->id)
-        return a->id < b->id ? -1 : 1;
-    return 0;
-}
 
 /* the cell of t in [0, 1) of nb cells, the outside to the nearest */
 static int cell_of(double t, int nb)
@@ -68,12 +51,11 @@ int swe_blocks(const swe_block_class *c, size_t nc, const double o[4], int nb, s
         }
         most = c[k].n > most ? c[k].n : most;
     }
-    tagged *t = most ? malloc(most * sizeof *t) : NULL;
-    double *sum = calloc((size_t)nb * nb, sizeof *sum), *s2 = calloc((size_t)nb * nb, sizeof *s2);
-    if ((most && !t) || !sum || !s2) {
+    spo_record *t = most ? malloc(most * sizeof *t) : NULL;
+    spo_bin *bin = malloc((size_t)nb * nb * sizeof *bin);
+    if ((most && !t) || !bin) {
         free(t);
-        free(sum);
-        free(s2);
+        free(bin);
         return fail(err, errlen, SWE_ENOMEM, "out of memory");
     }
     for (size_t k = 0; k < nc; k++) {
@@ -82,34 +64,25 @@ int swe_blocks(const swe_block_class *c, size_t nc, const double o[4], int nb, s
             const swe_record *r = &c[k].rec[i];
             const int bi = cell_of((r->y - o[0]) / (o[1] - o[0]), nb),
                       bj = cell_of((o[3] - r->z) / (o[3] - o[2]), nb);
-            t[i] = (tagged){bj * nb + bi, r->proc, r->id, r->mass};
+            t[i] = (spo_record){bj * nb + bi, 0, r->proc, r->id, r->mass};
         }
-        if (c[k].n)
-            qsort(t, c[k].n, sizeof *t, by_block_origin);
-        for (int b = 0; b < nb * nb; b++)
-            sum[b] = s2[b] = 0;
-        for (size_t i = 0; i < c[k].n;) {
-            size_t j = i;
-            double wa = 0;
-            while (j < c[k].n && by_block_origin(t + i, t + j) == 0)
-                wa += t[j++].mass;
-            sum[t[i].block] += wa;
-            s2[t[i].block] += wa * wa;
-            out[t[i].block].records += (long)(j - i);
-            i = j;
+        if (spo_origin_bins(t, c[k].n, nb * nb, bin, err, errlen)) {
+            free(t);
+            free(bin);
+            return SWE_EINVAL;
         }
         /* D_kb = s M / A, its variance D_kb^2 / n_eff = (s / A)^2 sum_a W_a^2 */
         const double f = c[k].scale / area;
         for (int b = 0; b < nb * nb; b++) {
-            out[b].deposit += f * sum[b];
-            out[b].var += f * f * s2[b];
+            out[b].deposit += f * bin[b].mass;
+            out[b].var += f * f * bin[b].s2;
+            out[b].records += bin[b].n;
         }
     }
     for (int b = 0; b < nb * nb; b++)
         out[b].rel = out[b].deposit > 0 ? sqrt(out[b].var) / out[b].deposit : 0;
     free(t);
-    free(sum);
-    free(s2);
+    free(bin);
     return 0;
 }
 
