@@ -2,6 +2,7 @@
  * window's mass and its sampling error by origin, the halves, the map, and the
  * resolution ladder (sbd_snow.h). */
 #include "sbd_snow.h"
+#include "spo_origin.h"
 #include "swg_ladder.h"
 
 #include <errno.h>
@@ -145,54 +146,33 @@ void sbd_sticks_free(sbd_sticks *st)
 }
 
 /* ---- the window ------------------------------------------------------------------- */
-typedef struct {
-    long proc, id;
-    int half;
-    double mass;
-} tagged;
-
-static int by_origin(const void *a, const void *b)
-{
-    const tagged *x = a, *y = b;
-    if (x->proc != y->proc)
-        return x->proc < y->proc ? -1 : 1;
-    if (x->id != y->id)
-        return x->id < y->id ? -1 : 1;
-    return 0;
-}
-
+/* the window is one bin, its halves the sub-bins of each origin's mass */
 int sbd_window(const sbd_stick *s, size_t n, double t0, double t1, sbd_window_stat *out)
 {
     if (!(t1 > t0) || !out)
         return -1;
     memset(out, 0, sizeof *out);
-    tagged *t = malloc((n ? n : 1) * sizeof *t);
+    spo_record *t = malloc((n ? n : 1) * sizeof *t);
     if (!t)
         return -1;
     const double tm = 0.5 * (t0 + t1);
     size_t m = 0;
     for (size_t i = 0; i < n; i++)
         if (s[i].t > t0 && s[i].t <= t1)
-            t[m++] = (tagged){s[i].proc, s[i].id, s[i].t > tm, s[i].mass};
-    qsort(t, m, sizeof *t, by_origin);
-    out->sticks = m;
-    for (size_t i = 0; i < m;) {
-        double mo = 0, mh[2] = {0, 0};
-        size_t j = i;
-        for (; j < m && !by_origin(&t[i], &t[j]); j++) {
-            mo += t[j].mass;
-            mh[t[j].half] += t[j].mass;
-        }
-        out->origins++;
-        out->mass += mo;
-        out->var += mo * mo;
-        for (int h = 0; h < 2; h++) {
-            out->half[h] += mh[h];
-            out->half_var[h] += mh[h] * mh[h];
-        }
-        i = j;
-    }
+            t[m++] = (spo_record){0, s[i].t > tm, s[i].proc, s[i].id, s[i].mass};
+    spo_bin w;
+    const int rc = spo_origin_bins(t, m, 1, &w, NULL, 0);
     free(t);
+    if (rc)
+        return -1;
+    out->sticks = m;
+    out->origins = (size_t)w.origins;
+    out->mass = w.mass;
+    out->var = w.s2;
+    for (int h = 0; h < 2; h++) {
+        out->half[h] = w.sub_mass[h];
+        out->half_var[h] = w.sub_s2[h];
+    }
     return 0;
 }
 

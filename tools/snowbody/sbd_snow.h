@@ -11,7 +11,7 @@
  *     the sticks are grouped by origin and the variance of the window's mass
  *     is the sum over origins of the square of each origin's mass (the
  *     compound-Poisson variance of rare arrivals: every origin reaches the
- *     wall or not, independently);
+ *     wall or not, independently; the sums: tools/snowpost/spo_origin.h);
  *   - the same in the window's two halves (a statistically steady deposit
  *     gives halves that agree within their errors: z = (M2 - M1) / sqrt(V1 +
  *     V2));
