@@ -460,6 +460,214 @@ static bool shearFieldProvided(const fvMesh& mesh, const word& name)
     return false;
 }
 
+//- The rebound of a bounce: the kernel's tables of the regime file when it
+//  has them (auto), required (table), or the classic Thornton / constant e_n
+//  with reboundTangential (classic)
+static void applyRebound
+(
+    const string& context,
+    sww_model* m,
+    const dictionary& cd
+)
+{
+    const word rb(cd.lookupOrDefault<word>("rebound", "auto"));
+    const int code =
+        rb == "auto" ? SWW_REBOUND_AUTO
+      : rb == "table" ? SWW_REBOUND_TABLE
+      : rb == "classic" ? SWW_REBOUND_CLASSIC
+      : -1;
+    if (code < 0)
+    {
+        fatalAt(cd, cd.findEntry("rebound", keyType::LITERAL))
+            << "snowWallInteraction: rebound '" << rb
+            << "' is not auto, table or classic" << exit(FatalIOError);
+    }
+    check(context, m, sww_set_rebound_model(m, code), cd, cd.findEntry("rebound", keyType::LITERAL));
+}
+
+//- The tangential gate (tangentialGate) of coefficients cd on model m:
+//  a constant v_t limit, or the regime's oblique or stick-probability table
+static void applyTangentialGate
+(
+    const string& context,
+    sww_model* m,
+    const dictionary& cd
+)
+{
+    if (cd.isDict("tangentialGate"))
+    {
+        const dictionary& g = cd.subDict("tangentialGate");
+        if (g.lookupOrDefault<Switch>("active", true))
+        {
+            const word model(g.lookupOrDefault<word>("model", "constant"));
+            if (model == "constant")
+            {
+                check
+                (
+                    context,
+                    m,
+                    sww_set_tangential_gate
+                    (
+                        m,
+                        g.get<scalar>("vtMax"),
+                        g.lookupOrDefault<scalar>("dRef", 5e-5),
+                        g.lookupOrDefault<scalar>("exponent", 0.0)
+                    ),
+                    g
+                );
+            }
+            else if (model == "regime")
+            {
+                // d_crit(v_n, v_t) from the regime's oblique table
+                // (snowregime map --vt 0,... --max-slide S), or a rough
+                // wall's stick probability over v_t (snowregime map --set
+                // wall=lattice --vt 0,...)
+                check(context, m, sww_set_tangential_regime(m), g);
+                const bool roughVt = !sww_oblique_table(m, nullptr, nullptr);
+                // the criterion's slide length, when the case states it,
+                // must be the one the table was made with (the C core checks
+                // it: a table without obliqueSlide is an error, not a NaN)
+                // vtTable: the tangential speeds a case makes the table with
+                // (tutorials/wedge/Allrun runs snowregime map --vt from it):
+                // the table in use must have as many
+                const entry* te = g.findEntry("vtTable", keyType::LITERAL);
+                if (te)
+                {
+                    const scalarList vt(g.get<scalarList>("vtTable"));
+                    size_t nvt = 0;
+                    if (roughVt) nvt = sww_probability_vt(m, nullptr);
+                    else sww_oblique_table(m, &nvt, nullptr);
+                    if (size_t(vt.size()) != nvt)
+                    {
+                        fatalAt(g, te)
+                            << "snowWallInteraction: tangentialGate vtTable has "
+                            << vt.size() << " speeds, the regime's "
+                            << (roughVt ? "stick-probability table " : "oblique table ")
+                            << nvt << (roughVt ? " (probabilityVt)" : " (obliqueVt)")
+                            << ": the coefficients were made "
+                            << "with another list (rerun snowregime map --vt)"
+                            << exit(FatalIOError);
+                    }
+                }
+                const entry* se = g.findEntry("slideLength", keyType::LITERAL);
+                if (se && roughVt)
+                {
+                    // a rough wall's stick is decided by energy (the sphere
+                    // can never leave), with no slide criterion: the length
+                    // is the flat regimes' (the same gate dictionary)
+                    Info<< "snowWallInteraction: tangentialGate slideLength is "
+                        << "not used by a rough wall's stick probability over "
+                        << "v_t (its stick: the sphere can never leave)" << endl;
+                }
+                else if (se)
+                {
+                    check
+                    (
+                        context,
+                        m,
+                        sww_check_oblique_slide(m, g.get<scalar>("slideLength")),
+                        g,
+                        se
+                    );
+                }
+            }
+            else
+            {
+                FatalIOErrorInFunction(g)
+                    << "snowWallInteraction: tangentialGate model '" << model
+                    << "' is not constant or regime" << exit(FatalIOError);
+            }
+        }
+    }
+}
+
+//- The shear gate (shearGate) of coefficients cd on model m: when active,
+//  shearOn, the field name tauName (checked to be provided at the first
+//  impact) and rhoAir (-1 when not given)
+static void applyShearGate
+(
+    const string& context,
+    sww_model* m,
+    const dictionary& cd,
+    const fvMesh& mesh,
+    bool& shearOn,
+    word& tauName,
+    scalar& rhoAir
+)
+{
+    if (cd.isDict("shearGate"))
+    {
+        const dictionary& g = cd.subDict("shearGate");
+        if (g.lookupOrDefault<Switch>("active", true))
+        {
+            const word model(g.lookupOrDefault<word>("model", "adhesion"));
+            if (model == "adhesion")
+            {
+                check
+                (
+                    context,
+                    m,
+                    sww_set_shear_gate_adhesion
+                    (
+                        m, g.lookupOrDefault<scalar>("roughnessFactor", 1.0)
+                    ),
+                    g
+                );
+            }
+            else if (model == "constant")
+            {
+                check
+                (
+                    context,
+                    m,
+                    sww_set_shear_gate_constant(m, g.get<scalar>("tauCrit")),
+                    g
+                );
+            }
+            else
+            {
+                FatalIOErrorInFunction(g)
+                    << "snowWallInteraction: shearGate model '" << model
+                    << "' is not adhesion or constant" << exit(FatalIOError);
+            }
+            shearOn = true;
+            tauName = g.lookupOrDefault<word>("field", "wallShearStress");
+            if
+            (
+               !shearFieldProvided
+                (
+                    mesh, tauName
+                )
+            )
+            {
+                FatalIOErrorInFunction(g)
+                    << "snowWallInteraction: shearGate: the field '"
+                    << tauName << "' is not registered, not in the "
+                    << "start time's folder and made by no function object "
+                    << "of system/controlDict (a 'wallShearStress' entry of "
+                    << "type wallShearStress makes the field wallShearStress;"
+                    << " an entry whose 'result' names it is taken too). "
+                    << "Add to system/controlDict:" << nl
+                    << "    functions { wallShearStress { type wallShearStress;"
+                    << " libs (\"libfieldFunctionObjects.so\");"
+                    << " writeControl writeTime; } }" << nl
+                    << "or set shearGate { active false; }"
+                    << exit(FatalIOError);
+            }
+            // checked here, not at the first impact: a huge value would
+            // overflow rhoAir*tau there (SIGFPE under OpenFOAM's traps)
+            rhoAir =
+                g.found("rhoAir", keyType::LITERAL)
+              ? checkedNumber
+                (
+                    g, "rhoAir", 1e-6, 1e4, "kg/m3",
+                    "the air density that turns a kinematic wall shear stress into Pa"
+                )
+              : -1.0;
+        }
+    }
+}
+
 } // End namespace snowWallCoeffs
 } // End namespace Foam
 
@@ -678,182 +886,9 @@ void Foam::snowWallCoeffs::applyGates
         cd
     );
 
-    // The rebound of a bounce: the kernel's tables of the regime
-    // file when it has them (auto), required (table), or the classic
-    // Thornton / constant e_n with reboundTangential (classic)
-    {
-        const word rb(cd.lookupOrDefault<word>("rebound", "auto"));
-        const int code =
-            rb == "auto" ? SWW_REBOUND_AUTO
-          : rb == "table" ? SWW_REBOUND_TABLE
-          : rb == "classic" ? SWW_REBOUND_CLASSIC
-          : -1;
-        if (code < 0)
-        {
-            fatalAt(cd, cd.findEntry("rebound", keyType::LITERAL))
-                << "snowWallInteraction: rebound '" << rb
-                << "' is not auto, table or classic" << exit(FatalIOError);
-        }
-        check(context, m, sww_set_rebound_model(m, code), cd, cd.findEntry("rebound", keyType::LITERAL));
-    }
-
-    if (cd.isDict("tangentialGate"))
-    {
-        const dictionary& g = cd.subDict("tangentialGate");
-        if (g.lookupOrDefault<Switch>("active", true))
-        {
-            const word model(g.lookupOrDefault<word>("model", "constant"));
-            if (model == "constant")
-            {
-                check
-                (
-                    context,
-                    m,
-                    sww_set_tangential_gate
-                    (
-                        m,
-                        g.get<scalar>("vtMax"),
-                        g.lookupOrDefault<scalar>("dRef", 5e-5),
-                        g.lookupOrDefault<scalar>("exponent", 0.0)
-                    ),
-                    g
-                );
-            }
-            else if (model == "regime")
-            {
-                // d_crit(v_n, v_t) from the regime's oblique table
-                // (snowregime map --vt 0,... --max-slide S), or a rough
-                // wall's stick probability over v_t (snowregime map --set
-                // wall=lattice --vt 0,...)
-                check(context, m, sww_set_tangential_regime(m), g);
-                const bool roughVt = !sww_oblique_table(m, nullptr, nullptr);
-                // the criterion's slide length, when the case states it,
-                // must be the one the table was made with (the C core checks
-                // it: a table without obliqueSlide is an error, not a NaN)
-                // vtTable: the tangential speeds a case makes the table with
-                // (tutorials/wedge/Allrun runs snowregime map --vt from it):
-                // the table in use must have as many
-                const entry* te = g.findEntry("vtTable", keyType::LITERAL);
-                if (te)
-                {
-                    const scalarList vt(g.get<scalarList>("vtTable"));
-                    size_t nvt = 0;
-                    if (roughVt) nvt = sww_probability_vt(m, nullptr);
-                    else sww_oblique_table(m, &nvt, nullptr);
-                    if (size_t(vt.size()) != nvt)
-                    {
-                        fatalAt(g, te)
-                            << "snowWallInteraction: tangentialGate vtTable has "
-                            << vt.size() << " speeds, the regime's "
-                            << (roughVt ? "stick-probability table " : "oblique table ")
-                            << nvt << (roughVt ? " (probabilityVt)" : " (obliqueVt)")
-                            << ": the coefficients were made "
-                            << "with another list (rerun snowregime map --vt)"
-                            << exit(FatalIOError);
-                    }
-                }
-                const entry* se = g.findEntry("slideLength", keyType::LITERAL);
-                if (se && roughVt)
-                {
-                    // a rough wall's stick is decided by energy (the sphere
-                    // can never leave), with no slide criterion: the length
-                    // is the flat regimes' (the same gate dictionary)
-                    Info<< "snowWallInteraction: tangentialGate slideLength is "
-                        << "not used by a rough wall's stick probability over "
-                        << "v_t (its stick: the sphere can never leave)" << endl;
-                }
-                else if (se)
-                {
-                    check
-                    (
-                        context,
-                        m,
-                        sww_check_oblique_slide(m, g.get<scalar>("slideLength")),
-                        g,
-                        se
-                    );
-                }
-            }
-            else
-            {
-                FatalIOErrorInFunction(g)
-                    << "snowWallInteraction: tangentialGate model '" << model
-                    << "' is not constant or regime" << exit(FatalIOError);
-            }
-        }
-    }
-
-    if (cd.isDict("shearGate"))
-    {
-        const dictionary& g = cd.subDict("shearGate");
-        if (g.lookupOrDefault<Switch>("active", true))
-        {
-            const word model(g.lookupOrDefault<word>("model", "adhesion"));
-            if (model == "adhesion")
-            {
-                check
-                (
-                    context,
-                    m,
-                    sww_set_shear_gate_adhesion
-                    (
-                        m, g.lookupOrDefault<scalar>("roughnessFactor", 1.0)
-                    ),
-                    g
-                );
-            }
-            else if (model == "constant")
-            {
-                check
-                (
-                    context,
-                    m,
-                    sww_set_shear_gate_constant(m, g.get<scalar>("tauCrit")),
-                    g
-                );
-            }
-            else
-            {
-                FatalIOErrorInFunction(g)
-                    << "snowWallInteraction: shearGate model '" << model
-                    << "' is not adhesion or constant" << exit(FatalIOError);
-            }
-            shearOn = true;
-            tauName = g.lookupOrDefault<word>("field", "wallShearStress");
-            if
-            (
-               !shearFieldProvided
-                (
-                    mesh, tauName
-                )
-            )
-            {
-                FatalIOErrorInFunction(g)
-                    << "snowWallInteraction: shearGate: the field '"
-                    << tauName << "' is not registered, not in the "
-                    << "start time's folder and made by no function object "
-                    << "of system/controlDict (a 'wallShearStress' entry of "
-                    << "type wallShearStress makes the field wallShearStress;"
-                    << " an entry whose 'result' names it is taken too). "
-                    << "Add to system/controlDict:" << nl
-                    << "    functions { wallShearStress { type wallShearStress;"
-                    << " libs (\"libfieldFunctionObjects.so\");"
-                    << " writeControl writeTime; } }" << nl
-                    << "or set shearGate { active false; }"
-                    << exit(FatalIOError);
-            }
-            // checked here, not at the first impact: a huge value would
-            // overflow rhoAir*tau there (SIGFPE under OpenFOAM's traps)
-            rhoAir =
-                g.found("rhoAir", keyType::LITERAL)
-              ? checkedNumber
-                (
-                    g, "rhoAir", 1e-6, 1e4, "kg/m3",
-                    "the air density that turns a kinematic wall shear stress into Pa"
-                )
-              : -1.0;
-        }
-    }
+    applyRebound(context, m, cd);
+    applyTangentialGate(context, m, cd);
+    applyShearGate(context, m, cd, mesh, shearOn, tauName, rhoAir);
 }
 
 
