@@ -79,9 +79,24 @@ Usage
 #include <cstdlib>
 #include <string>
 
-// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
-int main(int argc, char *argv[])
+namespace
+{
+
+//- Wall clock of the flow and of every cloud
+typedef std::chrono::steady_clock wallClock;
+
+//- The seconds of wall clock since t0
+double secondsSince(const wallClock::time_point& t0)
+{
+    return std::chrono::duration<double>(wallClock::now() - t0).count();
+}
+
+
+//- The note and the options of the solver (-cloud, -clouds, -frozen,
+//  -speedScale, -replay, -checkpoint)
+void addOptions()
 {
     argList::addNote
     (
@@ -128,35 +143,36 @@ int main(int argc, char *argv[])
         "also write when this many seconds of wall clock have passed since"
         " the last write (a state to resume from; the steps unchanged)"
     );
+}
 
-    #include "postProcess.H"
 
-    #include "addCheckCaseOptions.H"
-    #include "setRootCaseLists.H"
-
-    // a positive finite number given as text: a nan must not reach a
-    // comparison (the floating-point traps OpenFOAM sets would kill the run
-    // without a word); false if the text is not one
-    const auto positiveNumber = [](const std::string& txt, scalar& out)
+//- A positive finite number given as text: a nan must not reach a
+//  comparison (the floating-point traps OpenFOAM sets would kill the run
+//  without a word); false if the text is not one
+bool positiveNumber(const std::string& txt, scalar& out)
+{
+    // strtod in non-stop mode: an overflowing text (1e999) must not
+    // raise the overflow trap OpenFOAM has set; it is refused below
+    char* end = nullptr;
+    std::fenv_t env;
+    std::feholdexcept(&env);
+    const double v = std::strtod(txt.c_str(), &end);
+    std::feclearexcept(FE_ALL_EXCEPT);
+    std::fesetenv(&env);
+    const bool whole = !txt.empty() && end && *end == '\0';
+    if (!whole || !std::isfinite(v) || v <= 0)
     {
-        // strtod in non-stop mode: an overflowing text (1e999) must not
-        // raise the overflow trap OpenFOAM has set; it is refused below
-        char* end = nullptr;
-        std::fenv_t env;
-        std::feholdexcept(&env);
-        const double v = std::strtod(txt.c_str(), &end);
-        std::feclearexcept(FE_ALL_EXCEPT);
-        std::fesetenv(&env);
-        const bool whole = !txt.empty() && end && *end == '\0';
-        if (!whole || !std::isfinite(v) || v <= 0)
-        {
-            return false;
-        }
-        out = v;
-        return true;
-    };
+        return false;
+    }
+    out = v;
+    return true;
+}
 
-    // -checkpoint: a positive finite number of seconds (wall clock)
+
+//- -checkpoint: a positive finite number of seconds (wall clock), 0 when not
+//  given
+scalar checkpointOption(const argList& args)
+{
     scalar checkpoint = 0;
     if (args.found("checkpoint"))
     {
@@ -169,8 +185,13 @@ int main(int argc, char *argv[])
         Info<< "Checkpoint: a write whenever " << checkpoint << " s of wall "
             << "clock have passed since the last one" << nl << endl;
     }
+    return checkpoint;
+}
 
-    // -speedScale: with -frozen only, a factor in [1e-3, 1e3]
+
+//- -speedScale: with -frozen only, a factor in [1e-3, 1e3], 1 when not given
+scalar speedScaleOption(const argList& args)
+{
     scalar speedScale = 1;
     if (args.found("speedScale"))
     {
@@ -191,47 +212,55 @@ int main(int argc, char *argv[])
                 << exit(FatalError);
         }
     }
+    return speedScale;
+}
 
-    #include "createTime.H"
-    #include "createMesh.H"
-    #include "createPimpleControl.H"
-    #include "createTimeControls.H"
-    #include "initContinuityErrs.H"
-    #include "createFields.H"          // pimpleFoam's: p, U, phi, turbulence
-    #include "createUfIfPresent.H"     // null on a static mesh
-    #include "createCloudFields.H"     // rho, mu, g and the cloud
-    #include "CourantNo.H"
-    #include "setInitialDeltaT.H"
 
-    if (speedScale != 1)
+//- The held flow at speedScale times its speed: each field read from the
+//  start time by speedScale^-n, n its dimensions' time exponent
+void scaleHeldFlow
+(
+    const scalar speedScale,
+    const fvMesh& mesh,
+    volVectorField& U,
+    surfaceScalarField& phi,
+    volScalarField& p
+)
+{
+    const auto factor = [&](const dimensionSet& d)
     {
-        // the held flow at speedScale times its speed: each field read from
-        // the start time by speedScale^-n, n its dimensions' time exponent
-        const auto factor = [&](const dimensionSet& d)
+        return Foam::pow(speedScale, -d[dimensionSet::TIME]);
+    };
+    U == factor(U.dimensions())*U;
+    phi == factor(phi.dimensions())*phi;
+    p == factor(p.dimensions())*p;
+    for (const word name : {"k", "omega", "epsilon", "nut", "nuTilda"})
+    {
+        if (mesh.foundObject<volScalarField>(name))
         {
-            return Foam::pow(speedScale, -d[dimensionSet::TIME]);
-        };
-        U == factor(U.dimensions())*U;
-        phi == factor(phi.dimensions())*phi;
-        p == factor(p.dimensions())*p;
-        for (const word name : {"k", "omega", "epsilon", "nut", "nuTilda"})
-        {
-            if (mesh.foundObject<volScalarField>(name))
-            {
-                volScalarField& f = mesh.lookupObjectRef<volScalarField>(name);
-                const scalar c = factor(f.dimensions());
-                f == c*f;
-                Info<< "Frozen flow: " << name << " x " << c << nl;
-            }
+            volScalarField& f = mesh.lookupObjectRef<volScalarField>(name);
+            const scalar c = factor(f.dimensions());
+            f == c*f;
+            Info<< "Frozen flow: " << name << " x " << c << nl;
         }
-        Info<< "Frozen flow: U, phi x " << speedScale << ", p x "
-            << factor(p.dimensions()) << " (-speedScale)" << nl << endl;
     }
+    Info<< "Frozen flow: U, phi x " << speedScale << ", p x "
+        << factor(p.dimensions()) << " (-speedScale)" << nl << endl;
+}
 
-    turbulence->validate();
 
-    const bool frozen = args.found("frozen");
-    if (frozen && args.found("replay"))
+//- -replay: the snapshot library of the controlDict's 'replay' dictionary
+//  (null without -replay); -frozen and -replay exclude each other
+autoPtr<flowReplay> replayOption
+(
+    const argList& args,
+    const fvMesh& mesh,
+    const Time& runTime,
+    const bool adjustTimeStep,
+    const scalar maxDeltaT
+)
+{
+    if (args.found("frozen") && args.found("replay"))
     {
         FatalErrorInFunction
             << "-frozen and -replay exclude each other" << exit(FatalError);
@@ -252,6 +281,90 @@ int main(int argc, char *argv[])
             )
         );
     }
+    return replay;
+}
+
+
+//- Every cloud evolved over the time step, its wall-clock time added to
+//  cloudTime
+void evolveClouds
+(
+    PtrList<basicKinematicCloud>& kinematicClouds,
+    scalarList& cloudTime
+)
+{
+    forAll(kinematicClouds, ci)
+    {
+        basicKinematicCloud& kinematicCloud = kinematicClouds[ci];
+        Info<< "Evolving " << kinematicCloud.name() << endl;
+
+        const auto tCloud = wallClock::now();
+        kinematicCloud.evolve();
+        cloudTime[ci] += secondsSince(tCloud);
+    }
+}
+
+
+//- The wall-clock time of the flow and of every cloud, summed over the
+//  steps: the largest of the processes (the cost of each part, e.g. for the
+//  error against run time)
+void printWallTimes
+(
+    const scalar flowTime,
+    const scalarList& cloudTime,
+    const PtrList<basicKinematicCloud>& kinematicClouds
+)
+{
+    Info<< "Wall time [s], largest of the processes: flow "
+        << returnReduce(flowTime, maxOp<scalar>());
+    forAll(kinematicClouds, ci)
+    {
+        Info<< ", " << kinematicClouds[ci].name() << ' '
+            << returnReduce(cloudTime[ci], maxOp<scalar>());
+    }
+    Info<< endl;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    addOptions();
+
+    #include "postProcess.H"
+
+    #include "addCheckCaseOptions.H"
+    #include "setRootCaseLists.H"
+
+    const scalar checkpoint = checkpointOption(args);
+    const scalar speedScale = speedScaleOption(args);
+
+    #include "createTime.H"
+    #include "createMesh.H"
+    #include "createPimpleControl.H"
+    #include "createTimeControls.H"
+    #include "initContinuityErrs.H"
+    #include "createFields.H"          // pimpleFoam's: p, U, phi, turbulence
+    #include "createUfIfPresent.H"     // null on a static mesh
+    #include "createCloudFields.H"     // rho, mu, g and the cloud
+    #include "CourantNo.H"
+    #include "setInitialDeltaT.H"
+
+    if (speedScale != 1)
+    {
+        scaleHeldFlow(speedScale, mesh, U, phi, p);
+    }
+
+    turbulence->validate();
+
+    const bool frozen = args.found("frozen");
+    autoPtr<flowReplay> replay
+    (
+        replayOption(args, mesh, runTime, adjustTimeStep, maxDeltaT)
+    );
     if (frozen)
     {
         Info<< "Frozen flow: the fields of time " << runTime.timeName()
@@ -261,26 +374,9 @@ int main(int argc, char *argv[])
     // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
     // wall-clock time of the flow and of every cloud, summed over the steps
-    // (the largest of the processes is printed at each write and at the end:
-    // the cost of each part, e.g. for the error against run time)
-    using wallClock = std::chrono::steady_clock;
-    const auto seconds = [](const wallClock::time_point& t0)
-    {
-        return std::chrono::duration<double>(wallClock::now() - t0).count();
-    };
+    // (printed at each write and at the end)
     scalar flowTime = 0;
     scalarList cloudTime(kinematicClouds.size(), Zero);
-    const auto printTimes = [&]()
-    {
-        Info<< "Wall time [s], largest of the processes: flow "
-            << returnReduce(flowTime, maxOp<scalar>());
-        forAll(kinematicClouds, ci)
-        {
-            Info<< ", " << kinematicClouds[ci].name() << ' '
-                << returnReduce(cloudTime[ci], maxOp<scalar>());
-        }
-        Info<< endl;
-    };
 
     auto lastWrite = wallClock::now();
 
@@ -297,7 +393,7 @@ int main(int argc, char *argv[])
         if
         (
             checkpoint > 0
-         && returnReduce(seconds(lastWrite) >= checkpoint, orOp<bool>())
+         && returnReduce(secondsSince(lastWrite) >= checkpoint, orOp<bool>())
         )
         {
             runTime.writeOnce();
@@ -340,31 +436,23 @@ int main(int argc, char *argv[])
         {
             replay->collect(runTime.value(), runTime.deltaTValue());
         }
-        flowTime += seconds(tFlow);
+        flowTime += secondsSince(tFlow);
 
         // --- The particles: the same time step, in the flow just computed
         mu = laminarTransport.nu()*rhoInfValue;
 
-        forAll(kinematicClouds, ci)
-        {
-            basicKinematicCloud& kinematicCloud = kinematicClouds[ci];
-            Info<< "Evolving " << kinematicCloud.name() << endl;
-
-            const auto tCloud = wallClock::now();
-            kinematicCloud.evolve();
-            cloudTime[ci] += seconds(tCloud);
-        }
+        evolveClouds(kinematicClouds, cloudTime);
 
         if (runTime.write())
         {
-            printTimes();
+            printWallTimes(flowTime, cloudTime, kinematicClouds);
             lastWrite = wallClock::now();
         }
 
         runTime.printExecutionTime(Info);
     }
 
-    printTimes();
+    printWallTimes(flowTime, cloudTime, kinematicClouds);
 
     Info<< "End\n" << endl;
 
