@@ -24,12 +24,32 @@ const Foam::label Foam::ParcelSplitting<CloudType>::maxCopiesLimit;
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class CloudType>
-void Foam::ParcelSplitting<CloudType>::readRegions()
+const char* Foam::ParcelSplitting<CloudType>::regionsForm()
+{
+    return "regions ( name { box (min) (max); factor F; } ... );";
+}
+
+
+template<class CloudType>
+Foam::OSstream& Foam::ParcelSplitting<CloudType>::regionError
+(
+    const fileName& scope,
+    const dictionary& rd
+)
+{
+    return FatalIOError
+    (
+        FUNCTION_NAME, __FILE__, __LINE__,
+        scope + "." + rd.dictName(), rd.startLineNumber(), rd.endLineNumber()
+    );
+}
+
+
+template<class CloudType>
+void Foam::ParcelSplitting<CloudType>::checkKeys() const
 {
     const dictionary& dict = this->coeffDict();
     const word& name = this->modelName();
-    const char* const form =
-        "regions ( name { box (min) (max); factor F; } ... );";
 
     // every key is known: a misspelt one ('maxCopy') would otherwise be
     // ignored without a word
@@ -44,6 +64,15 @@ void Foam::ParcelSplitting<CloudType>::readRegions()
                 << exit(FatalIOError);
         }
     }
+}
+
+
+template<class CloudType>
+const Foam::entry& Foam::ParcelSplitting<CloudType>::regionsEntry() const
+{
+    const dictionary& dict = this->coeffDict();
+    const word& name = this->modelName();
+    const char* const form = regionsForm();
 
     // the form is checked before the entries are read: OpenFOAM's own reading
     // of a dictionary as a list aborts with a message naming neither
@@ -61,7 +90,16 @@ void Foam::ParcelSplitting<CloudType>::readRegions()
             << "but must be a list in parentheses:  " << form
             << exit(FatalIOError);
     }
-    ITstream& is = re->stream();
+    return *re;
+}
+
+
+template<class CloudType>
+void Foam::ParcelSplitting<CloudType>::checkRegionList(ITstream& is) const
+{
+    const word& name = this->modelName();
+    const char* const form = regionsForm();
+
     if
     (
         is.empty()
@@ -127,27 +165,159 @@ void Foam::ParcelSplitting<CloudType>::readRegions()
                 << exit(FatalIOError);
         }
     }
+}
+
+
+template<class CloudType>
+void Foam::ParcelSplitting<CloudType>::checkRegion
+(
+    const label r,
+    const dictionary& rd,
+    const fileName& scope
+) const
+{
+    const word& name = this->modelName();
+
+    // a region's keys are known: a misspelt 'factr' would otherwise be
+    // ignored, and 'box' beside 'boxes' drop the boxes
+    const wordList regionKeys({"box", "boxes", "factor"});
+    for (const entry& e : rd)
+    {
+        if (!regionKeys.found(e.keyword()))
+        {
+            regionError(scope, rd)
+                << "parcelSplitting " << name << ": region "
+                << regionNames_[r] << ": unknown key '" << e.keyword()
+                << "'; the accepted keys are " << regionKeys
+                << exit(FatalIOError);
+        }
+    }
+    if (rd.found("box") && rd.found("boxes"))
+    {
+        regionError(scope, rd)
+            << "parcelSplitting " << name << ": region " << regionNames_[r]
+            << ": give 'box' or 'boxes', not both" << exit(FatalIOError);
+    }
+    for (label q = 0; q < r; ++q)
+    {
+        if (regionNames_[q] == regionNames_[r])
+        {
+            regionError(scope, rd)
+                << "parcelSplitting " << name << ": region '"
+                << regionNames_[r] << "' is given twice in 'regions': "
+                << "each region needs its own name (both entries would act)"
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+template<class CloudType>
+Foam::treeBoundBoxList Foam::ParcelSplitting<CloudType>::regionBoxes
+(
+    const label r,
+    const dictionary& rd,
+    const fileName& scope
+) const
+{
+    const word& name = this->modelName();
+
+    // as boxToCell: "box (min) (max);" or "boxes ((min) (max) ...);",
+    // read as plain corner points so that a box given max-first is
+    // reported instead of silently reordered
+    List<point> corners;
+    if (rd.found("box"))
+    {
+        ITstream& is = rd.lookup("box");
+        point lo, hi;
+        is >> lo >> hi;
+        corners = List<point>({lo, hi});
+    }
+    else if (rd.found("boxes"))
+    {
+        corners = List<point>(rd.lookup("boxes"));
+    }
+    if (corners.size() % 2)
+    {
+        regionError(scope, rd)
+            << "parcelSplitting " << name << ": region " << regionNames_[r]
+            << ": 'boxes' holds " << corners.size()
+            << " points, not (min) (max) pairs" << exit(FatalIOError);
+    }
+    treeBoundBoxList bbs(corners.size()/2);
+    forAll(bbs, b)
+    {
+        const point& lo = corners[2*b];
+        const point& hi = corners[2*b + 1];
+        if (!(lo.x() < hi.x() && lo.y() < hi.y() && lo.z() < hi.z()))
+        {
+            regionError(scope, rd)
+                << "parcelSplitting " << name << ": region " << regionNames_[r]
+                << ": box " << lo << " " << hi
+                << " needs min < max in x, y, z" << exit(FatalIOError);
+        }
+        bbs[b] = treeBoundBox(lo, hi);
+    }
+    if (bbs.empty())
+    {
+        regionError(scope, rd)
+            << "parcelSplitting " << name << ": region " << regionNames_[r]
+            << ": needs 'box (min) (max);' or a non-empty"
+            << " 'boxes ((min) (max) ...);'" << exit(FatalIOError);
+    }
+    return bbs;
+}
+
+
+template<class CloudType>
+Foam::label Foam::ParcelSplitting<CloudType>::markRegionCells
+(
+    const label r,
+    const treeBoundBoxList& bbs
+)
+{
+    const pointField& cc = this->owner().mesh().cellCentres();
+
+    bitSet& cells = regionCells_[r];
+    cells.resize(cc.size());
+    label nCells = 0;
+    forAll(cc, celli)
+    {
+        for (const treeBoundBox& bb : bbs)
+        {
+            if (bb.contains(cc[celli]))
+            {
+                cells.set(celli);
+                ++nCells;
+                break;
+            }
+        }
+    }
+    return nCells;
+}
+
+
+template<class CloudType>
+void Foam::ParcelSplitting<CloudType>::readRegions()
+{
+    const word& name = this->modelName();
+    const char* const form = regionsForm();
+
+    checkKeys();
+    const entry& re = regionsEntry();
+    ITstream& is = re.stream();
+    checkRegionList(is);
     const PtrList<entry> entries(is);
 
     // a region's entries read from the list carry only their own name: an
     // error names the file and scope of 'regions' and the region's lines
-    const fileName scope(re->name());
-    auto at = [&scope](const dictionary& rd) -> OSstream&
-    {
-        return FatalIOError
-        (
-            FUNCTION_NAME, __FILE__, __LINE__,
-            scope + "." + rd.dictName(), rd.startLineNumber(), rd.endLineNumber()
-        );
-    };
+    const fileName scope(re.name());
     if (entries.empty())
     {
         FatalIOErrorInFunction(is)
             << "parcelSplitting " << name << ": 'regions' is empty: give at "
             << "least one region:  " << form << exit(FatalIOError);
     }
-
-    const pointField& cc = this->owner().mesh().cellCentres();
 
     regionNames_.setSize(entries.size());
     regionCells_.setSize(entries.size());
@@ -165,44 +335,14 @@ void Foam::ParcelSplitting<CloudType>::readRegions()
         }
         const dictionary& rd = entries[r].dict();
         regionNames_[r] = entries[r].keyword();
-        // a region's keys are known: a misspelt 'factr' would otherwise be
-        // ignored, and 'box' beside 'boxes' drop the boxes
-        const wordList regionKeys({"box", "boxes", "factor"});
-        for (const entry& e : rd)
-        {
-            if (!regionKeys.found(e.keyword()))
-            {
-                at(rd)
-                    << "parcelSplitting " << name << ": region "
-                    << regionNames_[r] << ": unknown key '" << e.keyword()
-                    << "'; the accepted keys are " << regionKeys
-                    << exit(FatalIOError);
-            }
-        }
-        if (rd.found("box") && rd.found("boxes"))
-        {
-            at(rd)
-                << "parcelSplitting " << name << ": region " << regionNames_[r]
-                << ": give 'box' or 'boxes', not both" << exit(FatalIOError);
-        }
-        for (label q = 0; q < r; ++q)
-        {
-            if (regionNames_[q] == regionNames_[r])
-            {
-                at(rd)
-                    << "parcelSplitting " << name << ": region '"
-                    << regionNames_[r] << "' is given twice in 'regions': "
-                    << "each region needs its own name (both entries would act)"
-                    << exit(FatalIOError);
-            }
-        }
+        checkRegion(r, rd, scope);
 
         // a parcel of the reference mass becomes F parcels: F is bounded by
         // maxCopies, the most parcels one split may make
         const scalar F = rd.get<scalar>("factor");
         if (!std::isfinite(F) || F < 1 || F > maxCopies_)
         {
-            at(rd)
+            regionError(scope, rd)
                 << "parcelSplitting " << name << ": region " << regionNames_[r]
                 << ": factor " << F << " must be in [1, maxCopies "
                 << maxCopies_ << "]: one parcel of the injected mean mass "
@@ -212,65 +352,8 @@ void Foam::ParcelSplitting<CloudType>::readRegions()
         }
         factor_[r] = F;
 
-        // as boxToCell: "box (min) (max);" or "boxes ((min) (max) ...);",
-        // read as plain corner points so that a box given max-first is
-        // reported instead of silently reordered
-        List<point> corners;
-        if (rd.found("box"))
-        {
-            ITstream& is = rd.lookup("box");
-            point lo, hi;
-            is >> lo >> hi;
-            corners = List<point>({lo, hi});
-        }
-        else if (rd.found("boxes"))
-        {
-            corners = List<point>(rd.lookup("boxes"));
-        }
-        if (corners.size() % 2)
-        {
-            at(rd)
-                << "parcelSplitting " << name << ": region " << regionNames_[r]
-                << ": 'boxes' holds " << corners.size()
-                << " points, not (min) (max) pairs" << exit(FatalIOError);
-        }
-        treeBoundBoxList bbs(corners.size()/2);
-        forAll(bbs, b)
-        {
-            const point& lo = corners[2*b];
-            const point& hi = corners[2*b + 1];
-            if (!(lo.x() < hi.x() && lo.y() < hi.y() && lo.z() < hi.z()))
-            {
-                at(rd)
-                    << "parcelSplitting " << name << ": region " << regionNames_[r]
-                    << ": box " << lo << " " << hi
-                    << " needs min < max in x, y, z" << exit(FatalIOError);
-            }
-            bbs[b] = treeBoundBox(lo, hi);
-        }
-        if (bbs.empty())
-        {
-            at(rd)
-                << "parcelSplitting " << name << ": region " << regionNames_[r]
-                << ": needs 'box (min) (max);' or a non-empty"
-                << " 'boxes ((min) (max) ...);'" << exit(FatalIOError);
-        }
-
-        bitSet& cells = regionCells_[r];
-        cells.resize(cc.size());
-        label nCells = 0;
-        forAll(cc, celli)
-        {
-            for (const treeBoundBox& bb : bbs)
-            {
-                if (bb.contains(cc[celli]))
-                {
-                    cells.set(celli);
-                    ++nCells;
-                    break;
-                }
-            }
-        }
+        const treeBoundBoxList bbs(regionBoxes(r, rd, scope));
+        const label nCells = markRegionCells(r, bbs);
         Info<< "    parcelSplitting: region " << regionNames_[r]
             << ": factor " << F << ", "
             << returnReduce(nCells, sumOp<label>()) << " cells" << endl;
