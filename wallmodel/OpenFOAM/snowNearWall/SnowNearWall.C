@@ -345,33 +345,23 @@ void Foam::SnowNearWall<CloudType>::preEvolve()
 
 
 template<class CloudType>
-void Foam::SnowNearWall<CloudType>::postMove
+void Foam::SnowNearWall<CloudType>::wallLayerAt
 (
-    parcelType& p,
-    const scalar dt,
-    const point&,              // the start of the step: the walk takes the end
-    bool& keepParticle
-)
+    const parcelType& p,
+    const label f,
+    swd_local& at,
+    vector& gradK,
+    vector& es,
+    vector& en,
+    vector& ez
+) const
 {
-    // every sub-step, before anything else: a loop that does not advance
-    // ends the parcel's step
-    snowTrackingStall(stall_, p, "snowNearWall", this->modelName());
-    if (!keepParticle || !p.active() || !(dt > ROOTVSMALL))
-    {
-        return;
-    }
-    CloudType& cloud = this->owner();
+    const CloudType& cloud = this->owner();
     const fvMesh& mesh = cloud.mesh();
     const label celli = p.cell();
-    const label f = nearestFace_[celli];
 
-    // the place now, where the coming step starts (the end of this tracking
-    // step): wall distance, wall frame, and k with its gradient from the
-    // cell-point interpolant of k in the parcel's tet
-    swd_local at = {};
     at.nu = nu_[celli];
     at.eps = max(epsilon_[celli], scalar(0));
-    vector gradK(Zero);
     snowCellPointValueGrad
     (
         mesh, k_, kPoints_, p.currentTetIndices(), p.coordinates(), at.k, gradK
@@ -399,53 +389,25 @@ void Foam::SnowNearWall<CloudType>::postMove
     const double nOut[3] = {n.x(), n.y(), n.z()}, uc[3] = {Uc.x(), Uc.y(), Uc.z()};
     double fs[3], fn[3], fz[3];
     swd_wall_frame(nOut, uc, fs, fn, fz);
-    const vector es(fs[0], fs[1], fs[2]), en(fn[0], fn[1], fn[2]), ez(fz[0], fz[1], fz[2]);
+    es = vector(fs[0], fs[1], fs[2]);
+    en = vector(fn[0], fn[1], fn[2]);
+    ez = vector(fz[0], fz[1], fz[2]);
     at.grad_k[0] = gradK & es;
     at.grad_k[1] = gradK & en;
     at.grad_k[2] = gradK & ez;
+}
 
-    Random& rnd = cloud.rndGen();
-    // the parcel's normalized fluctuation (tTurb 1: drawn by this object)
-    double w[3];
-    if (p.tTurb() != 1)
-    {
-        for (int i = 0; i < 3; ++i) w[i] = rnd.GaussNormal<scalar>();
-        p.tTurb() = 1;
-    }
-    else
-    {
-        const vector& wg = p.UTurb();
-        w[0] = wg & es;
-        w[1] = wg & en;
-        w[2] = wg & ez;
-    }
 
-    // relaxation time with the parcel's slip (Schiller-Naumann)
-    const scalar rhoc = cloud.rho()[celli];
-    const scalar muc = cloud.mu()[celli];
-    const scalar Re = rhoc*mag(Uc - p.U())*p.d()/muc;
-    const scalar tauP = swp_tau_p(p.rho(), p.d(), muc, Re);
+template<class CloudType>
+void Foam::SnowNearWall<CloudType>::reflectAtWall
+(
+    const parcelType& p,
+    vector& K,
+    vector& W
+) const
+{
+    const fvMesh& mesh = this->owner().mesh();
 
-    const double xi[3] =
-    {
-        rnd.GaussNormal<scalar>(),
-        rnd.GaussNormal<scalar>(),
-        rnd.GaussNormal<scalar>()
-    };
-    double kick[3];
-    swd_stats st;
-    const int rc = swd_advance(model_, &at, dt, tauP, w, xi, kick, &st);
-    if (rc != SWD_OK)
-    {
-        FatalErrorInFunction
-            << "snowNearWall: invalid state of parcel " << p.origId()
-            << " at " << x << ": y " << at.y << " u_tau "
-            << at.u_tau << " nu " << at.nu << " k " << at.k << " grad k "
-            << gradK << " epsilon " << at.eps << " dt " << dt << " tau_p "
-            << tauP << exit(FatalError);
-    }
-    vector K(kick[0]*es + kick[1]*en + kick[2]*ez);
-    vector W(w[0]*es + w[1]*en + w[2]*ez);
     // on a wall face the patch interaction comes next: the fluid velocity
     // the parcel sees is reflected with it (Wilson & Flesch's perfect
     // reflection). The kick points into the wall, which a rebound reverses,
@@ -462,14 +424,28 @@ void Foam::SnowNearWall<CloudType>::postMove
             if (wn > 0) W -= 2*wn*nh;
         }
     }
-    p.U() += K;
-    p.UTurb() = W;
+}
 
-    // the sublayer closure: reaches the wall at the rate lambda
-    if (f < 0 || !swd_closure_on(model_))
-    {
-        return;
-    }
+
+template<class CloudType>
+void Foam::SnowNearWall<CloudType>::depositByClosure
+(
+    parcelType& p,
+    bool& keepParticle,
+    const scalar dt,
+    const label f,
+    const swd_local& at,
+    const swd_stats& st,
+    const scalar muc,
+    const vector& es,
+    const vector& en
+)
+{
+    CloudType& cloud = this->owner();
+    const fvMesh& mesh = cloud.mesh();
+    Random& rnd = cloud.rndGen();
+    const point& x = p.position();
+
     const scalar tauStokes = swp_tau_p(p.rho(), p.d(), muc, 0);
     const scalar lambda = swd_deposit_rate(model_, &st, at.nu, tauStokes);
     if (!(lambda > 0))
@@ -527,6 +503,90 @@ void Foam::SnowNearWall<CloudType>::postMove
         << x.z() << ' ' << p.origProc() << ' ' << p.origId() << ' '
         << p.nParticle() << ' ' << p.d() << ' ' << p.rho();
     records_[s].append(rec.str());
+}
+
+
+template<class CloudType>
+void Foam::SnowNearWall<CloudType>::postMove
+(
+    parcelType& p,
+    const scalar dt,
+    const point&,              // the start of the step: the walk takes the end
+    bool& keepParticle
+)
+{
+    // every sub-step, before anything else: a loop that does not advance
+    // ends the parcel's step
+    snowTrackingStall(stall_, p, "snowNearWall", this->modelName());
+    if (!keepParticle || !p.active() || !(dt > ROOTVSMALL))
+    {
+        return;
+    }
+    CloudType& cloud = this->owner();
+    const label celli = p.cell();
+    const label f = nearestFace_[celli];
+
+    // the place now, where the coming step starts (the end of this tracking
+    // step): wall distance, wall frame, and k with its gradient from the
+    // cell-point interpolant of k in the parcel's tet
+    swd_local at = {};
+    vector gradK(Zero), es, en, ez;
+    wallLayerAt(p, f, at, gradK, es, en, ez);
+    const vector Uc = cloud.U()[celli];
+    const point& x = p.position();
+
+    Random& rnd = cloud.rndGen();
+    // the parcel's normalized fluctuation (tTurb 1: drawn by this object)
+    double w[3];
+    if (p.tTurb() != 1)
+    {
+        for (int i = 0; i < 3; ++i) w[i] = rnd.GaussNormal<scalar>();
+        p.tTurb() = 1;
+    }
+    else
+    {
+        const vector& wg = p.UTurb();
+        w[0] = wg & es;
+        w[1] = wg & en;
+        w[2] = wg & ez;
+    }
+
+    // relaxation time with the parcel's slip (Schiller-Naumann)
+    const scalar rhoc = cloud.rho()[celli];
+    const scalar muc = cloud.mu()[celli];
+    const scalar Re = rhoc*mag(Uc - p.U())*p.d()/muc;
+    const scalar tauP = swp_tau_p(p.rho(), p.d(), muc, Re);
+
+    const double xi[3] =
+    {
+        rnd.GaussNormal<scalar>(),
+        rnd.GaussNormal<scalar>(),
+        rnd.GaussNormal<scalar>()
+    };
+    double kick[3];
+    swd_stats st;
+    const int rc = swd_advance(model_, &at, dt, tauP, w, xi, kick, &st);
+    if (rc != SWD_OK)
+    {
+        FatalErrorInFunction
+            << "snowNearWall: invalid state of parcel " << p.origId()
+            << " at " << x << ": y " << at.y << " u_tau "
+            << at.u_tau << " nu " << at.nu << " k " << at.k << " grad k "
+            << gradK << " epsilon " << at.eps << " dt " << dt << " tau_p "
+            << tauP << exit(FatalError);
+    }
+    vector K(kick[0]*es + kick[1]*en + kick[2]*ez);
+    vector W(w[0]*es + w[1]*en + w[2]*ez);
+    reflectAtWall(p, K, W);
+    p.U() += K;
+    p.UTurb() = W;
+
+    // the sublayer closure: reaches the wall at the rate lambda
+    if (f < 0 || !swd_closure_on(model_))
+    {
+        return;
+    }
+    depositByClosure(p, keepParticle, dt, f, at, st, muc, es, en);
 }
 
 
