@@ -395,29 +395,8 @@ void Foam::SnowWallInteraction<CloudType>::setupWallRegimes
 
 
 template<class CloudType>
-void Foam::SnowWallInteraction<CloudType>::setup()
+void Foam::SnowWallInteraction<CloudType>::setupBuildUp(const dictionary& cd)
 {
-    const dictionary& cd = this->coeffDict();
-    model_ = sww_alloc();
-    if (!model_)
-    {
-        FatalErrorInFunction << "out of memory" << exit(FatalError);
-    }
-
-    if (!cd.isDict("regime"))
-    {
-        FatalIOErrorInFunction(cd)
-            << "snowWallInteraction: missing sub-dictionary 'regime' in "
-            << cd.name() << ": add  #include \"regime.coeffs\"  (written by "
-            << "snowregime map) to snowWallInteractionCoeffs"
-            << exit(FatalIOError);
-    }
-    snowWallCoeffs::readRegime(context_, model_, cd.subDict("regime"));
-
-    removeStuck_ = snowWallCoeffs::removeStuckParcels(cd);
-
-    applyGates(model_, cd);
-
     // Build-up feedback: a face covered by its own deposit decides with the
     // snow-covered regime (doc/wallmodel.md)
     if (cd.isDict("buildUp"))
@@ -458,7 +437,12 @@ void Foam::SnowWallInteraction<CloudType>::setup()
                 << "covering mass)" << endl;
         }
     }
+}
 
+
+template<class CloudType>
+void Foam::SnowWallInteraction<CloudType>::setupSnowPatches(const dictionary& cd)
+{
     // Interaction type of every patch group: OpenFOAM's own for none,
     // rebound, stick and escape (PatchInteractionModel::interactionType, as
     // localInteraction); snow is the one other type (itOther) accepted
@@ -505,6 +489,13 @@ void Foam::SnowWallInteraction<CloudType>::setup()
         }
     }
     snowPatches_.transfer(snow);
+}
+
+
+template<class CloudType>
+void Foam::SnowWallInteraction<CloudType>::setupBuildUpPatches(const dictionary& cd)
+{
+    const polyBoundaryMesh& bm = this->owner().mesh().boundaryMesh();
     const label n = snowPatches_.size();
 
     // the snow patches with the build-up feedback: buildUp/patches, or all
@@ -526,6 +517,15 @@ void Foam::SnowWallInteraction<CloudType>::setup()
         }
         Info<< endl;
     }
+}
+
+
+template<class CloudType>
+void Foam::SnowWallInteraction<CloudType>::setupStickRecords(const dictionary& cd)
+{
+    const polyBoundaryMesh& bm = this->owner().mesh().boundaryMesh();
+    const label n = snowPatches_.size();
+
     // the snow patches whose sticks are recorded: stickRecords, or none
     recordSticks_.setSize(n, false);
     stickLines_.setSize(n);
@@ -550,15 +550,16 @@ void Foam::SnowWallInteraction<CloudType>::setup()
             << "/snowWallSticks)" << endl;
         estimateStickRecords(cd);
     }
-    setupWallRegimes(cd);
-    {
-        seed_ = snowWallCoeffs::randomSeed(cd);
-        drawMatters_ = covered_ != nullptr;
-        forAll(slotModel_, si)
-        {
-            if (sww_probability_table(slotModel_[si], nullptr, nullptr)) drawMatters_ = true;
-        }
-    }
+}
+
+
+template<class CloudType>
+void Foam::SnowWallInteraction<CloudType>::setupCounts()
+{
+    const polyBoundaryMesh& bm = this->owner().mesh().boundaryMesh();
+    const label n = snowPatches_.size();
+
+    // the counts of this run and the totals at the start time (restart)
     nImpact_.setSize(n, 0);
     nStick_.setSize(n, 0);
     nBounce_.setSize(n, 0);
@@ -624,7 +625,49 @@ void Foam::SnowWallInteraction<CloudType>::setup()
             }
         }
     }
+}
 
+
+template<class CloudType>
+void Foam::SnowWallInteraction<CloudType>::setup()
+{
+    const dictionary& cd = this->coeffDict();
+    model_ = sww_alloc();
+    if (!model_)
+    {
+        FatalErrorInFunction << "out of memory" << exit(FatalError);
+    }
+
+    if (!cd.isDict("regime"))
+    {
+        FatalIOErrorInFunction(cd)
+            << "snowWallInteraction: missing sub-dictionary 'regime' in "
+            << cd.name() << ": add  #include \"regime.coeffs\"  (written by "
+            << "snowregime map) to snowWallInteractionCoeffs"
+            << exit(FatalIOError);
+    }
+    snowWallCoeffs::readRegime(context_, model_, cd.subDict("regime"));
+
+    removeStuck_ = snowWallCoeffs::removeStuckParcels(cd);
+
+    applyGates(model_, cd);
+
+    setupBuildUp(cd);
+    setupSnowPatches(cd);
+    setupBuildUpPatches(cd);
+    setupStickRecords(cd);
+    setupWallRegimes(cd);
+    {
+        seed_ = snowWallCoeffs::randomSeed(cd);
+        drawMatters_ = covered_ != nullptr;
+        forAll(slotModel_, si)
+        {
+            if (sww_probability_table(slotModel_[si], nullptr, nullptr)) drawMatters_ = true;
+        }
+    }
+    setupCounts();
+
+    const polyBoundaryMesh& bm = this->owner().mesh().boundaryMesh();
     char desc[1024];
     sww_describe(model_, desc, sizeof desc);
     Info<< "    snowWallInteraction: regime " << desc << nl
