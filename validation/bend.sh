@@ -237,14 +237,8 @@ nutWall $nutwall;
 EOF
     "$here/bend-mesh" --radius "$a" --bend-ratio "$r0" --inlet "$lin" --outlet "$lout" \
         --centre "$nc" --ring "$nr" --grading "$grading" --axial "$axial" > "$c/system/blockMeshDict"
-    cp "$c/system/fvSchemes.flow" "$c/system/fvSchemes"
-    dep_control "$c" simpleFoam 3000 1 3000
-    echo "bend.sh: $mesh mesh: blockMesh, simpleFoam"
-    t0=$(date +%s)
-    (cd "$c" && blockMesh > log.blockMesh 2>&1 && rm -rf 0 && cp -r 0.orig 0 \
-        && simpleFoam > log.simpleFoam 2>&1) || { dep_show_fail bend.sh "$mesh: the flow" "$(ls -t "$c"/log.* | head -1)"; return 1; }
-    tflow=$(( $(date +%s) - t0 ))
-    last=$(cd "$c" && foamListTimes -latestTime 2>/dev/null | tail -1)
+    dep_flow bend.sh "$c" "$mesh" 3000 || return 1
+    tflow=$DEP_TFLOW last=$DEP_LAST
     iters=$(awk '/^Time = / { n = $3 } END { print n }' "$c/log.simpleFoam")
     cells=$(awk '/nCells:/ { print $2 }' "$c/log.blockMesh")
     # the inlet pipe's mean wall shear (kinematic) and the first cell's y+

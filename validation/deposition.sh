@@ -217,14 +217,8 @@ kWall   $kwall;
 nutWall $nutwall;
 EOF
     write_mesh "$c" "$ny" "$grading"
-    cp "$c/system/fvSchemes.flow" "$c/system/fvSchemes"
-    dep_control "$c" simpleFoam 4000 1 4000
-    echo "deposition.sh: $mesh mesh: blockMesh, simpleFoam"
-    t0=$(date +%s)
-    (cd "$c" && blockMesh > log.blockMesh 2>&1 && rm -rf 0 && cp -r 0.orig 0 \
-        && simpleFoam > log.simpleFoam 2>&1) || { dep_show_fail deposition.sh "$mesh: the flow" "$(ls -t "$c"/log.* | head -1)"; exit 1; }
-    tflow=$(( $(date +%s) - t0 ))
-    last=$(cd "$c" && foamListTimes -latestTime 2>/dev/null | tail -1)
+    dep_flow deposition.sh "$c" "$mesh" 4000 || exit 1
+    tflow=$DEP_TFLOW last=$DEP_LAST
     # u_tau from the mean pressure gradient: u_tau^2 = h dp/dx (kinematic)
     gradp=$(awk '/Pressure gradient source/ { for (i = 1; i <= NF; i++) if ($i == "gradient") g = $(i + 2) } END { print g }' "$c/log.simpleFoam")
     utau=$(awk -v g="$gradp" -v h="$h" 'BEGIN { printf "%.6g", sqrt(g * h) }')

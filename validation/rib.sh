@@ -201,15 +201,8 @@ dimensions      [0 1 -2 0 0 0 0];
 value           ($g);
 EOF
     "$here/rib-mesh" --case "$c" --h "$h" --mesh "$mesh" --zones "$zones"
-    cp "$c/system/fvSchemes.flow" "$c/system/fvSchemes"
-    dep_control "$c" simpleFoam 4000 1 4000
-    echo "rib.sh: $mesh mesh: blockMesh, simpleFoam"
-    t0=$(date +%s)
-    (cd "$c" && blockMesh > log.blockMesh 2>&1 && topoSet > log.topoSet 2>&1 \
-        && createPatch -overwrite > log.createPatch 2>&1 && rm -rf 0 && cp -r 0.orig 0 \
-        && simpleFoam > log.simpleFoam 2>&1) || { dep_show_fail rib.sh "$mesh: the flow" "$(ls -t "$c"/log.* | head -1)"; return 1; }
-    tflow=$(( $(date +%s) - t0 ))
-    last=$(cd "$c" && foamListTimes -latestTime 2>/dev/null | tail -1)
+    dep_flow rib.sh "$c" "$mesh" 4000 topoSet "createPatch -overwrite" || return 1
+    tflow=$DEP_TFLOW last=$DEP_LAST
     cells=$(awk '/nCells:/ { print $2 }' "$c/log.blockMesh")
     # the mean pressure gradient at the end and its change over the last 500
     # iterations (the flow's convergence: the periodic channel's outer flow

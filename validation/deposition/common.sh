@@ -1,7 +1,7 @@
 # shellcheck shell=bash
 # validation/deposition/common.sh - sourced by the deposition benchmarks
-# (validation/deposition.sh, validation/bend.sh): the pieces of their OpenFOAM
-# particle cases that are the same in both.
+# (validation/deposition.sh, bend.sh, rib.sh) and validation/wellmixed.sh: the
+# pieces of their OpenFOAM cases that are the same in all.
 #
 #   dep_control CASE APP END_TIME DELTA_T WRITE_INTERVAL
 #       CASE/system/controlDict: fixed steps, ascii, the wrapper's library
@@ -58,6 +58,12 @@
 #       patches would write some 40 lines per cloud and step): the parcel
 #       counts of every step, the patch fates at step NWARM and, after a line
 #       "# the last step", at the last step; from a fatal error on, every line
+#   dep_flow SCRIPT CASE MESH ITERATIONS [STEP...]
+#       the steady flow of CASE: system/fvSchemes.flow as fvSchemes, ITERATIONS
+#       steps of simpleFoam (dep_control), blockMesh, each STEP (a command of
+#       the case, its log log.<first word>), 0.orig as 0, simpleFoam; sets
+#       DEP_TFLOW (its wall time, s) and DEP_LAST (the converged time); on a
+#       failure dep_show_fail of the newest log, status 1
 
 dep_control() {   # case app endTime deltaT writeInterval
     cat > "$1/system/controlDict" <<EOF2
@@ -79,6 +85,21 @@ runTimeModifiable false;
 adjustTimeStep  no;
 libs            ("libsnowWallInteraction.so");
 EOF2
+}
+
+dep_flow() {   # script case mesh iterations [step...]
+    local s=$1 c=$2 mesh=$3 it=$4 t0
+    shift 4
+    cp "$c/system/fvSchemes.flow" "$c/system/fvSchemes"
+    dep_control "$c" simpleFoam "$it" 1 "$it"
+    echo "$s: $mesh mesh: blockMesh, simpleFoam"
+    t0=$(date +%s)
+    (cd "$c" && blockMesh > log.blockMesh 2>&1 \
+        && for step in "$@"; do $step > "log.${step%% *}" 2>&1 || exit 1; done \
+        && rm -rf 0 && cp -r 0.orig 0 && simpleFoam > log.simpleFoam 2>&1) \
+        || { dep_show_fail "$s" "$mesh: the flow" "$(ls -t "$c"/log.* | head -1)"; return 1; }
+    DEP_TFLOW=$(( $(date +%s) - t0 ))
+    DEP_LAST=$(cd "$c" && foamListTimes -latestTime 2>/dev/null | tail -1)
 }
 
 dep_particle_schemes() {   # case
