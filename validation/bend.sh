@@ -88,20 +88,16 @@ interp=faceFlux
 force=0
 step=0.05
 die2() { echo "bend.sh: $*" >&2; exit 2; }
+# shellcheck source=deposition/common.sh
+. "$here/common.sh"
 while [ $# -gt 0 ]; do
     case "$1" in
         -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;;
-        --out) [ -n "${2:-}" ] || die2 "--out needs a folder"; out=$2; shift ;;
         --mesh) [ -n "${2:-}" ] || die2 "--mesh needs a list of resolved, fine, wf or both"; meshes=$2; shift ;;
         --step) [ -n "${2:-}" ] || die2 "--step needs a number"; step=$2; shift ;;
         --stokes) [ -n "${2:-}" ] || die2 "--stokes needs a list"; stokes=$2; shift ;;
-        --models) [ -n "${2:-}" ] || die2 "--models needs a list"; models=$2; shift ;;
-        --parcels) [ -n "${2:-}" ] || die2 "--parcels needs a number"; parcels=$2; shift ;;
-        --coeffs) [ -n "${2:-}" ] || die2 "--coeffs needs a file"; coeffs=$2; shift ;;
-        --interpolation) [ -n "${2:-}" ] || die2 "--interpolation needs faceFlux or cellPoint"; interp=$2; shift ;;
-        --force) force=1 ;;
         --short) meshes=wf; stokes=0.1,1; models=none,nearwall; parcels=600 ;;
-        *) echo "bend.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
+        *) dep_option bend.sh "$1" "${2:-}" || exit 2; [ "$DEP_NARGS" = 1 ] || shift ;;
     esac
     shift
 done
@@ -110,8 +106,6 @@ done
 [[ "$parcels" =~ ^[1-9][0-9]{0,5}$ ]] || die2 "--parcels: '$parcels' is not a whole number in 1..999999"
 # shellcheck source=../etc/outdir.sh
 . "$top/etc/outdir.sh"
-# shellcheck source=deposition/common.sh
-. "$here/common.sh"
 dep_interpolation bend.sh "$interp" || exit 2
 outdir_list stokes bend.sh --stokes "$stokes" num
 outdir_list models bend.sh --models "$models" name

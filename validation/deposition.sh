@@ -85,22 +85,18 @@ retau_set=314
 calibrate=0
 force=0
 die2() { echo "deposition.sh: $*" >&2; exit 2; }
+# shellcheck source=deposition/common.sh
+. "$here/common.sh"
 while [ $# -gt 0 ]; do
     case "$1" in
         -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;;
-        --out) [ -n "${2:-}" ] || die2 "--out needs a folder"; out=$2; shift ;;
         --mesh) [ -n "${2:-}" ] || die2 "--mesh needs resolved, wf or both"; meshes=$2; shift ;;
         --tau-plus) [ -n "${2:-}" ] || die2 "--tau-plus needs a list"; taus=$2; shift ;;
-        --models) [ -n "${2:-}" ] || die2 "--models needs a list"; models=$2; shift ;;
-        --parcels) [ -n "${2:-}" ] || die2 "--parcels needs a number"; parcels=$2; shift ;;
         --t-run) [ -n "${2:-}" ] || die2 "--t-run needs a number"; trun=$2; shift ;;
-        --coeffs) [ -n "${2:-}" ] || die2 "--coeffs needs a file"; coeffs=$2; shift ;;
-        --interpolation) [ -n "${2:-}" ] || die2 "--interpolation needs faceFlux or cellPoint"; interp=$2; shift ;;
         --re-tau) [ -n "${2:-}" ] || die2 "--re-tau needs a friction Reynolds number"; retau_set=$2; shift ;;
         --calibrate) calibrate=1 ;;
-        --force) force=1 ;;
         --short) meshes=wf; taus=1,10; models=nearwall; parcels=1000; trun=8000; twarm=1000 ;;
-        *) echo "deposition.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
+        *) dep_option deposition.sh "$1" "${2:-}" || exit 2; [ "$DEP_NARGS" = 1 ] || shift ;;
     esac
     shift
 done
@@ -110,8 +106,6 @@ case "$meshes" in resolved|wf) ;; both) meshes="resolved wf" ;; *) die2 "--mesh:
 [[ "$trun" =~ ^[1-9][0-9]{0,6}$ ]] || die2 "--t-run: '$trun' is not a whole number of wall units in 1..9999999"
 # shellcheck source=../etc/outdir.sh
 . "$top/etc/outdir.sh"
-# shellcheck source=deposition/common.sh
-. "$here/common.sh"
 dep_interpolation deposition.sh "$interp" || exit 2
 outdir_list taus deposition.sh --tau-plus "$taus" num
 outdir_list models deposition.sh --models "$models" name

@@ -89,21 +89,17 @@ interp=faceFlux
 force=0
 zones=0,2,4,6,9,12,14
 die2() { echo "rib.sh: $*" >&2; exit 2; }
+# shellcheck source=deposition/common.sh
+. "$here/common.sh"
 while [ $# -gt 0 ]; do
     case "$1" in
         -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;;
-        --out) [ -n "${2:-}" ] || die2 "--out needs a folder"; out=$2; shift ;;
         --mesh) [ -n "${2:-}" ] || die2 "--mesh needs resolved, wf or both"; meshes=$2; shift ;;
         --tau-plus) [ -n "${2:-}" ] || die2 "--tau-plus needs a list"; taus=$2; shift ;;
-        --models) [ -n "${2:-}" ] || die2 "--models needs a list"; models=$2; shift ;;
-        --parcels) [ -n "${2:-}" ] || die2 "--parcels needs a number"; parcels=$2; shift ;;
         --t-run) [ -n "${2:-}" ] || die2 "--t-run needs a number"; trun=$2; shift ;;
         --gravity) [ -n "${2:-}" ] || die2 "--gravity needs none or floor"; gravity=$2; shift ;;
-        --coeffs) [ -n "${2:-}" ] || die2 "--coeffs needs a file"; coeffs=$2; shift ;;
-        --interpolation) [ -n "${2:-}" ] || die2 "--interpolation needs faceFlux or cellPoint"; interp=$2; shift ;;
-        --force) force=1 ;;
         --short) meshes=wf; taus=10; models=none,nearwall; parcels=1500; trun=4000; twarm=1000 ;;
-        *) echo "rib.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
+        *) dep_option rib.sh "$1" "${2:-}" || exit 2; [ "$DEP_NARGS" = 1 ] || shift ;;
     esac
     shift
 done
@@ -114,8 +110,6 @@ case "$gravity" in none|floor) ;; *) die2 "--gravity: '$gravity' is not none or 
 [[ "$trun" =~ ^[1-9][0-9]{0,6}$ ]] || die2 "--t-run: '$trun' is not a whole number of wall units in 1..9999999"
 # shellcheck source=../etc/outdir.sh
 . "$top/etc/outdir.sh"
-# shellcheck source=deposition/common.sh
-. "$here/common.sh"
 dep_interpolation rib.sh "$interp" || exit 2
 outdir_list taus rib.sh --tau-plus "$taus" num
 outdir_list models rib.sh --models "$models" name

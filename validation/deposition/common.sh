@@ -58,6 +58,13 @@
 #       patches would write some 40 lines per cloud and step): the parcel
 #       counts of every step, the patch fates at step NWARM and, after a line
 #       "# the last step", at the last step; from a fatal error on, every line
+#   dep_option SCRIPT OPTION [VALUE]
+#       the options every benchmark takes, into the caller's variables: --out
+#       DIR (out), --models LIST (models), --parcels N (parcels), --coeffs FILE
+#       (coeffs), --interpolation NAME (interp), --force (force=1); sets
+#       DEP_NARGS (the words it took: 2, or 1 for --force); a missing value or
+#       any other option: one message naming it (stderr, status 2). Sourced
+#       before the option loop, its `*)` branch.
 #   dep_flow SCRIPT CASE MESH ITERATIONS [STEP...]
 #       the steady flow of CASE: system/fvSchemes.flow as fvSchemes, ITERATIONS
 #       steps of simpleFoam (dep_control), blockMesh, each STEP (a command of
@@ -85,6 +92,28 @@ runTimeModifiable false;
 adjustTimeStep  no;
 libs            ("libsnowWallInteraction.so");
 EOF2
+}
+
+dep_option() {   # script option [value]
+    local s=$1 o=$2 v=${3:-} need=
+    DEP_NARGS=2
+    case "$o" in
+        --out) need="a folder" ;;
+        --models) need="a list" ;;
+        --parcels) need="a number" ;;
+        --coeffs) need="a file" ;;
+        --interpolation) need="faceFlux or cellPoint" ;;
+        --force) force=1; DEP_NARGS=1; return 0 ;;
+        *) echo "$s: unknown option '$o' (see --help)" >&2; return 2 ;;
+    esac
+    [ -n "$v" ] || { echo "$s: $o needs $need" >&2; return 2; }
+    case "$o" in
+        --out) out=$v ;;
+        --models) models=$v ;;
+        --parcels) parcels=$v ;;
+        --coeffs) coeffs=$v ;;
+        --interpolation) interp=$v ;;
+    esac
 }
 
 dep_flow() {   # script case mesh iterations [step...]
