@@ -171,11 +171,9 @@ static double plastic_closed_form(swr_plastic *pl, double E0, double dstar, doub
     return rebound;
 }
 
-swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
-                       const swr_trace *trace)
+/* The input checks: SWR_OK, or the bad_input status (r->msg says why). */
+static swr_status check_impact(const swr_model *m, const swr_impact *in, swr_result *r)
 {
-    memset(r, 0, sizeof *r);
-    r->e_t = NAN;
     if (!m || !in)
         return bad_input(r, "model or impact", NAN, NULL);
     /* each NaN is refused before it is compared: an ordered comparison of a NaN
@@ -195,24 +193,14 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
         return bad_input(r, "x", in->x, "|x| <= 1 m");
     if (isnan(in->y) || !(fabs(in->y) <= 1.0))
         return bad_input(r, "y", in->y, "|y| <= 1 m");
-    r->contacts = 1;
-    if (m->wall.type == SWR_WALL_LATTICE)
-        return swr_collide_rough(m, in, r, trace);
+    return SWR_OK;
+}
 
+/* The warnings of an impact: dashpot capped, Tabor parameter, Rayleigh time. */
+static void impact_warnings(const swr_model *m, const swr_impact *in, swr_result *r, double R,
+                            double tc, int plastic, int damp_both)
+{
     const swr_params *p = &m->p;
-    /* --- physical quantities of this impact (SI) --- */
-    const double R = swr_wall_rstar(&m->wall, 0.5 * in->d);
-    const double mass = p->rho * (4.0 / 3.0) * M_PI * R * R * R;
-    const double gam = m->adhesive ? p->gamma : 0.0;
-    const double Uc_si = m->adhesive ? swp_jkr_separation_energy(gam, m->Estar, R) : 0.0;
-    const double v_adh = sqrt(2.0 * Uc_si / mass);
-    const double v_ref = in->vn > v_adh ? in->vn : v_adh;
-    const double tc = swp_hertz_contact_time(mass, R, m->Estar, v_ref);
-
-    const int plastic = p->cor == SWR_COR_THORNTON_NING;
-    r->e_target = swr_damping_target(p, m->Estar, R, mass, in->vn);
-    const int damp_both = p->dashpot == SWR_DASHPOT_BOTH;
-    const double alpha = plastic ? 0.0 : swr_damping_alpha_for(p, m->alpha_const, r->e_target);
     if (!plastic && r->e_target < (damp_both ? swr_damping_e_min_both() : m->e_min))
         append_msg(r, "plastic COR below the dashpot table: damping capped");
     if (m->adhesive) {
@@ -227,6 +215,89 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
     }
     if (tc < swp_rayleigh_time(R, p->rho, swp_shear_modulus(p->E, p->nu), p->nu))
         append_msg(r, "contact shorter than the Rayleigh time: quasi-static contact law doubtful");
+}
+
+enum outcome { OPEN, BOUNCE, STICK };
+
+/* The constants of one smooth-wall impact, in scaled units (set once), and
+ * the outcome known at first contact. */
+typedef struct {
+    swr_normal nrm;
+    swr_plastic pl;
+    double T, V, L, mass, u0, E0;
+    double Rs, Is, Gs, kd, pk, xic, mu, alpha;
+    double h, dstar, h_el, h_yield, h_unload;
+    int plastic, damp_both, tangential, stride, shortcut;
+    enum outcome outcome0;
+} impact_setup;
+
+/* Thornton-Ning set-up: the turning point, the steps of each branch and the
+ * step bound into s, *h_min and *t_bound; returns 1 when the closed form
+ * finished the impact (result in r), else 0. */
+static int plastic_setup(const swr_model *m, impact_setup *s, swr_result *r, double sE,
+                         double gam, double *h_min, double *t_bound)
+{
+    const swr_params *p = &m->p;
+    const double T = s->T, L = s->L, E0 = s->E0;
+    swr_plastic *pl = &s->pl;
+    swr_plastic_init(pl, s->Rs, m->Estar * sE, gam * T * T / s->mass,
+                     swp_limiting_pressure(p->sigma_y) * sE);
+    /* the turning point follows from the energy (closed form). Steps:
+     * `accuracy` per time scale of each branch: the elastic loading, the
+     * Hertz time (or the yield branch's, if shorter); the yield branch,
+     * its half period pi/sqrt(k) (F = F_y + k z is harmonic); unloading,
+     * the half period of the flattened contact's stiffness 2 E* a* at
+     * the turning point, if shorter than the Hertz time. */
+    const double dstar = swr_plastic_turning(pl, E0);
+    double xs;
+    swr_plastic_load_work(pl, dstar, &xs);
+    const double tu = M_PI / sqrt(2.0 * m->Estar * sE * xs * xs);
+    const double tp = M_PI / sqrt(pl->k);
+    s->dstar = dstar;
+    s->h_el = (tp < 1.0 ? tp : 1.0) / p->accuracy;
+    s->h_yield = tp / p->accuracy;
+    s->h_unload = (tu < 1.0 ? tu : 1.0) / p->accuracy;
+    s->h = pl->dy > 0.0 ? s->h_el : s->h_yield;    /* dy = 0: yields from the first touch */
+    *h_min = fmin(s->h_el, fmin(s->h_yield, s->h_unload));
+    *t_bound = SWR_CONTACT_TIMES_MAX * (1.0 + tu + tp);
+    if (!s->shortcut)
+        return 0;
+    double t_turn, t_sep;
+    const double reb = plastic_closed_form(pl, E0, dstar, &t_turn, &t_sep);
+    r->status = SWR_OK;
+    r->dt = 0.0;
+    r->steps = 0;
+    r->max_steps = 0;
+    r->delta_max = dstar * L;
+    r->energy_err = 0.0;
+    r->contact_kept = !(reb > 0.0);
+    r->stick = r->contact_kept;
+    r->e_n = reb > 0.0 ? sqrt(2.0 * reb) / s->u0 : 0.0;
+    r->t_contact = (reb > 0.0 ? t_sep : t_turn) * T;
+    return 1;
+}
+
+/* Physical quantities, warnings, scaled units, step and step bound of a
+ * smooth-wall impact into s; returns 1 when the plastic closed form finished
+ * it (result in r), else 0. */
+static int setup_impact(const swr_model *m, const swr_impact *in, swr_result *r,
+                        const swr_trace *trace, impact_setup *s)
+{
+    const swr_params *p = &m->p;
+    /* --- physical quantities of this impact (SI) --- */
+    const double R = swr_wall_rstar(&m->wall, 0.5 * in->d);
+    const double mass = p->rho * (4.0 / 3.0) * M_PI * R * R * R;
+    const double gam = m->adhesive ? p->gamma : 0.0;
+    const double Uc_si = m->adhesive ? swp_jkr_separation_energy(gam, m->Estar, R) : 0.0;
+    const double v_adh = sqrt(2.0 * Uc_si / mass);
+    const double v_ref = in->vn > v_adh ? in->vn : v_adh;
+    const double tc = swp_hertz_contact_time(mass, R, m->Estar, v_ref);
+
+    const int plastic = p->cor == SWR_COR_THORNTON_NING;
+    r->e_target = swr_damping_target(p, m->Estar, R, mass, in->vn);
+    const int damp_both = p->dashpot == SWR_DASHPOT_BOTH;
+    const double alpha = plastic ? 0.0 : swr_damping_alpha_for(p, m->alpha_const, r->e_target);
+    impact_warnings(m, in, r, R, tc, plastic, damp_both);
 
     /* --- scaled units: mass m, speed v_ref = max(vn, v_adh), time tc ---
      * (the adhesive speed keeps the length unit V tc finite for any vn: with
@@ -234,103 +305,207 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
     const double T = tc, V = v_ref, L = V * T;
     const double u0 = in->vn / V;                    /* impact speed, <= 1 */
     const double sE = L * T * T / mass;              /* modulus: F T^2/(m L) per L^2 */
-    swr_normal nrm;
-    swr_normal_init(&nrm, R / L, m->Estar * sE, gam * T * T / mass);
-    const double Rs = R / L, Is = 0.4 * Rs * Rs;
-    const double Gs = m->Gstar * sE;
+    swr_normal_init(&s->nrm, R / L, m->Estar * sE, gam * T * T / mass);
+    const double Rs = R / L;
+    s->Rs = Rs;
+    s->Is = 0.4 * Rs * Rs;
+    s->Gs = m->Gstar * sE;
     const double kd = sqrt(2.0 * m->Estar * sE * sqrt(Rs)); /* c_d = alpha kd delta^(1/4) */
-    const double pk = 0.8 * alpha * kd;              /* Phi = pk delta^(5/4) */
-    const double xic = p->xi_crit / L;
-    const double mu = p->mu;
+    s->kd = kd;
+    s->pk = 0.8 * alpha * kd;                        /* Phi = pk delta^(5/4) */
+    s->xic = p->xi_crit / L;
+    s->mu = p->mu;
+    s->T = T, s->V = V, s->L = L, s->mass = mass, s->u0 = u0, s->alpha = alpha;
+    s->plastic = plastic, s->damp_both = damp_both;
     /* step: accuracy steps per contact time, the undamped t_c shortened by
      * the damping's loading-time factor */
     const double g = swr_damping_time_factor(alpha);
-    double h = g / p->accuracy, h2 = 0.5 * h;
-    const double E0 = 0.5 * u0 * u0;                 /* kinetic energy at first contact */
-    double dsep = nrm.delta_c;                       /* 0 for Hertz */
-    double usep = nrm.Uc;                            /* energy needed to separate */
-    /* energy scale of the balance check: the largest of the impact energy,
-     * the adhesive separation energy (slow impacts) and the kinetic energy
-     * the adhesion's pull gives during the contact */
-    double eref = E0 > nrm.Uc ? E0 : nrm.Uc;
+    s->h = g / p->accuracy;
+    s->E0 = 0.5 * u0 * u0;                           /* kinetic energy at first contact */
     /* no tangential motion and no trace: once the remaining normal motion is
      * conservative, finish it in closed form instead of stepping */
-    const int tangential = in->vt != 0.0 || in->omega != 0.0;
-    const int stride = trace && trace->fn && trace->stride > 0 ? trace->stride : 0;
-    const int shortcut = !tangential && !stride;
+    s->tangential = in->vt != 0.0 || in->omega != 0.0;
+    s->stride = trace && trace->fn && trace->stride > 0 ? trace->stride : 0;
+    s->shortcut = !s->tangential && !s->stride;
+    /* Known at first contact: with E0 <= U_c it can never escape (damping
+     * only removes energy); undamped, the energy is conserved. */
+    s->outcome0 = OPEN;
+    if (plastic)
+        ; /* decided on the unloading curve */
+    else if (s->E0 <= s->nrm.Uc)
+        s->outcome0 = STICK;
+    else if (alpha == 0.0)
+        s->outcome0 = BOUNCE;
 
     /* bound: SWR_CONTACT_TIMES_MAX undamped contact times t_c */
     double t_bound = SWR_CONTACT_TIMES_MAX / g;
-    swr_plastic pl;
-    double dstar = 0.0, h_el = h, h_yield = h, h_unload = h, h_min = h;
-    if (plastic) {
-        swr_plastic_init(&pl, Rs, m->Estar * sE, gam * T * T / mass,
-                         swp_limiting_pressure(p->sigma_y) * sE);
-        /* the turning point follows from the energy (closed form). Steps:
-         * `accuracy` per time scale of each branch: the elastic loading, the
-         * Hertz time (or the yield branch's, if shorter); the yield branch,
-         * its half period pi/sqrt(k) (F = F_y + k z is harmonic); unloading,
-         * the half period of the flattened contact's stiffness 2 E* a* at
-         * the turning point, if shorter than the Hertz time. */
-        dstar = swr_plastic_turning(&pl, E0);
-        double xs;
-        swr_plastic_load_work(&pl, dstar, &xs);
-        const double tu = M_PI / sqrt(2.0 * m->Estar * sE * xs * xs);
-        const double tp = M_PI / sqrt(pl.k);
-        h_el = (tp < 1.0 ? tp : 1.0) / p->accuracy;
-        h_yield = tp / p->accuracy;
-        h_unload = (tu < 1.0 ? tu : 1.0) / p->accuracy;
-        h = pl.dy > 0.0 ? h_el : h_yield;    /* dy = 0: yields from the first touch */
-        h2 = 0.5 * h;
-        h_min = fmin(h_el, fmin(h_yield, h_unload));
-        t_bound = SWR_CONTACT_TIMES_MAX * (1.0 + tu + tp);
-        if (shortcut) {
-            double t_turn, t_sep;
-            const double reb = plastic_closed_form(&pl, E0, dstar, &t_turn, &t_sep);
-            r->status = SWR_OK;
-            r->dt = 0.0;
-            r->steps = 0;
-            r->max_steps = 0;
-            r->delta_max = dstar * L;
-            r->energy_err = 0.0;
-            r->contact_kept = !(reb > 0.0);
-            r->stick = r->contact_kept;
-            r->e_n = reb > 0.0 ? sqrt(2.0 * reb) / u0 : 0.0;
-            r->t_contact = (reb > 0.0 ? t_sep : t_turn) * T;
-            return SWR_OK;
-        }
-    }
+    double h_min = s->h;
+    s->dstar = 0.0, s->h_el = s->h, s->h_yield = s->h, s->h_unload = s->h;
+    if (plastic && plastic_setup(m, s, r, sE, gam, &h_min, &t_bound))
+        return 1;
     if (!plastic)
-        h_min = h;
+        h_min = s->h;
     r->dt = h_min * T;
     r->max_steps = (long)ceil(t_bound / h_min) + 16;
+    return 0;
+}
+
+/* The state the finish needs when the loop ends. */
+typedef struct {
+    enum outcome outcome;
+    int separated;
+    long n;
+    double t, t_end, u, x, dmax, e_dec, usep, err, vt, vt_out, w;
+    const swr_normal *act;
+} loop_end;
+
+/* The finish: status, the closed-form remainder of a bounce, the overlap of
+ * a stick decided at first contact, the result fields, the rest prediction. */
+static swr_status finish(const swr_impact *in, swr_result *r, const impact_setup *s, loop_end *e)
+{
+    const swr_normal *nrm = &s->nrm;
+    const double T = s->T, V = s->V, L = s->L, u0 = s->u0, E0 = s->E0;
+    r->status = SWR_OK;
+    if (e->outcome == BOUNCE && !e->separated) {
+        if (s->shortcut) {
+            /* conservative remainder with energy e_dec, closed form */
+            double xs = nrm->xf;              /* separation: a_f, or 0 for Hertz */
+            if (e->u > 0.0) {                 /* still loading (undamped run) */
+                const double xm = swr_normal_turning_x(nrm, e->e_dec, e->x);
+                e->t += travel_time(nrm, e->e_dec, e->x, xm) + travel_time(nrm, e->e_dec, xs, xm);
+                const double dm = xm * xm * xm * xm / nrm->R - nrm->C * xm;
+                if (dm > e->dmax)
+                    e->dmax = dm;
+            } else {
+                e->t += travel_time(nrm, e->e_dec, xs, e->x);
+            }
+            e->t_end = e->t;
+            e->separated = 1;
+        } else {
+            r->status = SWR_STEP_BOUND;
+        }
+    } else if (e->outcome == OPEN) {
+        r->status = SWR_STEP_BOUND;
+        e->outcome = STICK; /* still in contact: best estimate */
+        e->t_end = e->t;
+    }
+    if (r->status == SWR_STEP_BOUND) {
+        append_msg(r, "step bound reached: outcome is the best estimate");
+        e->vt_out = e->vt;
+    }
+    if (e->outcome == STICK && e->n == 0 && !s->plastic) {
+        /* decided at first contact: the overlap an undamped approach reaches
+         * (an upper bound when damped) */
+        const double xm = swr_normal_turning_x(nrm, E0, nrm->xj);
+        e->dmax = xm * xm * xm * xm / nrm->R - nrm->C * xm;
+    }
+    r->steps = e->n;
+    r->contact_kept = e->outcome == STICK;
+    /* rebound speed from the conserved energy past the decision */
+    r->e_n = e->outcome == BOUNCE ? sqrt(2.0 * fmax(e->e_dec - e->usep, 0.0)) / u0 : 0.0;
+    r->t_contact = e->t_end * T;
+    r->delta_max = e->dmax * L;
+    r->energy_err = e->err;
+    if (e->outcome == BOUNCE) {
+        if (in->vt > 0.0)
+            r->e_t = e->vt_out * V / in->vt;
+        r->stick = 0;
+    } else {
+        /* sliding and rolling of the adhered sphere stop under the adhesive
+         * resistances; predict when and where (doc/kernel.md) */
+        const swr_normal *act = e->act;
+        const double fs = s->mu * 2.0 * act->Fc, ml = 4.0 * act->Fc * s->xic;
+        double tr = 0.0, sr = 0.0;
+        r->stick = s->tangential
+                       ? swr_tangential_rest(1.0, s->Rs, s->Is, fs, ml, e->vt, e->w, &tr, &sr)
+                       : 1;
+        r->t_rest = tr * T;
+        r->s_rest = sr * L;
+    }
+    return r->status;
+}
+
+/* Closing kick. The dashpot acts while loading, with its exact impulse over
+ * the step (swr_damping.h: the opening kick took h/2 F_d(old), the rest is
+ * applied here). Returns u; sets *fd, *phi_old, *wd. */
+static inline double closing_kick(double alpha, double kd, double pk, int damp_both, double uh,
+                                  double fne, double h2, double delta, double d_old, double u_old,
+                                  double fd_old, double *fd, double *phi_old, double *wd)
+{
+    double u = uh - h2 * fne;
+    const double phi = swr_dashpot_potential(pk, delta);
+    *fd = 0.0;
+    if ((uh > 0.0 || (damp_both && (delta > 0.0 || d_old > 0.0))) && alpha > 0.0) {
+        u = swr_dashpot_step(u, phi - *phi_old, h2 * fd_old, u_old, wd);
+        if ((u > 0.0 || damp_both) && delta > 0.0)
+            *fd = swr_dashpot_force(alpha, kd, delta, u);
+    } else if (fd_old != 0.0) {
+        u += h2 * fd_old; /* loading ended: undo the opening kick's dashpot part */
+    }
+    *phi_old = phi;
+    return u;
+}
+
+/* Tangential and rolling kicks from the slip and rolling increments of the
+ * drift: sets *ft, *mr, *vt, *w. */
+static inline void tangential_kick(const swr_model *m, double Rs, double Is, double Gs,
+                                   double mu, double xic, const swr_normal *act,
+                                   swr_tangential *tan, swr_rolling *rol, double h, double h2,
+                                   double x, double fn, double vth, double wh, double *ft,
+                                   double *mr, double *vt, double *w)
+{
+    const double a = x * x;
+    /* Coulomb limit on the whole contact load: the dashpot stands for
+     * the plastic contact pressure while loading */
+    *ft = swr_tangential_update(tan, h * (vth + Rs * wh), swr_tangential_stiffness(Gs, a),
+                                swr_tangential_limit(mu, fn, act->Fc));
+    if (m->adhesive)
+        *mr = swr_rolling_update(rol, -h * Rs * wh, swr_rolling_stiffness(act->Fc, a, act->a0),
+                                 xic);
+    *vt = vth + h2 * *ft;
+    *w = wh + h2 * (Rs * *ft + *mr) / Is;
+}
+
+/* The velocity-Verlet loop from first contact to the decision (and on, for
+ * the tangential motion and the trace), then the finish. */
+static swr_status integrate(const swr_model *m, const swr_impact *in, swr_result *r,
+                            const swr_trace *trace, impact_setup *s)
+{
+    const swr_params *p = &m->p;
+    const swr_normal *const nrm = &s->nrm;
+    swr_plastic *const pl = &s->pl;
+    const double T = s->T, V = s->V, L = s->L, mass = s->mass, E0 = s->E0;
+    const double Rs = s->Rs, Is = s->Is, alpha = s->alpha, dstar = s->dstar;
+    const double Gs = s->Gs, kd = s->kd, pk = s->pk, xic = s->xic, mu = s->mu;
+    const double h_el = s->h_el, h_yield = s->h_yield, h_unload = s->h_unload;
+    const int plastic = s->plastic, damp_both = s->damp_both, tangential = s->tangential;
+    const int stride = s->stride, shortcut = s->shortcut;
+    double h = s->h, h2 = 0.5 * h;
+    double dsep = nrm->delta_c;                      /* 0 for Hertz */
+    double usep = nrm->Uc;                           /* energy needed to separate */
+    /* energy scale of the balance check: the largest of the impact energy,
+     * the adhesive separation energy (slow impacts) and the kinetic energy
+     * the adhesion's pull gives during the contact */
+    double eref = E0 > nrm->Uc ? E0 : nrm->Uc;
 
     /* --- state at first contact (jump-in for JKR) --- */
-    double t = 0.0, delta = 0.0, u = u0;
-    double x = nrm.xj;
-    double fne = swr_normal_force(&nrm, x), fd = 0.0, fn = fne;
+    double t = 0.0, delta = 0.0, u = s->u0;
+    double x = nrm->xj;
+    double fne = swr_normal_force(nrm, x), fd = 0.0, fn = fne;
     double vt = in->vt / V, w = in->omega * T;
     swr_tangential tan = { 0.0, 0, 0.0 };
     swr_rolling rol = { 0.0, 0, 0.0 };
-    const swr_normal *act = &nrm;                    /* curve the tangential laws use */
+    const swr_normal *act = nrm;                     /* curve the tangential laws use */
     double ft = 0.0, mr = 0.0;
     double wd = 0.0, err = 0.0, dmax = 0.0, em = E0, phi_old = 0.0;
     double e_dec = E0;   /* normal energy from the decision on (conserved) */
-    enum { OPEN, BOUNCE, STICK } outcome = OPEN;
+    enum outcome outcome = s->outcome0;
     int separated = 0, moving_out = 0;
     double t_end = 0.0, vt_out = vt;
 
     if (stride)
         trace->fn(trace->ctx, 0.0, 0.0, in->vn, fn * mass * L / (T * T), x * x * L, in->vt,
                   in->omega);
-    /* Known at first contact: with E0 <= U_c it can never escape (damping
-     * only removes energy); undamped, the energy is conserved. */
-    if (plastic)
-        ; /* decided on the unloading curve */
-    else if (E0 <= nrm.Uc)
-        outcome = STICK;
-    else if (alpha == 0.0)
-        outcome = BOUNCE;
 
     long n = 0;
     while (outcome != STICK && !(outcome == BOUNCE && shortcut) && n < r->max_steps) {
@@ -343,17 +518,17 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
         delta += h * uh;
         n++;
         t += h;
-        if (plastic && uh < 0.0 && pl.branch != SWR_PL_UNLOAD) {
+        if (plastic && uh < 0.0 && pl->branch != SWR_PL_UNLOAD) {
             /* turned: unload from the turning point of the energy balance.
              * The normal motion does not depend on the tangential one and is
              * conservative from here, so the outcome is decided now by the
              * exact energy (as in the closed form); the steps go on for the
              * tangential motion (and the trace) of a bounce. */
-            swr_plastic_unload(&pl, dstar);
-            act = &pl.un;
-            x = pl.xstar;
-            dsep = swr_plastic_separation_overlap(&pl);
-            usep = swr_plastic_separation_energy(&pl);
+            swr_plastic_unload(pl, dstar);
+            act = &pl->un;
+            x = pl->xstar;
+            dsep = swr_plastic_separation_overlap(pl);
+            usep = swr_plastic_separation_energy(pl);
             if (E0 <= usep) {
                 outcome = STICK;
                 t_end = t - h2;
@@ -374,42 +549,21 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
             break;
         }
         if (plastic) {
-            fne = swr_plastic_force(&pl, delta, &x);
+            fne = swr_plastic_force(pl, delta, &x);
         } else {
-            x = swr_normal_x(&nrm, delta, x);
-            fne = swr_normal_force(&nrm, x);
+            x = swr_normal_x(nrm, delta, x);
+            fne = swr_normal_force(nrm, x);
         }
-        /* closing kick. The dashpot acts while loading, with its exact
-         * impulse over the step (swr_damping.h: the opening kick took
-         * h/2 F_d(old), the rest is applied here). */
-        u = uh - h2 * fne;
-        const double phi = swr_dashpot_potential(pk, delta);
-        fd = 0.0;
-        if ((uh > 0.0 || (damp_both && (delta > 0.0 || d_old > 0.0))) && alpha > 0.0) {
-            u = swr_dashpot_step(u, phi - phi_old, h2 * fd_old, u_old, &wd);
-            if ((u > 0.0 || damp_both) && delta > 0.0)
-                fd = swr_dashpot_force(alpha, kd, delta, u);
-        } else if (fd_old != 0.0) {
-            u += h2 * fd_old; /* loading ended: undo the opening kick's dashpot part */
-        }
-        phi_old = phi;
+        u = closing_kick(alpha, kd, pk, damp_both, uh, fne, h2, delta, d_old, u_old, fd_old, &fd,
+                         &phi_old, &wd);
         fn = fne + fd;
-        if (tangential) {
-            const double a = x * x;
-            /* Coulomb limit on the whole contact load: the dashpot stands for
-             * the plastic contact pressure while loading */
-            ft = swr_tangential_update(&tan, h * (vth + Rs * wh), swr_tangential_stiffness(Gs, a),
-                                       swr_tangential_limit(mu, fn, act->Fc));
-            if (m->adhesive)
-                mr = swr_rolling_update(&rol, -h * Rs * wh, swr_rolling_stiffness(act->Fc, a, act->a0),
-                                        xic);
-            vt = vth + h2 * ft;
-            w = wh + h2 * (Rs * ft + mr) / Is;
-        }
+        if (tangential)
+            tangential_kick(m, Rs, Is, Gs, mu, xic, act, &tan, &rol, h, h2, x, fn, vth, wh, &ft,
+                            &mr, &vt, &w);
         if (delta > dmax)
             dmax = delta;
 
-        em = 0.5 * u * u + (plastic ? swr_plastic_energy(&pl, delta, x) : swr_normal_energy(&nrm, x));
+        em = 0.5 * u * u + (plastic ? swr_plastic_energy(pl, delta, x) : swr_normal_energy(nrm, x));
         if (0.5 * u * u > eref)
             eref = 0.5 * u * u;
         const double e_err = fabs(em + wd - E0) / eref;
@@ -424,8 +578,8 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
             /* Turned back after a bounce decision: only possible within the
              * integration error of E - U_c, right at the threshold. The
              * decision stands (it used the energy); finish in closed form. */
-            t_end = t + (plastic ? travel_time(act, e_dec - pl.Wstar + pl.Ustar, act->xf, x)
-                                 : travel_time(&nrm, e_dec, nrm.xf, x));
+            t_end = t + (plastic ? travel_time(act, e_dec - pl->Wstar + pl->Ustar, act->xf, x)
+                                 : travel_time(nrm, e_dec, nrm->xf, x));
             vt_out = vt;
             separated = 1;
             break;
@@ -451,68 +605,32 @@ swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
         }
         if (plastic) {
             /* the next step on the branch the contact is on now */
-            const double hb = pl.branch == SWR_PL_UNLOAD ? h_unload
-                            : pl.branch == SWR_PL_YIELD ? h_yield : h_el;
+            const double hb = pl->branch == SWR_PL_UNLOAD ? h_unload
+                            : pl->branch == SWR_PL_YIELD ? h_yield : h_el;
             if (hb != h) {
                 h = hb;
                 h2 = 0.5 * h;
             }
         }
     }
+    loop_end e = { outcome, separated, n, t, t_end, u, x, dmax, e_dec, usep, err, vt, vt_out, w,
+                   act };
+    return finish(in, r, s, &e);
+}
 
-    r->status = SWR_OK;
-    if (outcome == BOUNCE && !separated) {
-        if (shortcut) {
-            /* conservative remainder with energy e_dec, closed form */
-            double xs = nrm.xf;               /* separation: a_f, or 0 for Hertz */
-            if (u > 0.0) {                    /* still loading (undamped run) */
-                const double xm = swr_normal_turning_x(&nrm, e_dec, x);
-                t += travel_time(&nrm, e_dec, x, xm) + travel_time(&nrm, e_dec, xs, xm);
-                const double dm = xm * xm * xm * xm / nrm.R - nrm.C * xm;
-                if (dm > dmax)
-                    dmax = dm;
-            } else {
-                t += travel_time(&nrm, e_dec, xs, x);
-            }
-            t_end = t;
-            separated = 1;
-        } else {
-            r->status = SWR_STEP_BOUND;
-        }
-    } else if (outcome == OPEN) {
-        r->status = SWR_STEP_BOUND;
-        outcome = STICK; /* still in contact: best estimate */
-        t_end = t;
-    }
-    if (r->status == SWR_STEP_BOUND) {
-        append_msg(r, "step bound reached: outcome is the best estimate");
-        vt_out = vt;
-    }
-    if (outcome == STICK && n == 0 && !plastic) {
-        /* decided at first contact: the overlap an undamped approach reaches
-         * (an upper bound when damped) */
-        const double xm = swr_normal_turning_x(&nrm, E0, nrm.xj);
-        dmax = xm * xm * xm * xm / nrm.R - nrm.C * xm;
-    }
-    r->steps = n;
-    r->contact_kept = outcome == STICK;
-    /* rebound speed from the conserved energy past the decision */
-    r->e_n = outcome == BOUNCE ? sqrt(2.0 * fmax(e_dec - usep, 0.0)) / u0 : 0.0;
-    r->t_contact = t_end * T;
-    r->delta_max = dmax * L;
-    r->energy_err = err;
-    if (outcome == BOUNCE) {
-        if (in->vt > 0.0)
-            r->e_t = vt_out * V / in->vt;
-        r->stick = 0;
-    } else {
-        /* sliding and rolling of the adhered sphere stop under the adhesive
-         * resistances; predict when and where (doc/kernel.md) */
-        const double fs = mu * 2.0 * act->Fc, ml = 4.0 * act->Fc * xic;
-        double tr = 0.0, sr = 0.0;
-        r->stick = tangential ? swr_tangential_rest(1.0, Rs, Is, fs, ml, vt, w, &tr, &sr) : 1;
-        r->t_rest = tr * T;
-        r->s_rest = sr * L;
-    }
-    return r->status;
+swr_status swr_collide(const swr_model *m, const swr_impact *in, swr_result *r,
+                       const swr_trace *trace)
+{
+    memset(r, 0, sizeof *r);
+    r->e_t = NAN;
+    const swr_status bad = check_impact(m, in, r);
+    if (bad != SWR_OK)
+        return bad;
+    r->contacts = 1;
+    if (m->wall.type == SWR_WALL_LATTICE)
+        return swr_collide_rough(m, in, r, trace);
+    impact_setup s;
+    if (setup_impact(m, in, r, trace, &s))
+        return SWR_OK;
+    return integrate(m, in, r, trace, &s);
 }
