@@ -175,6 +175,21 @@ static int gnuplot(const char *script, size_t len)
     return done == len && WIFEXITED(st) && WEXITSTATUS(st) == 0 ? 0 : -1;
 }
 
+/* the gnuplot script a writer left in the memory stream s (rc the writer's
+ * status, err its message): closed (len is final only then), run and freed;
+ * a failure exits as the commands always did */
+static void run_script(FILE *s, char **script, const size_t *len, int rc, const char *err)
+{
+    if (fclose(s) || rc) {
+        free(*script);
+        die(rc ? 2 : 1, "%s", rc ? err : "out of memory");
+    }
+    const int grc = gnuplot(*script, *len);
+    free(*script);
+    if (grc)
+        die(1, "gnuplot failed");
+}
+
 /* OUT must be absent or a regular file (not a symbolic link) in a folder that exists */
 static void file_check(const char *path)
 {
@@ -209,15 +224,7 @@ static void draw(swe_plot_panels *p, const char *out)
     FILE *s = open_memstream(&script, &len);
     if (!s)
         die(1, "out of memory");
-    const int rc = swe_plot_script(s, p, tmp, err, sizeof err);
-    if (fclose(s) || rc) {
-        free(script);
-        die(rc ? 2 : 1, "%s", rc ? err : "out of memory");
-    }
-    const int grc = gnuplot(script, len);
-    free(script);
-    if (grc)
-        die(1, "gnuplot failed");
+    run_script(s, &script, &len, swe_plot_script(s, p, tmp, err, sizeof err), err);
     out_publish(tmp, out);
 }
 
@@ -723,15 +730,7 @@ static void blocks_picture(const blocks_opts *o, const char *tcsv, int nb, doubl
     FILE *s = open_memstream(&script, &len);
     if (!s)
         die(1, "out of memory");
-    const int rc = swe_plot_blocks_script(s, &p, tpng, err, sizeof err);
-    if (fclose(s) || rc) {
-        free(script);
-        die(rc ? 2 : 1, "%s", rc ? err : "out of memory");
-    }
-    const int grc = gnuplot(script, len);
-    free(script);
-    if (grc)
-        die(1, "gnuplot failed");
+    run_script(s, &script, &len, swe_plot_blocks_script(s, &p, tpng, err, sizeof err), err);
     if (chmod(tpng, 0644))
         die(1, "cannot write '%s': %s", png, strerror(errno));
 }
